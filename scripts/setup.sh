@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# One-command set-up on a fresh Debian 12 machine: installs the Debian packages the project needs
+# (idempotent), configures and builds into build/, and generates the bundled example scene.
+#   bash scripts/setup.sh [--no-example]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+PACKAGES=(build-essential cmake ninja-build pkg-config
+          libembree-dev libpugixml-dev nlohmann-json3-dev libopencv-dev libglu1-mesa-dev
+          libgtest-dev libtorch-dev libopenblas0-pthread)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  SUDO=""; [ "$(id -u)" -eq 0 ] || SUDO=sudo
+  echo "setup: installing ${missing[*]}"
+  $SUDO apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+cmake --build build --parallel "$(nproc)"
+
+if [ "${1:-}" != "--no-example" ]; then
+  bash scripts/make_example.sh
+fi

@@ -1,0 +1,6 @@
+#!/usr/bin/env bash
+# Set-up (packages + build, no example scene) and the whole test suite.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh --no-example
+cd build && ctest --output-on-failure --parallel "$(nproc)" --timeout 900

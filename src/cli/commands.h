@@ -1,0 +1,10 @@
+#pragma once
+// One function per subcommand; argv[0] is the subcommand name. Each returns the exit status.
+namespace cls {
+int cmd_citymodel(int argc, char** argv);   // citymodel stats | export
+int cmd_raycast(int argc, char** argv);     // per-view label maps and coverage
+int cmd_align_check(int argc, char** argv); // sparse points vs city mesh
+int cmd_synth(int argc, char** argv);       // synthetic scenes
+int cmd_scene(int argc, char** argv);       // scene info | convert
+int cmd_run(int argc, char** argv);         // the whole pipeline
+}  // namespace cls

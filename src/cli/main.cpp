@@ -1,0 +1,86 @@
+// citylangsplat: a thin CLI over the library. Global flags: -v/--verbose, -q/--quiet, --version.
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "cli/commands.h"
+#include "core/error.h"
+#include "core/log.h"
+
+namespace {
+
+struct Command {
+  const char* name;
+  int (*fn)(int, char**);
+  const char* summary;
+};
+
+const Command kCommands[] = {
+    {"run", cls::cmd_run, "run every stage on a scene directory, reusing finished stages"},
+    {"citymodel", cls::cmd_citymodel, "inspect a CityGML/CityJSON model: stats, export"},
+    {"raycast", cls::cmd_raycast, "raycast the city model into per-view label maps and coverage"},
+    {"align-check", cls::cmd_align_check, "check how well a scene's sparse points lie on the city model"},
+    {"synth", cls::cmd_synth, "render a synthetic scene (images, COLMAP model, ground truth) of a city model"},
+    {"scene", cls::cmd_scene, "inspect or convert a scene (COLMAP / Pix4D)"},
+};
+
+void usage(FILE* out) {
+  std::fprintf(out,
+               "usage: citylangsplat [-v|-q] <command> [options]\n\n"
+               "Open-vocabulary understanding of urban 3D scenes with CityGML-guided language Gaussians.\n\n"
+               "commands:\n");
+  for (const auto& c : kCommands) std::fprintf(out, "  %-12s %s\n", c.name, c.summary);
+  std::fprintf(out,
+               "\nglobal options:\n"
+               "  -v, --verbose   more output\n"
+               "  -q, --quiet     only errors\n"
+               "  --version       print the version\n"
+               "\n'citylangsplat <command> --help' shows a command's options and defaults.\n");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<char*> args;
+  args.push_back(argv[0]);
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (args.size() == 1 && (a == "-v" || a == "--verbose")) {
+      cls::set_log_level(cls::LogLevel::Verbose);
+    } else if (args.size() == 1 && (a == "-q" || a == "--quiet")) {
+      cls::set_log_level(cls::LogLevel::Quiet);
+    } else if (args.size() == 1 && a == "--version") {
+      std::printf("citylangsplat %s\n", CLS_VERSION);
+      return 0;
+    } else if (args.size() == 1 && (a == "-h" || a == "--help")) {
+      usage(stdout);
+      return 0;
+    } else {
+      args.push_back(argv[i]);
+    }
+  }
+  if (args.size() < 2) {
+    usage(stderr);
+    return 2;
+  }
+  for (const auto& c : kCommands) {
+    if (std::strcmp(c.name, args[1]) != 0) continue;
+    try {
+      return c.fn(static_cast<int>(args.size()) - 1, args.data() + 1);
+    } catch (const cls::UsageError& e) {
+      std::fprintf(stderr, "error: %s\n", e.what());
+      return 2;
+    } catch (const cls::Error& e) {
+      std::fprintf(stderr, "error: %s\n", e.what());
+      return 1;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "internal error: %s\n", e.what());
+      return 3;
+    }
+  }
+  std::fprintf(stderr, "error: unknown command '%s'\n\n", args[1]);
+  usage(stderr);
+  return 2;
+}

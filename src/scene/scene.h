@@ -1,0 +1,47 @@
+#pragma once
+// A calibrated scene: undistorted pinhole views with poses, sparse points, and lazily loaded images.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "scene/camera.h"
+
+namespace cls {
+
+struct SceneView {
+  uint32_t image_id = 0;
+  std::string name;        // image file name as in the model (may contain sub-folders)
+  std::string image_path;  // absolute path of the source image file
+  Camera source_camera;    // the camera as stored (possibly distorted), at full resolution
+  PinholeCamera camera;    // undistorted pinhole intrinsics at the loaded resolution
+  Pose pose;               // world -> camera
+};
+
+struct SparsePoint {
+  uint64_t id = 0;
+  Vec3d xyz{};
+  std::array<uint8_t, 3> rgb{};
+  double error = 0;
+};
+
+struct SceneOptions {
+  int resolution_factor = 1;  // 3DGS-style -r 1|2|4|8: divide the image size by this
+  int target_width = 0;       // alternatively: resize so that width == target_width (0 = off)
+  bool check_images = true;   // fail early if an image file is missing
+};
+
+struct Scene {
+  std::string root;
+  std::string source;  // "colmap-bin", "colmap-txt" or "pix4d"
+  std::vector<SceneView> views;
+  std::vector<SparsePoint> points;
+};
+
+// Loads a scene directory. Looks for, in order: DIR/sparse/0, DIR/sparse, DIR (COLMAP, binary
+// preferred over text), then a Pix4D calibrated_camera_parameters.txt under DIR. Images are
+// looked up under DIR/images. Distorted cameras become pinhole views (see undistort.h).
+// Any problem is a cls::Error naming the file and what is wrong.
+Scene load_scene(const std::string& dir, const SceneOptions& options = {});
+
+}  // namespace cls
