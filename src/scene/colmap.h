@@ -1,0 +1,60 @@
+#pragma once
+// COLMAP sparse models: readers and writers for the binary and text formats
+// (cameras.{bin,txt}, images.{bin,txt}, points3D.{bin,txt}), byte-compatible with COLMAP.
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "scene/camera.h"
+
+namespace cls {
+
+struct ColmapPoint2D {
+  double x = 0, y = 0;
+  uint64_t point3d_id = std::numeric_limits<uint64_t>::max();  // COLMAP's invalid id: -1 as uint64
+};
+
+struct ColmapImage {
+  uint32_t id = 0;
+  std::array<double, 4> qvec{1, 0, 0, 0};  // world-to-camera rotation (w, x, y, z)
+  std::array<double, 3> tvec{0, 0, 0};
+  uint32_t camera_id = 0;
+  std::string name;
+  std::vector<ColmapPoint2D> points2d;
+  Pose pose() const;
+};
+
+struct ColmapPoint3D {
+  uint64_t id = 0;
+  std::array<double, 3> xyz{};
+  std::array<uint8_t, 3> rgb{};
+  double error = 0;
+  std::vector<std::pair<uint32_t, uint32_t>> track;  // (image id, point2D index)
+};
+
+struct ColmapModel {
+  std::map<uint32_t, Camera> cameras;
+  std::map<uint32_t, ColmapImage> images;
+  std::map<uint64_t, ColmapPoint3D> points;
+};
+
+// Name of a camera model as COLMAP writes it ("PINHOLE", ...) and back. Unknown names/ids are a
+// cls::Error that names the model and lists the supported ones.
+std::string camera_model_name(CameraModel model);
+CameraModel camera_model_from_name(const std::string& name, const std::string& file);
+CameraModel camera_model_from_id(int id, const std::string& file);
+int camera_model_num_params(CameraModel model);
+
+// `dir` holds the three files. read_colmap picks binary if cameras.bin exists, else text.
+ColmapModel read_colmap(const std::string& dir);
+ColmapModel read_colmap_binary(const std::string& dir);
+ColmapModel read_colmap_text(const std::string& dir);
+// Writers are atomic per file.
+void write_colmap_binary(const std::string& dir, const ColmapModel& model);
+void write_colmap_text(const std::string& dir, const ColmapModel& model);
+
+}  // namespace cls
