@@ -271,6 +271,15 @@ void append_double(std::string& out, double v) {
   out.append(buf, r.ptr);
 }
 
+// " v1 v2 ..." for a fixed-size array of doubles.
+template <size_t N>
+void append_doubles(std::string& out, const std::array<double, N>& values) {
+  for (double v : values) {
+    out += ' ';
+    append_double(out, v);
+  }
+}
+
 void append_point3d_id(std::string& out, uint64_t id) {
   out += id == kInvalidPoint3D ? std::string("-1") : std::to_string(id);
 }
@@ -572,8 +581,8 @@ std::string encode_images_text(const std::map<uint32_t, ColmapImage>& images) {
       cat(images.empty() ? 0.0 : double(observations) / double(images.size())) + "\n";
   for (const auto& [id, im] : images) {
     out += std::to_string(id);
-    for (double q : im.qvec) (out += ' ', append_double(out, q));
-    for (double t : im.tvec) (out += ' ', append_double(out, t));
+    append_doubles(out, im.qvec);
+    append_doubles(out, im.tvec);
     out += " " + std::to_string(im.camera_id) + " " + im.name + "\n";
     for (size_t i = 0; i < im.points2d.size(); ++i) {
       const auto& p = im.points2d[i];
@@ -599,7 +608,7 @@ std::string encode_points3d_text(const std::map<uint64_t, ColmapPoint3D>& points
       cat(points.empty() ? 0.0 : double(track_elements) / double(points.size())) + "\n";
   for (const auto& [id, p] : points) {
     out += std::to_string(id);
-    for (double v : p.xyz) (out += ' ', append_double(out, v));
+    append_doubles(out, p.xyz);
     for (uint8_t c : p.rgb) out += " " + std::to_string(c);
     out += ' ';
     append_double(out, p.error);
