@@ -16,6 +16,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "core/progress.h"
 
 namespace cls {
 namespace {
@@ -87,18 +88,22 @@ class CityJsonReader {
   }
 
   // "CityObjects" with their "vertices" (the document's, or one CityJSONFeature's).
-  void add_objects(const json& container) {
+  // `progress` (optional) advances once per CityObject.
+  void add_objects(const json& container, Progress* progress) {
     const json& objects = member(container, "CityObjects", "top level");
     if (!objects.is_object()) error("\"CityObjects\" is not an object");
     const std::vector<Point> vertices = read_vertices(member(container, "vertices", "top level"));
-    for (const auto& [id, object] : objects.items()) add_object(objects, id, object, vertices);
+    for (const auto& [id, object] : objects.items()) {
+      add_object(objects, id, object, vertices);
+      if (progress) progress->advance();
+    }
   }
 
   SemanticMesh finish() {
     for (const auto& [type, count] : skipped_types_)
       log_verbose(cat(name_, ": skipped ", count, " CityObject(s) of type ", type, " (not in the taxonomy)"));
     if (surfaces_seen_ == 0) {
-      if (lods_present_.empty()) fail(name_, "contains no building geometry with surfaces");
+      if (lods_present_.empty() || lod_ == 0) fail(name_, "contains no building geometry with surfaces");
       std::string present;
       for (int l : lods_present_) present += (present.empty() ? "" : ", ") + std::to_string(l);
       fail(name_, "no building geometry at LoD " + std::to_string(lod_) + " (the file has LoD " + present + ")");
@@ -120,7 +125,6 @@ class CityJsonReader {
   struct GeometryScope {
     const json* objects = nullptr;
     std::string object_id;
-    const json* object = nullptr;
     int object_class = -1;
     int geometry_index = 0;
     const json* surfaces = nullptr;     // semantics "surfaces", or nullptr
@@ -306,7 +310,6 @@ class CityJsonReader {
       GeometryScope scope;
       scope.objects = &objects;
       scope.object_id = id;
-      scope.object = &object;
       scope.object_class = *object_class;
       scope.geometry_index = static_cast<int>(gi);
       add_geometry(scope, geometries[gi], vertices);
@@ -549,7 +552,9 @@ SemanticMesh parse_cityjson(const std::string& text, const std::string& name, co
     const json doc = parse_json(text, name, "");
     CityJsonReader reader(name, taxonomy, lod);
     reader.read_header(doc);
-    reader.add_objects(doc);
+    const json& objects = doc.value("CityObjects", json());
+    Progress progress("reading CityJSON objects", objects.is_object() ? objects.size() : 0, "objects");
+    reader.add_objects(doc, &progress);
     return reader.finish();
   });
 }
@@ -560,9 +565,11 @@ SemanticMesh parse_cityjson_seq(const std::string& text, const std::string& name
     CityJsonReader reader(name, taxonomy, lod);
     json header;
     bool have_header = false;
+    const size_t lines = std::count(text.begin(), text.end(), '\n') + (text.empty() || text.back() == '\n' ? 0 : 1);
+    Progress progress("reading CityJSONSeq lines", lines, "lines");
     std::istringstream in(text);
     std::string line;
-    for (size_t line_no = 1; std::getline(in, line); ++line_no) {
+    for (size_t line_no = 1; std::getline(in, line); ++line_no, progress.advance()) {
       if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
       const std::string where = "line " + std::to_string(line_no) + ": ";
       reader.set_where(where);
@@ -575,7 +582,7 @@ SemanticMesh parse_cityjson_seq(const std::string& text, const std::string& name
       }
       if (!doc.is_object() || doc.value("type", json()) != "CityJSONFeature")
         fail(name, where + "expected a CityJSONFeature object");
-      reader.add_objects(doc);
+      reader.add_objects(doc, nullptr);
     }
     reader.set_where("");
     if (!have_header) fail(name, "empty CityJSONSeq file");

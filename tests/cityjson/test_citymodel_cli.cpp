@@ -97,7 +97,8 @@ TEST_F(CityModelCli, ExportWritesAPly) {
   EXPECT_NE(ply.find("element face 678\n"), std::string::npos);
 }
 
-// Each broken input: exit status 1, "error: <file>: ..." on stderr, no output file left behind.
+// Each broken input: exit status 1, "error: <file>: ..." as the last line of stderr, no output file
+// left behind.
 TEST_F(CityModelCli, BrokenInputsFailCleanly) {
   const fs::path out = dir_ / "out.ply";
   const std::string good = kData + "/citygml/cityjson/texture4.city.json";
@@ -119,7 +120,10 @@ TEST_F(CityModelCli, BrokenInputsFailCleanly) {
     const CliRun r = run_cli(args, dir_);
     const std::string named = transform.empty() ? input : transform;
     EXPECT_EQ(r.status, 1) << args << "\n" << r.err;
-    EXPECT_EQ(r.err.rfind("error: " + named + ": ", 0), 0u) << r.err;
+    // The last line of stderr is the error (progress lines may come before it).
+    const size_t last_line = r.err.rfind('\n', r.err.size() >= 2 ? r.err.size() - 2 : 0);
+    const std::string last = r.err.substr(last_line == std::string::npos ? 0 : last_line + 1);
+    EXPECT_EQ(last.rfind("error: " + named + ": ", 0), 0u) << r.err;
     EXPECT_FALSE(fs::exists(out)) << args;
     const CliRun stats = run_cli("citymodel stats '" + input + "' --json", dir_);
     if (transform.empty()) {
