@@ -1,0 +1,97 @@
+#include "synth/uav_cameras.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "raycast/look_at.h"
+#include "synth/random.h"
+
+namespace cls::synth {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+double radians(double deg) { return deg * kPi / 180.0; }
+}  // namespace
+
+PinholeCamera pinhole_from_fov(int width, int height, double hfov_deg) {
+  PinholeCamera c;
+  c.width = width;
+  c.height = height;
+  c.fx = c.fy = 0.5 * width / std::tan(0.5 * radians(hfov_deg));
+  c.cx = 0.5 * width;
+  c.cy = 0.5 * height;
+  return c;
+}
+
+std::vector<SynthView> make_uav_views(const Box3d& city, const CameraRigOptions& options) {
+  const PinholeCamera camera = pinhole_from_fov(options.width, options.height, options.hfov_deg);
+  const double half_fov = std::min(std::atan(0.5 * options.width / camera.fx),
+                                   std::atan(0.5 * options.height / camera.fy));
+  const Vec3d size = city.size();
+  const double radius = std::max(0.5 * norm(size), 1.0);
+  // The bounding sphere spans a bit less than the narrower field of view: the building fills much
+  // of the frame and terrain, clutter and (in flat views) sky stay visible around it.
+  const double distance = 1.1 * radius / std::sin(half_fov);
+  const Vec3d center{city.center().x, city.center().y, city.lo.z + 0.4 * size.z};
+
+  const int rings = std::min(options.views, 3);
+  Rng rng(options.seed, Stream::Cameras);
+  const double azimuth0 = rng.uniform(0, 2 * kPi);
+  std::vector<SynthView> views;
+  for (int r = 0; r < rings; ++r) {
+    const int first = options.views * r / rings, count = options.views * (r + 1) / rings - first;
+    const double ring_pitch = rings == 1 ? 40.0 : 30.0 + 25.0 * r / (rings - 1);
+    for (int k = 0; k < count; ++k) {
+      const double step = 2 * kPi / count;
+      const double azimuth = azimuth0 + step * (k + 0.5 * r / rings) + rng.uniform(-0.25, 0.25) * step;
+      const double pitch = radians(std::clamp(ring_pitch + rng.uniform(-3, 3), kMinPitchDeg, kMaxPitchDeg));
+      const double d = distance * rng.uniform(0.92, 1.08);
+      const Vec3d target = center + Vec3d{rng.uniform(-0.08, 0.08) * radius, rng.uniform(-0.08, 0.08) * radius,
+                                          rng.uniform(-0.05, 0.05) * radius};
+      // The eye sits on the line of sight through `target` at the chosen pitch, so the pitch is exact.
+      const Vec3d eye = target + d * Vec3d{std::cos(pitch) * std::cos(azimuth), std::cos(pitch) * std::sin(azimuth),
+                                           std::sin(pitch)};
+      char name[32];
+      std::snprintf(name, sizeof name, "%04d.png", static_cast<int>(views.size()));
+      views.push_back({name, camera, look_at(eye, target)});
+    }
+  }
+  return views;
+}
+
+std::array<double, 4> rotation_to_quaternion(const Mat3d& R) {
+  const auto& m = R.m;
+  const double trace = m[0][0] + m[1][1] + m[2][2];
+  double w, x, y, z;
+  // Shepperd's method: divide by the largest of the four candidates for stability.
+  if (trace > 0) {
+    const double s = 2 * std::sqrt(1 + trace);
+    w = 0.25 * s;
+    x = (m[2][1] - m[1][2]) / s;
+    y = (m[0][2] - m[2][0]) / s;
+    z = (m[1][0] - m[0][1]) / s;
+  } else if (m[0][0] > m[1][1] && m[0][0] > m[2][2]) {
+    const double s = 2 * std::sqrt(1 + m[0][0] - m[1][1] - m[2][2]);
+    w = (m[2][1] - m[1][2]) / s;
+    x = 0.25 * s;
+    y = (m[0][1] + m[1][0]) / s;
+    z = (m[0][2] + m[2][0]) / s;
+  } else if (m[1][1] > m[2][2]) {
+    const double s = 2 * std::sqrt(1 + m[1][1] - m[0][0] - m[2][2]);
+    w = (m[0][2] - m[2][0]) / s;
+    x = (m[0][1] + m[1][0]) / s;
+    y = 0.25 * s;
+    z = (m[1][2] + m[2][1]) / s;
+  } else {
+    const double s = 2 * std::sqrt(1 + m[2][2] - m[0][0] - m[1][1]);
+    w = (m[1][0] - m[0][1]) / s;
+    x = (m[0][2] + m[2][0]) / s;
+    y = (m[1][2] + m[2][1]) / s;
+    z = 0.25 * s;
+  }
+  const double n = std::sqrt(w * w + x * x + y * y + z * z) * (w < 0 ? -1 : 1);
+  return {w / n, x / n, y / n, z / n};
+}
+
+}  // namespace cls::synth
