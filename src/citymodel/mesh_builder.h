@@ -3,6 +3,7 @@
 // Shared by the CityGML and CityJSON readers, so both triangulate and label identically.
 #include <array>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "citymodel/semantic_mesh.h"
@@ -28,6 +29,9 @@ class MeshBuilder {
   // Throws cls::Error for non-finite coordinates.
   bool add_polygon(const std::vector<Ring>& rings, int face_class, int entity, const std::string& polygon_id);
 
+  // tri_entity[0..2] are the nearest level-1 and level-2 entities in the face's parent chain and
+  // the outermost level-3 entity (the Building, not a BuildingPart): building.png and
+  // SemanticMesh::buildings index whole buildings, the paper's level 3.
   // Subtracts a local origin (the bounding box minimum, rounded down to whole units), computes
   // tri_level_class (see SemanticMesh) and returns the mesh. The builder is empty afterwards.
   SemanticMesh finish();
@@ -35,10 +39,13 @@ class MeshBuilder {
   size_t degenerate_polygons() const { return degenerate_; }
 
  private:
+  // Class per level of a face (see SemanticMesh::tri_level_class).
+  std::array<int32_t, 3> level_classes(int face_class, const std::array<int32_t, 3>& chain) const;
+
   const Taxonomy& taxonomy_;
   SemanticMesh mesh_;
   std::vector<std::array<double, 3>> vertices_abs_;
-  std::vector<std::string> seen_ids_sorted_;  // implementation detail; may change
+  std::unordered_set<std::string> seen_polygon_ids_;
   size_t degenerate_ = 0;
 };
 

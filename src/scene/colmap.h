@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -53,8 +54,29 @@ int camera_model_num_params(CameraModel model);
 ColmapModel read_colmap(const std::string& dir);
 ColmapModel read_colmap_binary(const std::string& dir);
 ColmapModel read_colmap_text(const std::string& dir);
-// Writers are atomic per file.
+// Writers validate the whole model first (nothing is written for an invalid model), then write
+// each file atomically.
 void write_colmap_binary(const std::string& dir, const ColmapModel& model);
 void write_colmap_text(const std::string& dir, const ColmapModel& model);
+
+// Buffer-level parsers and encoders behind the file functions (also the fuzzers' entry points).
+// `file` only names the source in error messages. Every malformed input is a cls::Error.
+std::map<uint32_t, Camera> parse_cameras_binary(std::string_view bytes, const std::string& file);
+std::map<uint32_t, ColmapImage> parse_images_binary(std::string_view bytes, const std::string& file);
+std::map<uint64_t, ColmapPoint3D> parse_points3d_binary(std::string_view bytes, const std::string& file);
+std::map<uint32_t, Camera> parse_cameras_text(std::string_view text, const std::string& file);
+std::map<uint32_t, ColmapImage> parse_images_text(std::string_view text, const std::string& file);
+std::map<uint64_t, ColmapPoint3D> parse_points3d_text(std::string_view text, const std::string& file);
+
+std::string encode_cameras_binary(const std::map<uint32_t, Camera>& cameras);
+std::string encode_images_binary(const std::map<uint32_t, ColmapImage>& images);
+std::string encode_points3d_binary(const std::map<uint64_t, ColmapPoint3D>& points);
+std::string encode_cameras_text(const std::map<uint32_t, Camera>& cameras);
+std::string encode_images_text(const std::map<uint32_t, ColmapImage>& images);
+std::string encode_points3d_text(const std::map<uint64_t, ColmapPoint3D>& points);
+
+// Checks what a parsed model must satisfy as a whole: every image's camera exists. `dir` names
+// the model in error messages.
+void validate_colmap(const ColmapModel& model, const std::string& dir);
 
 }  // namespace cls
