@@ -14,7 +14,6 @@
 // opening never pay for the rule; models without priorities build no tie scenes at all.
 #include "raycast/raycaster.h"
 
-#include <embree3/rtcore.h>
 #include <omp.h>
 #include <xmmintrin.h>
 
@@ -23,6 +22,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "raycast/embree_scene.h"
 #include "raycast/pixel_ray.h"
 
 namespace cls {
@@ -54,23 +54,6 @@ void intersect<8>(const int* valid, RTCScene scene, RTCIntersectContext* context
 template <>
 void intersect<16>(const int* valid, RTCScene scene, RTCIntersectContext* context, RTCRayHitNt<16>& rayhit) {
   rtcIntersect16(valid, scene, context, reinterpret_cast<RTCRayHit16*>(&rayhit));
-}
-
-const char* error_name(RTCError e) {
-  switch (e) {
-    case RTC_ERROR_NONE: return "no error";
-    case RTC_ERROR_INVALID_ARGUMENT: return "invalid argument";
-    case RTC_ERROR_INVALID_OPERATION: return "invalid operation";
-    case RTC_ERROR_OUT_OF_MEMORY: return "out of memory";
-    case RTC_ERROR_UNSUPPORTED_CPU: return "unsupported CPU";
-    case RTC_ERROR_CANCELLED: return "cancelled";
-    default: return "unknown error";
-  }
-}
-
-void check_device(RTCDevice device, const char* what) {
-  const RTCError e = rtcGetDeviceError(device);
-  if (e != RTC_ERROR_NONE) throw Error(cat("Embree: ", what, " failed (", error_name(e), ")"));
 }
 
 struct Box {
@@ -122,7 +105,6 @@ struct Raycaster::Impl {
     if (device) rtcReleaseDevice(device);
   }
 
-  RTCScene build(const std::vector<uint32_t>* subset) const;
   void build_tie_scenes();
   template <int N>
   void resolve_ties(const int* valid, RTCRayHitNt<N>& rh, const float* tnear) const;
@@ -131,37 +113,6 @@ struct Raycaster::Impl {
   template <int N>
   void cast_packets(const std::vector<Ray>& rays, std::vector<RayHit>& out) const;
 };
-
-// A scene of all triangles (subset == nullptr) or of the listed ones.
-RTCScene Raycaster::Impl::build(const std::vector<uint32_t>* subset) const {
-  RTCScene s = rtcNewScene(device);
-  rtcSetSceneBuildQuality(s, RTC_BUILD_QUALITY_HIGH);
-  const size_t count = subset ? subset->size() : triangles.size();
-  if (count > 0) {
-    RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    rtcSetGeometryBuildQuality(g, RTC_BUILD_QUALITY_HIGH);
-    auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                           3 * sizeof(float), vertices.size()));
-    auto* ib = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                              3 * sizeof(uint32_t), count));
-    check_device(device, "allocating geometry buffers");
-    for (size_t i = 0; i < vertices.size(); ++i) {
-      vb[3 * i] = vertices[i].x;
-      vb[3 * i + 1] = vertices[i].y;
-      vb[3 * i + 2] = vertices[i].z;
-    }
-    for (size_t i = 0; i < count; ++i) {
-      const auto& t = triangles[subset ? (*subset)[i] : i];
-      std::copy(t.begin(), t.end(), ib + 3 * i);
-    }
-    rtcCommitGeometry(g);
-    rtcAttachGeometry(s, g);
-    rtcReleaseGeometry(g);
-  }
-  rtcCommitScene(s);
-  check_device(device, "building the BVH");
-  return s;
-}
 
 namespace {
 // State of one closest-box query: the query triangle's box and the best gap so far.
@@ -195,7 +146,7 @@ void Raycaster::Impl::build_tie_scenes() {
     TieScene t;
     t.priority = static_cast<uint8_t>(p);
     t.prims = std::move(by_priority[p]);
-    t.scene = build(&t.prims);
+    t.scene = build_triangle_scene(device, vertices, triangles, &t.prims);
     tie_scenes.push_back(std::move(t));
   }
   if (tie_scenes.empty()) {
@@ -397,22 +348,15 @@ Raycaster::Raycaster(const std::vector<Vec3f>& vertices, const std::vector<std::
     : impl_(std::make_unique<Impl>()) {
   if (!priority.empty() && priority.size() != triangles.size())
     throw Error(cat("raycaster: ", priority.size(), " priorities for ", triangles.size(), " triangles"));
-  for (const auto& v : vertices)
-    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
-      throw Error("raycaster: non-finite vertex coordinate");
-  for (const auto& t : triangles)
-    for (uint32_t v : t)
-      if (v >= vertices.size())
-        throw Error(cat("raycaster: triangle vertex index ", v, " out of range (", vertices.size(), " vertices)"));
+  validate_triangle_mesh(vertices, triangles, "raycaster");
 
   Impl& im = *impl_;
-  im.device = rtcNewDevice(nullptr);
-  if (!im.device) throw Error(cat("Embree: cannot create a device (", error_name(rtcGetDeviceError(nullptr)), ")"));
+  im.device = new_embree_device();
   im.packet_width = rtcGetDeviceProperty(im.device, RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED) ? 16 : 8;
   im.vertices = vertices;
   im.triangles = triangles;
   im.num_triangles = triangles.size();
-  im.scene = im.build(nullptr);
+  im.scene = build_triangle_scene(im.device, vertices, triangles);
   if (!priority.empty()) {
     im.priority = priority;
     im.build_tie_scenes();

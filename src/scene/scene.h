@@ -14,6 +14,7 @@ struct SceneView {
   std::string name;        // image file name as in the model (may contain sub-folders)
   std::string image_path;  // absolute path of the source image file
   Camera source_camera;    // the camera as stored (possibly distorted), at full resolution
+  double source_radial_k3 = 0;  // third radial coefficient beyond COLMAP's OPENCV model (Pix4D only)
   PinholeCamera camera;    // undistorted pinhole intrinsics at the loaded resolution
   Pose pose;               // world -> camera
 };

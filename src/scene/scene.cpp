@@ -1,0 +1,103 @@
+#include "scene/scene.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+
+#include "core/error.h"
+#include "core/log.h"
+#include "scene/colmap.h"
+#include "scene/image_loader.h"
+#include "scene/pix4d.h"
+#include "scene/undistort.h"
+
+namespace cls {
+namespace fs = std::filesystem;
+
+namespace {
+
+// The COLMAP model folder of a scene, or "" if none: DIR/sparse/0, DIR/sparse, DIR.
+std::string find_colmap_model(const fs::path& dir) {
+  for (const fs::path& d : {dir / "sparse" / "0", dir / "sparse", dir})
+    if (fs::exists(d / "cameras.bin") || fs::exists(d / "cameras.txt")) return d.string();
+  return "";
+}
+
+// The loaded-resolution pinhole camera of a source camera.
+PinholeCamera loaded_camera(const Camera& camera, double radial_k3, const SceneOptions& options,
+                            const std::string& source) {
+  return scale_to_resolution(undistorted_pinhole(lens_from_camera(camera, radial_k3), source), options);
+}
+
+SceneView make_view(uint32_t image_id, const std::string& name, const fs::path& image_dir, const Camera& camera,
+                    double radial_k3, const PinholeCamera& loaded, const Pose& pose) {
+  SceneView v;
+  v.image_id = image_id;
+  v.name = name;
+  v.image_path = (image_dir / name).string();
+  v.source_camera = camera;
+  v.source_radial_k3 = radial_k3;
+  v.camera = loaded;
+  v.pose = pose;
+  return v;
+}
+
+void load_colmap(Scene& scene, const std::string& model_dir, const fs::path& image_dir, const SceneOptions& options) {
+  const ColmapModel model = read_colmap(model_dir);
+  scene.source = fs::exists(fs::path(model_dir) / "cameras.bin") ? "colmap-bin" : "colmap-txt";
+  // One undistorted camera per COLMAP camera, shared by its images.
+  std::map<uint32_t, PinholeCamera> loaded;
+  for (const auto& [id, cam] : model.cameras)
+    loaded[id] = loaded_camera(cam, 0, options, model_dir + " camera " + std::to_string(id));
+  for (const auto& [id, im] : model.images)
+    scene.views.push_back(make_view(id, im.name, image_dir, model.cameras.at(im.camera_id), 0,
+                                    loaded.at(im.camera_id), im.pose()));
+  for (const auto& [id, p] : model.points)
+    scene.points.push_back(SparsePoint{id, Vec3d{p.xyz[0], p.xyz[1], p.xyz[2]}, p.rgb, p.error});
+}
+
+// Pix4D calibrates every image separately, so each view has its own camera.
+void load_pix4d(Scene& scene, const std::string& file, const fs::path& image_dir, const SceneOptions& options) {
+  scene.source = "pix4d";
+  uint32_t id = 0;
+  for (const Pix4dView& p : read_pix4d_calibrated_cameras(file)) {
+    const PinholeCamera loaded = loaded_camera(p.camera, p.radial_k3, options, file + " camera '" + p.name + "'");
+    scene.views.push_back(make_view(++id, p.name, image_dir, p.camera, p.radial_k3, loaded, p.pose));
+  }
+}
+
+}  // namespace
+
+Scene load_scene(const std::string& dir, const SceneOptions& options) {
+  check_scene_options(options);
+  const fs::path root = fs::absolute(dir);
+  if (!fs::is_directory(root)) fail(dir, "scene directory not found");
+  Scene scene;
+  scene.root = root.string();
+  const fs::path image_dir = root / "images";
+
+  const std::string model_dir = find_colmap_model(root);
+  if (!model_dir.empty()) {
+    load_colmap(scene, model_dir, image_dir, options);
+  } else {
+    const std::string pix4d = find_pix4d_calibration(root.string());
+    if (pix4d.empty())
+      fail(dir, "no camera model found: expected a COLMAP model (cameras/images/points3D .bin or .txt) in sparse/0, "
+                "sparse or the directory itself, or a Pix4D *calibrated_camera_parameters.txt");
+    load_pix4d(scene, pix4d, image_dir, options);
+  }
+  // Views in name order, as 3DGS sorts them, whatever the ids.
+  std::sort(scene.views.begin(), scene.views.end(),
+            [](const SceneView& a, const SceneView& b) { return a.name < b.name; });
+
+  if (options.check_images) {
+    if (!fs::is_directory(image_dir)) fail(image_dir.string(), "image folder not found");
+    for (const SceneView& v : scene.views)
+      if (!fs::is_regular_file(v.image_path)) fail(v.image_path, "image not found (view '" + v.name + "')");
+  }
+  log_verbose(cat("scene ", dir, ": ", scene.views.size(), " views, ", scene.points.size(), " sparse points (",
+                  scene.source, ")"));
+  return scene;
+}
+
+}  // namespace cls
