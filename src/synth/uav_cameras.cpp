@@ -30,9 +30,9 @@ std::vector<SynthView> make_uav_views(const Box3d& city, const CameraRigOptions&
                                    std::atan(0.5 * options.height / camera.fy));
   const Vec3d size = city.size();
   const double radius = std::max(0.5 * norm(size), 1.0);
-  // The bounding sphere spans a bit less than the narrower field of view: the building fills much
-  // of the frame and terrain, clutter and (in flat views) sky stay visible around it.
-  const double distance = 1.1 * radius / std::sin(half_fov);
+  // The bounding sphere spans a little more than the narrower field of view: the building (smaller
+  // than its sphere) fills much of the frame while terrain and clutter stay visible around it.
+  const double distance = 0.9 * radius / std::sin(half_fov);
   const Vec3d center{city.center().x, city.center().y, city.lo.z + 0.4 * size.z};
 
   const int rings = std::min(options.views, 3);
