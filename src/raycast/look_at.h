@@ -32,7 +32,7 @@ inline Pose frame_box(Vec3d lo, Vec3d hi, const PinholeCamera& cam, double azimu
   const Vec3d dir{std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
                   std::sin(elevation)};
   // Largest corner offset from the principal point, relative to the half image size.
-  auto extent = [&](double distance) {
+  auto extent = [&](double distance) -> double {
     const Pose pose = look_at(centre + distance * dir, centre);
     double worst = 0;
     for (int k = 0; k < 8; ++k) {
@@ -45,10 +45,10 @@ inline Pose frame_box(Vec3d lo, Vec3d hi, const PinholeCamera& cam, double azimu
     return worst;
   };
   double near = 0, far = 1e-3 + norm(hi - lo);
-  while (extent(far) > 1.0 / fill) far *= 2;
+  while (extent(far) > fill) far *= 2;
   for (int it = 0; it < 60; ++it) {
     const double mid = 0.5 * (near + far);
-    (extent(mid) > 1.0 / fill ? near : far) = mid;
+    (extent(mid) > fill ? near : far) = mid;
   }
   return look_at(centre + far * dir, centre);
 }

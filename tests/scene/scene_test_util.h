@@ -2,11 +2,16 @@
 // Helpers shared by the scene tests.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
 
+#include <opencv2/core.hpp>
+
 #include "core/error.h"
+#include "scene/undistort.h"
 
 namespace cls::test {
 
@@ -19,6 +24,57 @@ inline void expect_error(const std::function<void()>& fn, const std::vector<std:
     const std::string msg = e.what();
     for (const auto& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << "'" << p << "' not in: " << msg;
   }
+}
+
+inline std::filesystem::path fresh_dir(const std::string& name) {
+  const auto d = std::filesystem::temp_directory_path() / ("cls_test_scene_" + name);
+  std::filesystem::remove_all(d);
+  std::filesystem::create_directories(d);
+  return d;
+}
+
+// A checkerboard on the normalized image plane: squares of side `kSquare` (camera units).
+constexpr double kSquare = 0.1;
+inline uint8_t checker(double x, double y) {
+  return ((static_cast<long>(std::floor(x / kSquare)) + static_cast<long>(std::floor(y / kSquare))) & 1) ? 255 : 0;
+}
+// Distance (in normalized units) from (x, y) to the nearest checker edge.
+inline double checker_edge_distance(double x, double y) {
+  auto d = [](double t) { return std::abs(t / kSquare - std::round(t / kSquare)) * kSquare; };
+  return std::min(d(x), d(y));
+}
+
+// What a camera with this lens photographs of the checkerboard: each pixel takes the colour at
+// its centre's undistorted position. 8-bit BGR.
+inline cv::Mat distorted_checkerboard(const LensCamera& lens) {
+  cv::Mat img(lens.height, lens.width, CV_8UC3);
+  for (int j = 0; j < lens.height; ++j)
+    for (int i = 0; i < lens.width; ++i) {
+      double x, y;
+      undistort_normalized(lens.distortion, (i + 0.5 - lens.cx) / lens.fx, (j + 0.5 - lens.cy) / lens.fy, x, y);
+      const uint8_t c = checker(x, y);
+      img.at<cv::Vec3b>(j, i) = cv::Vec3b(c, c, c);
+    }
+  return img;
+}
+
+// Compares an undistorted image with the analytic checkerboard of its pinhole camera at pixels
+// at least `margin_px` from an edge; returns the fraction of pixels that were compared.
+inline double expect_matches_checkerboard(const cv::Mat& img, const PinholeCamera& cam, double margin_px,
+                                          int tolerance) {
+  EXPECT_EQ(img.cols, cam.width);
+  EXPECT_EQ(img.rows, cam.height);
+  long compared = 0, wrong = 0;
+  for (int j = 0; j < img.rows; ++j)
+    for (int i = 0; i < img.cols; ++i) {
+      const double x = (i + 0.5 - cam.cx) / cam.fx, y = (j + 0.5 - cam.cy) / cam.fy;
+      if (checker_edge_distance(x, y) * std::min(cam.fx, cam.fy) < margin_px) continue;
+      ++compared;
+      const cv::Vec3b p = img.at<cv::Vec3b>(j, i);
+      if (std::abs(int(p[1]) - int(checker(x, y))) > tolerance) ++wrong;
+    }
+  EXPECT_EQ(wrong, 0) << "of " << compared << " compared pixels";
+  return double(compared) / (double(img.rows) * img.cols);
 }
 
 }  // namespace cls::test
