@@ -144,18 +144,23 @@ Vec3f SurfaceShader::roof(Vec3f p, Vec3f n) const {
 }
 
 Vec3f SurfaceShader::terrain(Vec3f p) const {
+  // Fine detail fades out far from the building, where the views see the terrain at grazing
+  // angles: a function of position, so views still agree, but little aliasing in the distance.
+  const Vec3d centre = g_.city_bounds.center();
+  const float r = std::hypot(p.x - static_cast<float>(centre.x), p.y - static_cast<float>(centre.y));
+  const float detail = std::clamp((70.0f - r) / 40.0f, 0.0f, 1.0f);
   const Road& road = g_.road;
   const float across = p[road.axis] - static_cast<float>(road.offset);
   const float along = p[1 - road.axis];
   if (std::abs(across) < road.half_width) {
-    const float n = fbm(p.x * 3, p.y * 3, 0.0f, 3, key_ + kAsphalt);
+    const float n = 0.5f + detail * (fbm(p.x * 3, p.y * 3, 0.0f, 3, key_ + kAsphalt) - 0.5f);
     const bool centre_line = std::abs(across) < 0.07f && fract(along / 6.0f) < 0.5f;
     const bool edge_line = std::abs(std::abs(across) - static_cast<float>(road.half_width - 0.25)) < 0.06f;
     if (centre_line || edge_line) return Vec3f{0.85f, 0.85f, 0.80f};
     return (0.85f + 0.3f * n) * Vec3f{0.26f, 0.26f, 0.27f};
   }
   const float coarse = fbm(p.x * 0.25f, p.y * 0.25f, 0.0f, 3, key_ + kGrass);
-  const float fine = fbm(p.x * 3, p.y * 3, 0.0f, 3, key_ + kGrassFine);
+  const float fine = 0.5f + detail * (fbm(p.x * 3, p.y * 3, 0.0f, 3, key_ + kGrassFine) - 0.5f);
   Vec3f grass = (0.7f + 0.45f * coarse) * (0.85f + 0.3f * fine) * Vec3f{0.30f, 0.46f, 0.18f};
   const float dirt = smoothstep(0.66f, 0.74f, fbm(p.x * 0.12f, p.y * 0.12f, 0.0f, 3, key_ + kDirt));
   return mix(grass, (0.8f + 0.3f * fine) * Vec3f{0.48f, 0.40f, 0.28f}, dirt);

@@ -49,7 +49,7 @@ ColmapModel make_colmap_model(const std::vector<SynthView>& views, const std::ve
   for (uint32_t v = 0; v < views.size(); ++v) {
     ColmapImage image;
     image.id = v + 1;
-    image.qvec = rotation_to_quaternion(views[v].pose.R);
+    image.qvec = rotation_to_qvec(views[v].pose.R);
     image.tvec = {views[v].pose.t.x, views[v].pose.t.y, views[v].pose.t.z};
     image.camera_id = 1;
     image.name = views[v].name;

@@ -60,38 +60,4 @@ std::vector<SynthView> make_uav_views(const Box3d& city, const CameraRigOptions&
   return views;
 }
 
-std::array<double, 4> rotation_to_quaternion(const Mat3d& R) {
-  const auto& m = R.m;
-  const double trace = m[0][0] + m[1][1] + m[2][2];
-  double w, x, y, z;
-  // Shepperd's method: divide by the largest of the four candidates for stability.
-  if (trace > 0) {
-    const double s = 2 * std::sqrt(1 + trace);
-    w = 0.25 * s;
-    x = (m[2][1] - m[1][2]) / s;
-    y = (m[0][2] - m[2][0]) / s;
-    z = (m[1][0] - m[0][1]) / s;
-  } else if (m[0][0] > m[1][1] && m[0][0] > m[2][2]) {
-    const double s = 2 * std::sqrt(1 + m[0][0] - m[1][1] - m[2][2]);
-    w = (m[2][1] - m[1][2]) / s;
-    x = 0.25 * s;
-    y = (m[0][1] + m[1][0]) / s;
-    z = (m[0][2] + m[2][0]) / s;
-  } else if (m[1][1] > m[2][2]) {
-    const double s = 2 * std::sqrt(1 + m[1][1] - m[0][0] - m[2][2]);
-    w = (m[0][2] - m[2][0]) / s;
-    x = (m[0][1] + m[1][0]) / s;
-    y = 0.25 * s;
-    z = (m[1][2] + m[2][1]) / s;
-  } else {
-    const double s = 2 * std::sqrt(1 + m[2][2] - m[0][0] - m[1][1]);
-    w = (m[1][0] - m[0][1]) / s;
-    x = (m[0][2] + m[2][0]) / s;
-    y = (m[1][2] + m[2][1]) / s;
-    z = 0.25 * s;
-  }
-  const double n = std::sqrt(w * w + x * x + y * y + z * z) * (w < 0 ? -1 : 1);
-  return {w / n, x / n, y / n, z / n};
-}
-
 }  // namespace cls::synth

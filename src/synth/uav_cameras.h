@@ -1,6 +1,5 @@
 #pragma once
 // UAV-like oblique camera placement around a city model.
-#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -33,8 +32,5 @@ PinholeCamera pinhole_from_fov(int width, int height, double hfov_deg);
 // always within [kMinPitchDeg, kMaxPitchDeg]), looking at the model from a distance at which its
 // bounding sphere fills most of the frame.
 std::vector<SynthView> make_uav_views(const Box3d& city, const CameraRigOptions& options);
-
-// Unit quaternion (w, x, y, z), Hamilton convention as COLMAP writes it, with w >= 0.
-std::array<double, 4> rotation_to_quaternion(const Mat3d& R);
 
 }  // namespace cls::synth
