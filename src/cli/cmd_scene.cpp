@@ -1,6 +1,120 @@
+// citylangsplat scene info DIR [--json] [-r N | --width W]
+// citylangsplat scene convert DIR --out DIR --format bin|txt
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <tuple>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/args.h"
 #include "cli/commands.h"
 #include "core/error.h"
+#include "core/log.h"
+#include "scene/colmap.h"
+#include "scene/pix4d.h"
+#include "scene/scene.h"
 
 namespace cls {
-int cmd_scene(int, char**) { throw Error("scene: not implemented yet"); }
+namespace {
+
+// Cameras are counted by value: Pix4D gives every view its own camera, usually an identical one.
+using CameraKey = std::tuple<int, int, int, std::vector<double>, double>;
+
+int scene_info(int argc, char** argv) {
+  Args args("scene info", "Summarize a scene: views, cameras and their models, sparse points, image sizes.");
+  args.positional("DIR", "scene directory (COLMAP model in sparse/0, sparse or DIR; or a Pix4D project)")
+      .flag("json", "print one JSON object instead of text")
+      .option("resolution", "1", "3DGS-style downscaling factor: 1, 2, 4 or 8", "r")
+      .option("width", "0", "downscale to this image width instead (0 = off)")
+      .flag("skip-image-check", "do not check that every image file exists");
+  if (!args.parse(argc, argv)) return 0;
+  SceneOptions options;
+  options.resolution_factor = args.get_int("resolution");
+  options.target_width = args.get_int("width");
+  options.check_images = !args.flag_set("skip-image-check");
+  const Scene scene = load_scene(args.get("DIR"), options);
+
+  std::map<CameraKey, int> cameras;
+  std::map<std::string, int> models;
+  std::map<std::pair<std::array<int, 2>, std::array<int, 2>>, int> sizes;  // (source, loaded) -> views
+  for (const SceneView& v : scene.views) {
+    const Camera& c = v.source_camera;
+    if (cameras.emplace(CameraKey{int(c.model), c.width, c.height, c.params, v.source_radial_k3}, 0).second)
+      ++models[camera_model_name(c.model) + (v.source_radial_k3 != 0 ? "+k3" : "")];
+    ++sizes[{{c.width, c.height}, {v.camera.width, v.camera.height}}];
+  }
+
+  if (args.flag_set("json")) {
+    nlohmann::json sizes_json = nlohmann::json::array();
+    for (const auto& [s, n] : sizes)
+      sizes_json.push_back({{"source", {s.first[0], s.first[1]}}, {"loaded", {s.second[0], s.second[1]}}, {"views", n}});
+    const nlohmann::json out = {{"root", scene.root},
+                                {"source", scene.source},
+                                {"views", scene.views.size()},
+                                {"cameras", cameras.size()},
+                                {"camera_models", models},
+                                {"points", scene.points.size()},
+                                {"image_sizes", sizes_json}};
+    std::printf("%s\n", out.dump().c_str());
+    return 0;
+  }
+  std::printf("scene:   %s (%s)\n", scene.root.c_str(), scene.source.c_str());
+  std::printf("views:   %zu\n", scene.views.size());
+  std::printf("cameras: %zu (", cameras.size());
+  bool first = true;
+  for (const auto& [name, n] : models) {
+    std::printf("%s%s x%d", first ? "" : ", ", name.c_str(), n);
+    first = false;
+  }
+  std::printf(")\npoints:  %zu\n", scene.points.size());
+  for (const auto& [s, n] : sizes)
+    std::printf("images:  %d views %dx%d, loaded as %dx%d\n", n, s.first[0], s.first[1], s.second[0], s.second[1]);
+  return 0;
+}
+
+int scene_convert(int argc, char** argv) {
+  Args args("scene convert", "Write a scene's cameras and poses as a COLMAP model (lossless for COLMAP input).");
+  args.positional("DIR", "scene directory (COLMAP model or Pix4D project)")
+      .option("out", "", "output model directory (cameras, images, points3D are written into it)")
+      .option("format", "bin", "output format: bin or txt");
+  if (!args.parse(argc, argv)) return 0;
+  const std::string dir = args.get("DIR"), out = args.get("out"), format = args.get("format");
+  if (out.empty()) throw UsageError("scene convert: --out is required");
+  if (format != "bin" && format != "txt") throw UsageError("scene convert: --format must be bin or txt, not '" + format + "'");
+
+  ColmapModel model;
+  const std::string model_dir = find_colmap_model(dir);
+  if (!model_dir.empty()) {
+    model = read_colmap(model_dir);
+  } else {
+    const std::string pix4d = find_pix4d_calibration(dir);
+    if (pix4d.empty()) fail(dir, "no COLMAP model and no Pix4D calibrated_camera_parameters.txt found");
+    model = pix4d_to_colmap(read_pix4d_calibrated_cameras(pix4d), pix4d);
+  }
+  (format == "bin" ? write_colmap_binary : write_colmap_text)(out, model);
+  log_info(cat("wrote ", model.cameras.size(), " cameras, ", model.images.size(), " images, ", model.points.size(),
+               " points to ", out, " (", format, ")"));
+  return 0;
+}
+
+}  // namespace
+
+int cmd_scene(int argc, char** argv) {
+  const std::string usage =
+      "usage: citylangsplat scene info DIR [options]\n"
+      "       citylangsplat scene convert DIR --out DIR [--format bin|txt]\n"
+      "'citylangsplat scene <info|convert> --help' shows the options.\n";
+  if (argc < 2) throw UsageError("scene: missing subcommand\n" + usage);
+  const std::string sub = argv[1];
+  if (sub == "-h" || sub == "--help") {
+    std::printf("%s", usage.c_str());
+    return 0;
+  }
+  if (sub == "info") return scene_info(argc - 1, argv + 1);
+  if (sub == "convert") return scene_convert(argc - 1, argv + 1);
+  throw UsageError("scene: unknown subcommand '" + sub + "'\n" + usage);
+}
+
 }  // namespace cls

@@ -314,6 +314,30 @@ Pose ColmapImage::pose() const {
   return p;
 }
 
+std::array<double, 4> rotation_to_qvec(const Mat3d& R) {
+  // Shepperd's method: take the square root of the largest of 4w^2, 4x^2, 4y^2, 4z^2, so that the
+  // division below is well conditioned.
+  const auto& m = R.m;
+  const double tr = m[0][0] + m[1][1] + m[2][2];
+  std::array<double, 4> q;
+  if (tr >= m[0][0] && tr >= m[1][1] && tr >= m[2][2]) {
+    const double s = 2 * std::sqrt(1 + tr);
+    q = {s / 4, (m[2][1] - m[1][2]) / s, (m[0][2] - m[2][0]) / s, (m[1][0] - m[0][1]) / s};
+  } else if (m[0][0] >= m[1][1] && m[0][0] >= m[2][2]) {
+    const double s = 2 * std::sqrt(1 + m[0][0] - m[1][1] - m[2][2]);
+    q = {(m[2][1] - m[1][2]) / s, s / 4, (m[0][1] + m[1][0]) / s, (m[0][2] + m[2][0]) / s};
+  } else if (m[1][1] >= m[2][2]) {
+    const double s = 2 * std::sqrt(1 - m[0][0] + m[1][1] - m[2][2]);
+    q = {(m[0][2] - m[2][0]) / s, (m[0][1] + m[1][0]) / s, s / 4, (m[1][2] + m[2][1]) / s};
+  } else {
+    const double s = 2 * std::sqrt(1 - m[0][0] - m[1][1] + m[2][2]);
+    q = {(m[1][0] - m[0][1]) / s, (m[0][2] + m[2][0]) / s, (m[1][2] + m[2][1]) / s, s / 4};
+  }
+  const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]) * (q[0] < 0 ? -1 : 1);
+  for (double& c : q) c /= n;
+  return q;
+}
+
 // ---- binary parsers -----------------------------------------------------------------------
 
 std::map<uint32_t, Camera> parse_cameras_binary(std::string_view bytes, const std::string& file) {
@@ -617,6 +641,13 @@ ColmapModel read_colmap_text(const std::string& dir) {
   m.points = parse_points3d_text(read_file(pts), pts.string());
   validate_colmap(m, dir);
   return m;
+}
+
+std::string find_colmap_model(const std::string& scene_dir) {
+  const fs::path root(scene_dir);
+  for (const fs::path& d : {root / "sparse" / "0", root / "sparse", root})
+    if (fs::exists(d / "cameras.bin") || fs::exists(d / "cameras.txt")) return d.string();
+  return "";
 }
 
 ColmapModel read_colmap(const std::string& dir) {

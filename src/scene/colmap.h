@@ -29,6 +29,9 @@ struct ColmapImage {
   Pose pose() const;
 };
 
+// The qvec (w, x, y, z; w >= 0) of a rotation matrix, the inverse of quat_to_rotation.
+std::array<double, 4> rotation_to_qvec(const Mat3d& R);
+
 struct ColmapPoint3D {
   uint64_t id = 0;
   std::array<double, 3> xyz{};
@@ -49,6 +52,10 @@ std::string camera_model_name(CameraModel model);
 CameraModel camera_model_from_name(const std::string& name, const std::string& file);
 CameraModel camera_model_from_id(int id, const std::string& file);
 int camera_model_num_params(CameraModel model);
+
+// The COLMAP model folder of a scene directory: DIR/sparse/0, DIR/sparse or DIR itself, the
+// first that holds cameras.bin or cameras.txt; "" if none does.
+std::string find_colmap_model(const std::string& scene_dir);
 
 // `dir` holds the three files. read_colmap picks binary if cameras.bin exists, else text.
 ColmapModel read_colmap(const std::string& dir);

@@ -136,6 +136,24 @@ std::vector<Pix4dView> read_pix4d_calibrated_cameras(const std::string& path) {
   return parse_pix4d_calibrated_cameras(read_text_file(path), path);
 }
 
+ColmapModel pix4d_to_colmap(const std::vector<Pix4dView>& views, const std::string& file) {
+  ColmapModel model;
+  for (const Pix4dView& v : views) {
+    if (v.radial_k3 != 0)
+      fail(file, "camera '" + v.name + "' has a third radial coefficient (R3 = " + std::to_string(v.radial_k3) +
+                     "), which COLMAP's OPENCV model cannot hold");
+    model.cameras[v.camera.id] = v.camera;
+    ColmapImage im;
+    im.id = v.camera.id;
+    im.camera_id = v.camera.id;
+    im.name = v.name;
+    im.qvec = rotation_to_qvec(v.pose.R);
+    im.tvec = {v.pose.t.x, v.pose.t.y, v.pose.t.z};
+    model.images[im.id] = im;
+  }
+  return model;
+}
+
 std::string find_pix4d_calibration(const std::string& dir) {
   const std::string suffix = "calibrated_camera_parameters.txt";
   std::vector<std::string> found;

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "scene/camera.h"
+#include "scene/colmap.h"
 
 namespace cls {
 
@@ -42,6 +43,10 @@ struct Pix4dView {
 // Parses the file's text; `file` names it in error messages.
 std::vector<Pix4dView> parse_pix4d_calibrated_cameras(std::string_view text, const std::string& file);
 std::vector<Pix4dView> read_pix4d_calibrated_cameras(const std::string& path);
+
+// A COLMAP model of the calibration: one camera per view (ids as in Pix4dView), no points. A
+// view with R3 != 0 is a cls::Error naming `file`: COLMAP's OPENCV model has no k3.
+ColmapModel pix4d_to_colmap(const std::vector<Pix4dView>& views, const std::string& file);
 
 // The calibrated_camera_parameters file of a Pix4D project under `dir` (in DIR, DIR/params or
 // DIR/1_initial/params; the name may carry the project prefix), or "" if there is none. More

@@ -16,13 +16,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The COLMAP model folder of a scene, or "" if none: DIR/sparse/0, DIR/sparse, DIR.
-std::string find_colmap_model(const fs::path& dir) {
-  for (const fs::path& d : {dir / "sparse" / "0", dir / "sparse", dir})
-    if (fs::exists(d / "cameras.bin") || fs::exists(d / "cameras.txt")) return d.string();
-  return "";
-}
-
 // The loaded-resolution pinhole camera of a source camera.
 PinholeCamera loaded_camera(const Camera& camera, double radial_k3, const SceneOptions& options,
                             const std::string& source) {
@@ -76,7 +69,7 @@ Scene load_scene(const std::string& dir, const SceneOptions& options) {
   scene.root = root.string();
   const fs::path image_dir = root / "images";
 
-  const std::string model_dir = find_colmap_model(root);
+  const std::string model_dir = find_colmap_model(root.string());
   if (!model_dir.empty()) {
     load_colmap(scene, model_dir, image_dir, options);
   } else {

@@ -322,3 +322,20 @@ TEST(Colmap, MissingFilesAndDanglingCameraReferences) {
   expect_error([&] { read_colmap(d.string()); }, {"images", "camera 9"});
   fs::remove_all(d);
 }
+
+TEST(Colmap, QvecFromRotationInvertsQuatToRotation) {
+  std::mt19937 rng(4);
+  std::normal_distribution<double> n(0, 1);
+  std::vector<std::array<double, 4>> qs = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}, {1e-9, 0.6, 0.8, 0}};
+  for (int i = 0; i < 200; ++i) qs.push_back({n(rng), n(rng), n(rng), n(rng)});
+  for (auto q : qs) {
+    const double len = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    const double sign = q[0] < 0 ? -1 : 1;
+    for (double& c : q) c *= sign / len;
+    const auto r = rotation_to_qvec(quat_to_rotation(q[0], q[1], q[2], q[3]));
+    // q and -q are the same rotation; w >= 0 picks one unless w is ~0
+    const double s = (r[0] * q[0] + r[1] * q[1] + r[2] * q[2] + r[3] * q[3]) < 0 ? -1 : 1;
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(s * r[k], q[k], 1e-12);
+    EXPECT_GE(r[0], 0);
+  }
+}

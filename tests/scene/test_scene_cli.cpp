@@ -1,0 +1,107 @@
+// The `citylangsplat scene` command, run as a subprocess.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "core/atomic_file.h"
+#include "scene/colmap.h"
+#include "scene_test_util.h"
+
+namespace fs = std::filesystem;
+using namespace cls;
+
+namespace {
+
+struct CliResult {
+  int status;
+  std::string out;
+};
+
+CliResult run(const std::string& args) {
+  const std::string cmd = std::string(CLS_BINARY) + " " + args + " 2>/dev/null";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof(buf), p)) > 0) out.append(buf, n);
+  const int status = pclose(p);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+fs::path model_scene(const std::string& name) {
+  const fs::path dir = test::fresh_dir(name);
+  ColmapModel m;
+  m.cameras[1] = Camera{1, CameraModel::SimpleRadial, 400, 300, {350, 200, 150, -0.05}};
+  m.cameras[2] = Camera{2, CameraModel::Pinhole, 400, 300, {350, 350, 200, 150}};
+  for (uint32_t i = 1; i <= 3; ++i)
+    m.images[i] = ColmapImage{i, {1, 0, 0, 0}, {0, 0, double(i)}, i == 3 ? 2u : 1u, "im" + std::to_string(i) + ".jpg",
+                              {{10, 20, 7}, {30, 40, std::numeric_limits<uint64_t>::max()}}};
+  m.points[7] = ColmapPoint3D{7, {1, 2, 3}, {1, 2, 3}, 0.25, {{1, 0}, {2, 0}}};
+  write_colmap_binary((dir / "sparse" / "0").string(), m);
+  return dir;
+}
+
+}  // namespace
+
+TEST(SceneCli, InfoJson) {
+  const fs::path dir = model_scene("cli_info");
+  const CliResult r = run("scene info " + dir.string() + " --json --skip-image-check -r 2");
+  ASSERT_EQ(r.status, 0);
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["source"], "colmap-bin");
+  EXPECT_EQ(j["views"], 3);
+  EXPECT_EQ(j["cameras"], 2);
+  EXPECT_EQ(j["camera_models"]["SIMPLE_RADIAL"], 1);
+  EXPECT_EQ(j["camera_models"]["PINHOLE"], 1);
+  EXPECT_EQ(j["points"], 1);
+  bool found_pinhole = false;
+  for (const auto& s : j["image_sizes"])
+    if (s["views"] == 1) {
+      EXPECT_EQ(s["loaded"][0], 200);  // the PINHOLE view at -r 2
+      found_pinhole = true;
+    }
+  EXPECT_TRUE(found_pinhole);
+  // images are checked by default
+  EXPECT_EQ(run("scene info " + dir.string()).status, 1);
+  EXPECT_EQ(run("scene info " + dir.string() + " -r 3").status, 1);
+  EXPECT_EQ(run("scene info").status, 2);
+  fs::remove_all(dir);
+}
+
+TEST(SceneCli, ConvertRoundTripsLosslessly) {
+  const fs::path dir = model_scene("cli_convert");
+  ASSERT_EQ(run("scene convert " + dir.string() + " --out " + (dir / "txt").string() + " --format txt").status, 0);
+  ASSERT_EQ(run("scene convert " + (dir / "txt").string() + " --out " + (dir / "bin").string()).status, 0);
+  for (const char* f : {"cameras.bin", "images.bin", "points3D.bin"})
+    EXPECT_EQ(read_text_file(dir / "bin" / f), read_text_file(dir / "sparse" / "0" / f)) << f;
+  EXPECT_EQ(run("scene convert " + dir.string() + " --out " + (dir / "x").string() + " --format ply").status, 2);
+  EXPECT_FALSE(fs::exists(dir / "x"));
+  fs::remove_all(dir);
+}
+
+TEST(SceneCli, ConvertPix4d) {
+  const fs::path dir = test::fresh_dir("cli_pix4d");
+  const std::string view = "a.jpg 100 80\n90 0 50\n0 90 40\n0 0 1\n0.1 0 R3\n0 0\n1 2 3\n0 1 0\n-1 0 0\n0 0 1\n";
+  auto with_r3 = [&](const std::string& r3) {
+    std::string s = view;
+    s.replace(s.find("R3"), 2, r3);
+    return s;
+  };
+  write_text_atomic(dir / "calibrated_camera_parameters.txt", with_r3("0"));
+  ASSERT_EQ(run("scene convert " + dir.string() + " --out " + (dir / "m").string() + " --format txt").status, 0);
+  const ColmapModel m = read_colmap((dir / "m").string());
+  ASSERT_EQ(m.images.size(), 1u);
+  EXPECT_EQ(m.cameras.at(1).model, CameraModel::OpenCV);
+  const Vec3d c = m.images.at(1).pose().center();  // the Pix4D camera position comes back
+  EXPECT_NEAR(c.x, 1, 1e-12);
+  EXPECT_NEAR(c.y, 2, 1e-12);
+  EXPECT_NEAR(c.z, 3, 1e-12);
+  write_text_atomic(dir / "calibrated_camera_parameters.txt", with_r3("0.01"));
+  EXPECT_EQ(run("scene convert " + dir.string() + " --out " + (dir / "k3").string()).status, 1);
+  EXPECT_FALSE(fs::exists(dir / "k3"));
+  fs::remove_all(dir);
+}
