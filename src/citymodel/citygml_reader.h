@@ -11,9 +11,12 @@
 // its boundary surfaces) are added once, with the class of the semantic surface. City objects
 // other than buildings are skipped (reported with -v).
 //
-// Errors (cls::Error naming the file): malformed XML (pugixml's description and position), no
-// CityGML namespace, invalid or duplicate gml:id, dangling or cyclic xlink, unparsable or
-// non-finite coordinates, rings of fewer than 3 points, no building geometry at the requested LoD.
+// Errors (cls::Error naming the file, with the line where known): malformed XML (pugixml's
+// description and position), no CityGML namespace, a gml:id that is not an XML ID (e.g. starts with
+// a digit) or is duplicated, a dangling xlink:href, a geometry xlink to another file, unparsable or
+// non-finite coordinates, rings of fewer than 3 points, a polygon without exterior ring, nesting
+// deeper than 256 levels, no building geometry at the requested LoD. Zero-area polygons are
+// skipped and counted (logged), as MeshBuilder does.
 #include <cstddef>
 #include <string>
 

@@ -78,18 +78,27 @@ void LabelTable::fill(const std::vector<RayHit>& hits, int width, int height, La
   out.building.resize(n);
   out.coverage.resize(n);
   out.depth.resize(n);
+  // Raw pointers: the uint8_t coverage stores may alias anything, so through the vectors every
+  // store would force the compiler to reload all data pointers.
+  const RayHit* in = hits.data();
+  const Entry* table = entries_.data();
+  const size_t entries = entries_.size();
+  uint16_t *l1 = out.level[0].data(), *l2 = out.level[1].data(), *l3 = out.level[2].data();
+  uint16_t* building = out.building.data();
+  uint8_t* coverage = out.coverage.data();
+  float* depth = out.depth.data();
   const Entry none{{0, 0, 0}, 0};
 #pragma omp parallel for schedule(static)
   for (int64_t p = 0; p < static_cast<int64_t>(n); ++p) {
-    const RayHit& h = hits[p];
-    const bool hit = h.prim < entries_.size();  // kNoHit is never a valid index
-    const Entry& e = hit ? entries_[h.prim] : none;
-    out.level[0][p] = e.level[0];
-    out.level[1][p] = e.level[1];
-    out.level[2][p] = e.level[2];
-    out.building[p] = e.building;
-    out.coverage[p] = (e.level[0] | e.level[1] | e.level[2]) ? 255 : 0;
-    out.depth[p] = hit ? h.depth : 0.0f;
+    const RayHit& h = in[p];
+    const bool hit = h.prim < entries;  // kNoHit is never a valid index
+    const Entry& e = hit ? table[h.prim] : none;
+    l1[p] = e.level[0];
+    l2[p] = e.level[1];
+    l3[p] = e.level[2];
+    building[p] = e.building;
+    coverage[p] = (e.level[0] | e.level[1] | e.level[2]) ? 255 : 0;
+    depth[p] = hit ? h.depth : 0.0f;
   }
 }
 

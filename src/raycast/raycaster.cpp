@@ -272,7 +272,7 @@ void Raycaster::Impl::cast_view_packets(const PinholeCamera& cam, const Pose& po
                                         std::vector<RayHit>& out) const {
   constexpr int kTileW = 4, kTileH = N / 4;
   const int W = cam.width, H = cam.height;
-  out.assign(static_cast<size_t>(W) * H, RayHit{});
+  out.resize(static_cast<size_t>(W) * H);  // every pixel is written below
   Mat3f R;
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) R.m[r][c] = static_cast<float>(pose.R.m[r][c]);
@@ -316,7 +316,7 @@ void Raycaster::Impl::cast_view_packets(const PinholeCamera& cam, const Pose& po
 
 template <int N>
 void Raycaster::Impl::cast_packets(const std::vector<Ray>& rays, std::vector<RayHit>& out) const {
-  out.assign(rays.size(), RayHit{});
+  out.resize(rays.size());  // every ray is written below
   const int64_t packets = (static_cast<int64_t>(rays.size()) + N - 1) / N;
 #pragma omp parallel
   {

@@ -20,6 +20,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "scene/path_query.h"
 #include "core/log.h"
 
 namespace cls {
@@ -277,7 +278,7 @@ void append_point3d_id(std::string& out, uint64_t id) {
 // ---- files ----------------------------------------------------------------------------------
 
 std::string read_file(const fs::path& path) {
-  if (!fs::exists(path)) fail(path.string(), "file not found");
+  if (!is_file(path)) fail(path.string(), "file not found");
   return read_text_file(path);
 }
 
@@ -646,13 +647,13 @@ ColmapModel read_colmap_text(const std::string& dir) {
 std::string find_colmap_model(const std::string& scene_dir) {
   const fs::path root(scene_dir);
   for (const fs::path& d : {root / "sparse" / "0", root / "sparse", root})
-    if (fs::exists(d / "cameras.bin") || fs::exists(d / "cameras.txt")) return d.string();
+    if (is_file(d / "cameras.bin") || is_file(d / "cameras.txt")) return d.string();
   return "";
 }
 
 ColmapModel read_colmap(const std::string& dir) {
-  if (fs::exists(fs::path(dir) / "cameras.bin")) return read_colmap_binary(dir);
-  if (fs::exists(fs::path(dir) / "cameras.txt")) return read_colmap_text(dir);
+  if (is_file(fs::path(dir) / "cameras.bin")) return read_colmap_binary(dir);
+  if (is_file(fs::path(dir) / "cameras.txt")) return read_colmap_text(dir);
   fail(dir, "no COLMAP model here (neither cameras.bin nor cameras.txt)");
 }
 

@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/error.h"
+#include "scene/path_query.h"
 #include "core/log.h"
 
 namespace cls {
@@ -67,7 +68,7 @@ std::shared_ptr<const ImageLoader::CachedMaps> ImageLoader::maps_for(const LensC
 
 cv::Mat ImageLoader::load(const SceneView& view) {
   const std::string& path = view.image_path;
-  if (!fs::is_regular_file(path)) fail(path, "image not found (view '" + view.name + "')");
+  if (!is_file(path)) fail(path, "image not found (view '" + view.name + "')");
   cv::Mat image;
   try {
     image = cv::imread(path, cv::IMREAD_COLOR);

@@ -6,6 +6,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "scene/path_query.h"
 
 namespace cls {
 namespace fs = std::filesystem;
@@ -132,7 +133,7 @@ std::vector<Pix4dView> parse_pix4d_calibrated_cameras(std::string_view text, con
 }
 
 std::vector<Pix4dView> read_pix4d_calibrated_cameras(const std::string& path) {
-  if (!fs::is_regular_file(path)) fail(path, "file not found");
+  if (!is_file(path)) fail(path, "file not found");
   return parse_pix4d_calibrated_cameras(read_text_file(path), path);
 }
 

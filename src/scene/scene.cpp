@@ -5,6 +5,7 @@
 #include <map>
 
 #include "core/error.h"
+#include "scene/path_query.h"
 #include "core/log.h"
 #include "scene/colmap.h"
 #include "scene/image_loader.h"
@@ -37,7 +38,7 @@ SceneView make_view(uint32_t image_id, const std::string& name, const fs::path& 
 
 void load_colmap(Scene& scene, const std::string& model_dir, const fs::path& image_dir, const SceneOptions& options) {
   const ColmapModel model = read_colmap(model_dir);
-  scene.source = fs::exists(fs::path(model_dir) / "cameras.bin") ? "colmap-bin" : "colmap-txt";
+  scene.source = is_file(fs::path(model_dir) / "cameras.bin") ? "colmap-bin" : "colmap-txt";
   // One undistorted camera per COLMAP camera, shared by its images.
   std::map<uint32_t, PinholeCamera> loaded;
   for (const auto& [id, cam] : model.cameras)
@@ -63,8 +64,9 @@ void load_pix4d(Scene& scene, const std::string& file, const fs::path& image_dir
 
 Scene load_scene(const std::string& dir, const SceneOptions& options) {
   check_scene_options(options);
+  if (dir.empty()) throw Error("no scene directory given");
   const fs::path root = fs::absolute(dir);
-  if (!fs::is_directory(root)) fail(dir, "scene directory not found");
+  if (!is_dir(root)) fail(dir, "scene directory not found");
   Scene scene;
   scene.root = root.string();
   const fs::path image_dir = root / "images";
@@ -84,9 +86,9 @@ Scene load_scene(const std::string& dir, const SceneOptions& options) {
             [](const SceneView& a, const SceneView& b) { return a.name < b.name; });
 
   if (options.check_images) {
-    if (!fs::is_directory(image_dir)) fail(image_dir.string(), "image folder not found");
+    if (!is_dir(image_dir)) fail(image_dir.string(), "image folder not found");
     for (const SceneView& v : scene.views)
-      if (!fs::is_regular_file(v.image_path)) fail(v.image_path, "image not found (view '" + v.name + "')");
+      if (!is_file(v.image_path)) fail(v.image_path, "image not found (view '" + v.name + "')");
   }
   log_verbose(cat("scene ", dir, ": ", scene.views.size(), " views, ", scene.points.size(), " sparse points (",
                   scene.source, ")"));
