@@ -11,7 +11,7 @@
 namespace cls::synth {
 
 struct SparsePointOptions {
-  int samples_per_view = 600;  // jittered-grid pixel samples per view (sky samples are dropped)
+  int samples_per_view = 300;  // jittered-grid pixel samples per view (sky samples are dropped)
   double noise_sigma = 0.01;   // standard deviation of the Gaussian noise on each point (scene units)
   int min_track = 2;           // points seen by fewer views are dropped
   uint64_t seed = 1;

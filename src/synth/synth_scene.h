@@ -19,7 +19,7 @@ struct SynthSettings {
   int width = 480, height = 360;
   double hfov_deg = 60;
   uint64_t seed = 1;
-  int samples_per_view = 600;  // sparse point samples per view
+  int samples_per_view = 300;  // sparse point samples per view
   double point_noise = 0.01;   // sparse point noise (scene units)
   double gt_density = 400;     // GT cloud samples per m² on the city model; terrain/clutter get 1/8
 };
