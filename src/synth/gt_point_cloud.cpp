@@ -3,10 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 
 #include "core/atomic_file.h"
-#include "core/error.h"
 #include "synth/random.h"
 
 namespace cls::synth {
