@@ -1,0 +1,159 @@
+#include "raycast/label_map_io.h"
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <sstream>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/log.h"
+
+namespace cls {
+namespace fs = std::filesystem;
+namespace {
+
+bool host_is_little_endian() {
+  const uint32_t one = 1;
+  unsigned char first;
+  std::memcpy(&first, &one, 1);
+  return first == 1;
+}
+
+void check_size(const fs::path& path, size_t size, int width, int height) {
+  if (width <= 0 || height <= 0 || size != static_cast<size_t>(width) * height)
+    fail(path.string(), cat("cannot write ", size, " values as a ", width, "x", height, " image"));
+}
+
+// cv::imwrite through write_atomic; OpenCV's exceptions become cls::Error naming the file.
+void write_image(const fs::path& path, const cv::Mat& image) {
+  write_atomic(path, [&](const fs::path& tmp) {
+    bool ok = false;
+    try {
+      ok = cv::imwrite(tmp.string(), image);
+    } catch (const cv::Exception& e) {
+      fail(path.string(), cat("cannot write image: ", e.what()));
+    }
+    if (!ok) fail(path.string(), "cannot write image");
+  });
+}
+
+}  // namespace
+
+void write_png_u16(const fs::path& path, const std::vector<uint16_t>& data, int width, int height) {
+  check_size(path, data.size(), width, height);
+  write_image(path, cv::Mat(height, width, CV_16UC1, const_cast<uint16_t*>(data.data())));
+}
+
+void write_png_u8(const fs::path& path, const std::vector<uint8_t>& data, int width, int height) {
+  check_size(path, data.size(), width, height);
+  write_image(path, cv::Mat(height, width, CV_8UC1, const_cast<uint8_t*>(data.data())));
+}
+
+void write_pfm(const fs::path& path, const std::vector<float>& data, int width, int height) {
+  check_size(path, data.size(), width, height);
+  if (!host_is_little_endian()) fail(path.string(), "PFM writer supports little-endian hosts only");
+  write_atomic(path, [&](const fs::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    out << "Pf\n" << width << " " << height << "\n-1.0\n";
+    for (int j = height - 1; j >= 0; --j)
+      out.write(reinterpret_cast<const char*>(data.data() + static_cast<size_t>(j) * width),
+                static_cast<std::streamsize>(width * sizeof(float)));
+    out.close();
+    if (!out) fail(path.string(), "write failed");
+  });
+}
+
+FloatImage read_pfm(const fs::path& path) {
+  const std::string bytes = read_text_file(path);
+  // Header: "Pf", width, height, scale, each followed by whitespace; exactly one whitespace
+  // character separates the scale from the pixel data.
+  size_t pos = 0;
+  auto token = [&](const char* what) {
+    while (pos < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[pos]))) ++pos;
+    const size_t start = pos;
+    while (pos < bytes.size() && !std::isspace(static_cast<unsigned char>(bytes[pos]))) ++pos;
+    if (start == pos || pos >= bytes.size()) fail(path.string(), cat("truncated PFM header (no ", what, ")"));
+    return bytes.substr(start, pos - start);
+  };
+  const std::string magic = token("magic");
+  if (magic == "PF") fail(path.string(), "3-channel PFM; expected a single-channel depth map (Pf)");
+  if (magic != "Pf") fail(path.string(), "not a PFM file (magic '" + magic.substr(0, 8) + "')");
+  FloatImage img;
+  double scale = 0;
+  try {
+    size_t used = 0;
+    const std::string w = token("width"), h = token("height"), s = token("scale");
+    img.width = std::stoi(w, &used);
+    if (used != w.size()) throw std::invalid_argument(w);
+    img.height = std::stoi(h, &used);
+    if (used != h.size()) throw std::invalid_argument(h);
+    scale = std::stod(s, &used);
+    if (used != s.size()) throw std::invalid_argument(s);
+  } catch (const std::logic_error&) {
+    fail(path.string(), "malformed PFM header (width, height or scale is not a number)");
+  }
+  if (img.width <= 0 || img.height <= 0 || img.width > (1 << 20) || img.height > (1 << 20))
+    fail(path.string(), cat("PFM size ", img.width, "x", img.height, " out of range"));
+  if (!std::isfinite(scale) || scale == 0) fail(path.string(), "PFM scale must be a non-zero number");
+  ++pos;  // the single whitespace character after the scale
+  const size_t n = static_cast<size_t>(img.width) * img.height;
+  if (bytes.size() - pos < n * sizeof(float))
+    fail(path.string(), cat("truncated PFM: ", n * sizeof(float), " bytes of pixel data expected, ",
+                            bytes.size() - pos, " found"));
+  const bool swap = (scale < 0) != host_is_little_endian();
+  img.data.resize(n);
+  for (int j = 0; j < img.height; ++j) {
+    const char* row = bytes.data() + pos + static_cast<size_t>(img.height - 1 - j) * img.width * sizeof(float);
+    for (int i = 0; i < img.width; ++i) {
+      char b[4];
+      std::memcpy(b, row + 4 * i, 4);
+      if (swap) {
+        std::swap(b[0], b[3]);
+        std::swap(b[1], b[2]);
+      }
+      std::memcpy(&img.data[static_cast<size_t>(j) * img.width + i], b, 4);
+    }
+  }
+  return img;
+}
+
+void write_preview(const fs::path& path, const LabelMaps& maps, const Taxonomy& taxonomy) {
+  const int W = maps.width, H = maps.height;
+  check_size(path, maps.level[0].size(), W, H);
+  cv::Mat image(H, W, CV_8UC3);
+  const cv::Vec3b no_hit(40, 40, 40), unlabelled(128, 128, 128), outline(0, 0, 0);
+#pragma omp parallel for schedule(static)
+  for (int j = 0; j < H; ++j) {
+    for (int i = 0; i < W; ++i) {
+      const size_t p = static_cast<size_t>(j) * W + i;
+      const uint16_t label = maps.level[0][p];
+      cv::Vec3b c = maps.depth[p] > 0 ? unlabelled : no_hit;
+      if (label > 0 && label <= taxonomy.classes.size()) {
+        const auto& rgb = taxonomy.classes[label - 1].color;
+        c = cv::Vec3b(rgb[2], rgb[1], rgb[0]);
+      }
+      // Outlines against the right and lower neighbours: buildings black, classes darkened.
+      const size_t right = i + 1 < W ? p + 1 : p, down = j + 1 < H ? p + W : p;
+      if (maps.building[p] != maps.building[right] || maps.building[p] != maps.building[down])
+        c = outline;
+      else if (label != maps.level[0][right] || label != maps.level[0][down])
+        c = cv::Vec3b(c[0] / 2, c[1] / 2, c[2] / 2);
+      image.at<cv::Vec3b>(j, i) = c;
+    }
+  }
+  write_image(path, image);
+}
+
+void write_label_maps(const fs::path& dir, const LabelMaps& maps, const Taxonomy& taxonomy) {
+  for (int l = 0; l < 3; ++l)
+    write_png_u16(dir / cat("level", l + 1, ".png"), maps.level[l], maps.width, maps.height);
+  write_png_u16(dir / "building.png", maps.building, maps.width, maps.height);
+  write_png_u8(dir / "coverage.png", maps.coverage, maps.width, maps.height);
+  write_pfm(dir / "depth.pfm", maps.depth, maps.width, maps.height);
+  write_preview(dir / "preview.png", maps, taxonomy);
+}
+
+}  // namespace cls

@@ -1,0 +1,37 @@
+#pragma once
+// Files of a view's label maps: 16-/8-bit PNG, PFM depth and a colour preview. Every writer goes
+// through write_atomic, so a reader never sees a half-written file.
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "citymodel/taxonomy.h"
+#include "raycast/label_maps.h"
+
+namespace cls {
+
+// Single-channel PNG, row-major width * height values.
+void write_png_u16(const std::filesystem::path& path, const std::vector<uint16_t>& data, int width, int height);
+void write_png_u8(const std::filesystem::path& path, const std::vector<uint8_t>& data, int width, int height);
+
+// Single-channel PFM ("Pf"): little-endian floats (scale -1.0), rows stored bottom to top as the
+// format prescribes; `data` is row-major top to bottom like every other map.
+void write_pfm(const std::filesystem::path& path, const std::vector<float>& data, int width, int height);
+
+struct FloatImage {
+  int width = 0, height = 0;
+  std::vector<float> data;  // row-major, top row first
+};
+// Reads a single-channel PFM of either byte order; cls::Error naming the file if it is malformed
+// or truncated.
+FloatImage read_pfm(const std::filesystem::path& path);
+
+// RGB preview: level-1 class colours, darkened where the level-1 class changes, black outlines
+// where the building changes, dark grey where nothing is hit, mid grey for unlabelled hits.
+void write_preview(const std::filesystem::path& path, const LabelMaps& maps, const Taxonomy& taxonomy);
+
+// The per-view files: level1.png, level2.png, level3.png, building.png, coverage.png, depth.pfm,
+// preview.png in `dir`.
+void write_label_maps(const std::filesystem::path& dir, const LabelMaps& maps, const Taxonomy& taxonomy);
+
+}  // namespace cls

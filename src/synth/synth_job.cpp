@@ -1,0 +1,125 @@
+#include "synth/synth_job.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "citymodel/city_model.h"
+#include "citymodel/city_transform.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/log.h"
+
+namespace cls::synth {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// FNV-1a, 64 bit: identifies the input files' content in scene.json.
+std::string fnv1a64_hex(const std::string& bytes) {
+  uint64_t h = 0xcbf29ce484222325ULL;
+  for (const unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ULL;
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+bool is_empty_dir(const fs::path& p) { return fs::is_directory(p) && fs::directory_iterator(p) == fs::directory_iterator(); }
+
+// What keeps the job from writing `out` ("" if nothing).
+std::string output_problem(const SynthJob& job) {
+  const fs::path out(job.out_dir);
+  if (!fs::exists(out) || is_empty_dir(out)) return "";
+  if (!fs::is_directory(out)) return "exists and is not a directory";
+  if (!job.overwrite) return "exists and is not empty (pass --overwrite to replace a previous synth output)";
+  if (!fs::exists(out / "scene.json")) return "is not a synth output (no scene.json): refusing to replace it";
+  return "";
+}
+
+}  // namespace
+
+std::string synth_scene_json(const SynthJob& job, const SemanticMesh& mesh, const std::string& city_bytes,
+                             const std::string& taxonomy_bytes) {
+  const SynthSettings& s = job.settings;
+  const std::string city_file = fs::path(job.city_path).filename().string();
+  nlohmann::ordered_json generator = {
+      {"program", "citylangsplat synth"},
+      {"version", CLS_VERSION},
+      {"city_source", city_file},
+      {"city_fnv1a64", fnv1a64_hex(city_bytes)},
+      {"lod_option", job.lod},
+      {"taxonomy", job.taxonomy_path.empty() ? std::string("builtin") : fs::path(job.taxonomy_path).filename().string()},
+      {"taxonomy_fnv1a64", job.taxonomy_path.empty() ? std::string() : fnv1a64_hex(taxonomy_bytes)},
+      {"views", s.views},
+      {"width", s.width},
+      {"height", s.height},
+      {"hfov_deg", s.hfov_deg},
+      {"seed", s.seed},
+      {"samples_per_view", s.samples_per_view},
+      {"point_noise", s.point_noise},
+      {"gt_density", s.gt_density},
+      {"gt_context_density", s.gt_density / 8},
+  };
+  nlohmann::ordered_json scene = {
+      {"city_model", "city/" + city_file},
+      {"city_transform", "city/transform.json"},
+      {"lod", mesh.lod},
+      {"generator", generator},
+  };
+  return scene.dump(2) + "\n";
+}
+
+bool run_synth_job(const SynthJob& job) {
+  const std::string problem = settings_problem(job.settings);
+  if (!problem.empty()) throw UsageError("synth: " + problem);
+  if (job.out_dir.empty()) throw UsageError("synth: --out is required");
+  const fs::path out = fs::absolute(job.out_dir).lexically_normal();
+  if (out.filename().empty() || out == out.root_path()) throw UsageError("synth: --out must name a directory");
+
+  const Taxonomy taxonomy = load_taxonomy({job.lod, job.taxonomy_path});
+  const std::string taxonomy_bytes = job.taxonomy_path.empty() ? std::string() : read_text_file(job.taxonomy_path);
+  const SemanticMesh mesh = load_city_model(job.city_path, taxonomy, job.lod);
+  if (mesh.triangles.empty()) fail(job.city_path, "the city model has no surfaces to render at the chosen LoD");
+  const std::string city_bytes = read_text_file(job.city_path);
+  const std::string scene_json = synth_scene_json(job, mesh, city_bytes, taxonomy_bytes);
+
+  if (job.skip_if_same && fs::exists(out / "scene.json") && read_text_file(out / "scene.json") == scene_json) {
+    log_info("synth: " + out.string() + " is up to date");
+    return false;
+  }
+  const std::string bad_output = output_problem(job);
+  if (!bad_output.empty()) fail(job.out_dir, bad_output);
+
+  const SynthScene scene = render_synth_scene(mesh, taxonomy, job.settings);
+
+  // Stage beside the destination (same file system), then swap it in.
+  const fs::path staging = out.parent_path() / ("." + out.filename().string() + ".synth-tmp" + std::to_string(::getpid()));
+  try {
+    fs::remove_all(staging);
+    fs::create_directories(staging);
+    write_synth_outputs(staging.string(), scene, taxonomy);
+    write_text_atomic(staging / "city" / fs::path(job.city_path).filename(), city_bytes);
+    CityTransform to_scene;
+    for (int i = 0; i < 3; ++i) to_scene.matrix[i][3] = -mesh.origin[i];
+    write_city_transform((staging / "city" / "transform.json").string(), to_scene);
+    write_text_atomic(staging / "scene.json", scene_json);
+    if (fs::exists(out)) fs::remove_all(out);
+    fs::rename(staging, out);
+  } catch (const fs::filesystem_error& e) {
+    std::error_code ec;
+    fs::remove_all(staging, ec);
+    fail(job.out_dir, std::string("cannot write the scene: ") + e.code().message());
+  } catch (...) {
+    std::error_code ec;
+    fs::remove_all(staging, ec);
+    throw;
+  }
+  log_info("synth: wrote " + out.string());
+  return true;
+}
+
+}  // namespace cls::synth

@@ -1,0 +1,36 @@
+#pragma once
+// `citylangsplat synth` as a library call: loads the city model, renders the synthetic scene and
+// writes the scene directory all at once (staged beside it and renamed into place), so a
+// directory with a scene.json is always complete.
+#include <string>
+
+#include "synth/synth_scene.h"
+
+namespace cls::synth {
+
+struct SynthJob {
+  std::string city_path;
+  std::string out_dir;
+  int lod = 0;                // 1, 2, 3, or 0 for the highest LoD in the file
+  std::string taxonomy_path;  // "" = the built-in taxonomy
+  SynthSettings settings;
+  bool overwrite = false;     // replace an existing synth output (a directory with scene.json)
+  bool skip_if_same = false;  // do nothing if out_dir/scene.json equals what this job would write
+};
+
+// Layout of the scene directory:
+//   scene.json                  {"city_model", "city_transform", "lod", "generator": {...}}
+//   city/<model file>, city/transform.json (source CRS -> scene frame: translation by -origin)
+//   images/NNNN.png, sparse/0/{cameras,images,points3D}.{bin,txt}
+//   gt/labels/NNNN.png, gt/legend.json, gt/points.ply (settings.gt_density points per m² on the
+//   city model, 1/8 of that on clutter and on the terrain near the building; class -1 off the model)
+// All inputs and the output directory are checked before anything is rendered or written
+// (cls::UsageError for bad settings, cls::Error naming the file otherwise).
+// Returns false when skip_if_same found the output up to date, true when it wrote it.
+bool run_synth_job(const SynthJob& job);
+
+// The scene.json a job writes for a loaded model (tested: it decides skip_if_same).
+std::string synth_scene_json(const SynthJob& job, const SemanticMesh& mesh, const std::string& city_bytes,
+                             const std::string& taxonomy_bytes);
+
+}  // namespace cls::synth

@@ -1,0 +1,77 @@
+#include "synth/synth_scene.h"
+
+#include <filesystem>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "core/progress.h"
+#include "synth/sparse_points.h"
+
+namespace cls::synth {
+
+namespace fs = std::filesystem;
+
+std::string settings_problem(const SynthSettings& s) {
+  if (s.views < 2 || s.views > 10000) return cat("--views must be in [2, 10000], got ", s.views);
+  if (s.width < 16 || s.width > 8192 || s.height < 16 || s.height > 8192)
+    return cat("--width and --height must be in [16, 8192], got ", s.width, "x", s.height);
+  if (!(s.hfov_deg >= 10 && s.hfov_deg <= 150)) return cat("horizontal field of view must be in [10, 150] degrees");
+  if (s.samples_per_view < 1) return "sparse samples per view must be positive";
+  if (!(s.point_noise >= 0 && s.point_noise < 1)) return "point noise must be in [0, 1)";
+  if (!(s.gt_density > 0 && s.gt_density <= 1e5)) return "--gt-density must be in (0, 100000] points per square unit";
+  return "";
+}
+
+SynthScene render_synth_scene(const SemanticMesh& mesh, const Taxonomy& taxonomy, const SynthSettings& settings) {
+  SynthScene scene;
+  scene.geometry = build_synth_geometry(mesh, taxonomy, settings.seed);
+  scene.views = make_uav_views(scene.geometry.city_bounds,
+                               {settings.views, settings.width, settings.height, settings.hfov_deg, settings.seed});
+  const SurfaceShader shader(scene.geometry, mesh, settings.seed);
+  const ViewRenderer renderer(scene.geometry, mesh, shader);
+  {
+    Progress progress("synth: render", scene.views.size(), "views");
+    for (const SynthView& view : scene.views) {
+      scene.rendered.push_back(renderer.render(view));
+      progress.advance();
+    }
+  }
+  scene.colmap = make_colmap_model(scene.views, scene.rendered,
+                                   {settings.samples_per_view, settings.point_noise, 2, settings.seed});
+  scene.gt_points = sample_gt_points(scene.geometry, mesh, shader,
+                                     {settings.gt_density, settings.gt_density / 8, settings.seed});
+  log_info(cat("synth: ", scene.views.size(), " views, ", scene.colmap.points.size(), " sparse points, ",
+               scene.gt_points.size(), " ground-truth points"));
+  return scene;
+}
+
+namespace {
+void write_png(const fs::path& path, const cv::Mat& image) {
+  write_atomic(path, [&](const fs::path& tmp) {
+    if (!cv::imwrite(tmp.string(), image)) fail(path.string(), "cannot write PNG");
+  });
+}
+}  // namespace
+
+void write_synth_outputs(const std::string& dir, const SynthScene& scene, const Taxonomy& taxonomy) {
+  const fs::path root(dir);
+  Progress progress("synth: write", scene.views.size(), "views");
+  for (size_t v = 0; v < scene.views.size(); ++v) {
+    const fs::path name(scene.views[v].name);
+    write_png(root / "images" / name, scene.rendered[v].image);
+    write_png(root / "gt" / "labels" / (name.stem().string() + ".png"), scene.rendered[v].labels);
+    progress.advance();
+  }
+  progress.finish();
+  const std::string sparse = (root / "sparse" / "0").string();
+  fs::create_directories(sparse);
+  write_colmap_binary(sparse, scene.colmap);
+  write_colmap_text(sparse, scene.colmap);
+  write_text_atomic(root / "gt" / "legend.json", taxonomy.legend_json());
+  write_gt_ply((root / "gt" / "points.ply").string(), scene.gt_points);
+}
+
+}  // namespace cls::synth

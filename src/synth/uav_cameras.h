@@ -1,0 +1,36 @@
+#pragma once
+// UAV-like oblique camera placement around a city model.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "scene/camera.h"
+#include "synth/box.h"
+
+namespace cls::synth {
+
+struct SynthView {
+  std::string name;  // image file name, "0000.png", ...
+  PinholeCamera camera;
+  Pose pose;  // world (scene frame) -> camera
+};
+
+struct CameraRigOptions {
+  int views = 24;
+  int width = 480, height = 360;
+  double hfov_deg = 60;
+  uint64_t seed = 1;
+};
+
+// Pitch range of the views (degrees below the horizon).
+constexpr double kMinPitchDeg = 25, kMaxPitchDeg = 60;
+
+// Square pixels, principal point at the image centre, horizontal field of view `hfov_deg`.
+PinholeCamera pinhole_from_fov(int width, int height, double hfov_deg);
+
+// Views on rings around `city` at several altitudes (pitch 30..55 degrees, jittered by the seed,
+// always within [kMinPitchDeg, kMaxPitchDeg]), looking at the model from a distance at which its
+// bounding sphere fills most of the frame.
+std::vector<SynthView> make_uav_views(const Box3d& city, const CameraRigOptions& options);
+
+}  // namespace cls::synth
