@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <exception>
 
 #include "core/log.h"
 
@@ -19,7 +20,11 @@ Progress::Progress(std::string stage, uint64_t total, std::string unit)
       last_print_(start_),
       tty_(isatty(fileno(stderr)) != 0) {}
 
-Progress::~Progress() { finish(); }
+// A stage that is unwinding on an error prints no final line: the error is the last word.
+Progress::~Progress() {
+  if (std::uncaught_exceptions() > 0) finished_ = true;
+  finish();
+}
 
 void Progress::advance(uint64_t n) {
   done_.fetch_add(n);
