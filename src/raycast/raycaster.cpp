@@ -14,7 +14,6 @@
 // opening never pay for the rule; models without priorities build no tie scenes at all.
 #include "raycast/raycaster.h"
 
-#include <omp.h>
 #include <xmmintrin.h>
 
 #include <algorithm>
