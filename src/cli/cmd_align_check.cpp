@@ -1,6 +1,71 @@
+// citylangsplat align-check: how well a scene's sparse points lie on the city mesh.
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "cli/args.h"
+#include "cli/city_mesh_inputs.h"
 #include "cli/commands.h"
 #include "core/error.h"
+#include "core/log.h"
+#include "raycast/alignment.h"
+#include "raycast/closest_point.h"
+#include "scene/scene.h"
 
 namespace cls {
-int cmd_align_check(int, char**) { throw Error("align_check: not implemented yet"); }
+
+int cmd_align_check(int argc, char** argv) {
+  Args args("align-check",
+            "Distance from every sparse point of the scene to the nearest city-mesh triangle, in the "
+            "city model's units (metres): the share within -d, median and mean. A low share means the "
+            "model and the scene are misaligned (check --city-transform) before any training.");
+  args.option("scene", "", "scene directory (COLMAP or Pix4D; required)");
+  add_city_mesh_options(args);
+  args.option("distance", "0.5", "threshold in metres of the city model", "d")
+      .flag("json", "print exactly one JSON object on stdout");
+  if (!args.parse(argc, argv)) return 0;
+  if (!args.has("scene")) throw UsageError("align-check: --scene is required (see --help)");
+  const double threshold = args.get_double("distance");
+  if (!(threshold >= 0) || !std::isfinite(threshold))
+    throw UsageError("align-check: --distance must be a non-negative number");
+  const CityMeshOptions city_options = city_mesh_options(args, "align-check");
+
+  SceneOptions scene_options;
+  scene_options.check_images = false;  // only the sparse points are used
+  const Scene scene = load_scene(args.get("scene"), scene_options);
+  if (scene.points.empty()) fail(args.get("scene"), "the scene has no sparse points to compare with the city model");
+  const CityMeshInputs city = load_city_mesh_inputs(city_options, "align-check");
+
+  std::vector<Vec3d> points;
+  points.reserve(scene.points.size());
+  for (const auto& p : scene.points) points.push_back(p.xyz);
+  const ClosestPointQuery query(city.vertices, city.mesh.triangles);
+  std::vector<double> distances = query.distances(points);
+  // Scene units -> city-model units: the transform scales model metres into the scene frame.
+  const double scale = city.transform.scale();
+  for (double& d : distances) d /= scale;
+  const AlignmentStats s = alignment_stats(std::move(distances), threshold);
+  const bool aligned = s.fraction_within >= kMisalignedFraction;
+
+  if (args.flag_set("json")) {
+    const nlohmann::json j = {{"points", s.points},       {"triangles", city.mesh.num_triangles()},
+                              {"threshold", s.threshold}, {"fraction_within", s.fraction_within},
+                              {"median", s.median},       {"mean", s.mean},
+                              {"aligned", aligned}};
+    std::printf("%s\n", j.dump().c_str());
+  } else {
+    std::printf("points           %zu\n", s.points);
+    std::printf("triangles        %zu\n", city.mesh.num_triangles());
+    std::printf("within %-9g %.2f%%\n", s.threshold, 100 * s.fraction_within);
+    std::printf("median distance  %.4g\n", s.median);
+    std::printf("mean distance    %.4g\n", s.mean);
+  }
+  if (!aligned)
+    log_warn(cat("align-check: only ", 100 * s.fraction_within, "% of the sparse points lie within ", threshold,
+                 " m of the city mesh (median ", s.median, " m): the model and the scene look misaligned; ",
+                 "check --city-transform"));
+  return 0;
+}
+
 }  // namespace cls

@@ -7,14 +7,15 @@
 // if that triangle has a low priority AND a higher-priority triangle could lie within the tie
 // tolerance of the hit point is the ray re-tested, as a short segment [t0 - tol, t0 + tol] against
 // a small scene that holds only the higher-priority triangles (one scene per priority level,
-// highest first; the first level that is hit wins). "Could lie" is decided per triangle with a
-// precomputed lower bound of its distance to any higher-priority triangle (the gap between
-// bounding boxes): a hit point and a tie partner at ray-parameter distance dt are |dir| * dt apart,
-// so a re-test is needed only when gap <= |dir| * tol. Roofs, ground and walls far from any
-// opening never pay for the rule; models without priorities build no tie scenes at all.
+// highest first; the first level that is hit wins). A tie partner hit at ray-parameter distance
+// dt lies |dir| * dt from the hit point, so the re-test is needed only if some higher-priority
+// triangle's bounding box comes within reach = |dir| * tol of the hit point. Precomputed per
+// triangle (TieGate): the smallest box gap to any higher-priority triangle, and the boxes of the
+// nearby ones (merged where they touch, e.g. the triangles of one window). A wall hit far from
+// its windows, roofs and ground never pay for the rule; models without priorities build no tie
+// scenes at all.
 #include "raycast/raycaster.h"
 
-#include <omp.h>
 #include <xmmintrin.h>
 
 #include <algorithm>
@@ -70,6 +71,19 @@ Box triangle_box(const std::vector<Vec3f>& vertices, const std::array<uint32_t, 
   return b;
 }
 
+bool box_within(const Box& b, Vec3f p, float reach) {
+  for (int k = 0; k < 3; ++k)
+    if (p[k] < b.lo[k] - reach || p[k] > b.hi[k] + reach) return false;
+  return true;
+}
+
+Box box_union(const Box& a, const Box& b) {
+  Box u = a;
+  u.add(b.lo);
+  u.add(b.hi);
+  return u;
+}
+
 float box_distance(const Box& a, const Box& b) {
   float d2 = 0;
   for (int k = 0; k < 3; ++k) {
@@ -78,6 +92,33 @@ float box_distance(const Box& a, const Box& b) {
   }
   return std::sqrt(d2);
 }
+
+// Merges boxes closer than `touch` until none are, then everything into one box if more than
+// `max_count` remain: the partner boxes of a wall triangle become about one box per opening.
+void merge_boxes(std::vector<Box>& boxes, float touch, size_t max_count) {
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (size_t a = 0; a < boxes.size() && !merged; ++a)
+      for (size_t b = a + 1; b < boxes.size() && !merged; ++b)
+        if (box_distance(boxes[a], boxes[b]) <= touch) {
+          boxes[a] = box_union(boxes[a], boxes[b]);
+          boxes.erase(boxes.begin() + b);
+          merged = true;
+        }
+  }
+  if (boxes.size() > max_count) {
+    for (size_t k = 1; k < boxes.size(); ++k) boxes[0] = box_union(boxes[0], boxes[k]);
+    boxes.resize(1);
+  }
+}
+
+// Per low-priority triangle: when a hit on it needs the tie re-test (see the top of the file).
+struct TieGate {
+  float gap = INFINITY;           // lower bound of the distance to any higher-priority triangle
+  uint32_t first = 0, count = 0;  // boxes in Impl::tie_boxes covering those within near_distance
+};
+
+constexpr size_t kMaxPartnerBoxes = 4;
 
 // Triangles of one priority level, traced only to settle ties.
 struct TieScene {
@@ -97,7 +138,9 @@ struct Raycaster::Impl {
   std::vector<std::array<uint32_t, 3>> triangles;
   std::vector<uint8_t> priority;     // per triangle; empty when there are no tie scenes
   std::vector<TieScene> tie_scenes;  // highest priority first
-  std::vector<float> tie_gap;        // per triangle: lower bound of its distance to any higher-priority one
+  std::vector<TieGate> tie_gates;    // per triangle
+  std::vector<Box> tie_boxes;        // partner boxes of all gates
+  float near_distance = 0;           // partner boxes cover higher-priority triangles this close
 
   ~Impl() {
     for (auto& t : tie_scenes) rtcReleaseScene(t.scene);
@@ -115,24 +158,28 @@ struct Raycaster::Impl {
 };
 
 namespace {
-// State of one closest-box query: the query triangle's box and the best gap so far.
+// State of the box query of one triangle: its box, the smallest gap so far and the nearby boxes.
 struct GapQuery {
   const std::vector<Vec3f>* vertices;
   const std::vector<std::array<uint32_t, 3>>* triangles;
   const TieScene* tie;
   Box box;
   float half_diagonal;
+  float near_distance;
   float best;
+  std::vector<Box> near;
 };
 
-// Point-query callback: no box closer than `best` can lie beyond best + half diagonal of the centre.
+// Point-query callback from the box centre: a box within gap g of the query box lies within
+// g + half diagonal of the centre, so the radius shrinks to max(best, near) + half diagonal.
 bool visit_gap(RTCPointQueryFunctionArguments* args) {
   auto* q = static_cast<GapQuery*>(args->userPtr);
   const Box other = triangle_box(*q->vertices, (*q->triangles)[q->tie->prims[args->primID]]);
   const float d = box_distance(q->box, other);
+  if (d <= q->near_distance) q->near.push_back(other);
   if (d >= q->best) return false;
   q->best = d;
-  args->query->radius = std::min(args->query->radius, d + q->half_diagonal);
+  args->query->radius = std::min(args->query->radius, std::max(d, q->near_distance) + q->half_diagonal);
   return true;
 }
 }  // namespace
@@ -154,13 +201,19 @@ void Raycaster::Impl::build_tie_scenes() {
     return;
   }
 
-  // Closest higher-priority box to each triangle's box: an Embree point query from the box centre.
+  // Gates from Embree point queries on the tie scenes. Partner boxes cover higher-priority
+  // triangles within 1% of the model's size: farther away the tie tolerance reaches them only from
+  // about 100 model sizes away, where the plain gap test takes over.
+  Box all;
+  for (const auto& v : vertices) all.add(v);
+  near_distance = 0.01f * norm(all.hi - all.lo);
   const uint8_t top = tie_scenes.front().priority;
-  tie_gap.assign(triangles.size(), INFINITY);
+  tie_gates.assign(triangles.size(), TieGate{});
+  std::vector<std::vector<Box>> near(triangles.size());
 #pragma omp parallel for schedule(dynamic, 256)
   for (int64_t i = 0; i < static_cast<int64_t>(triangles.size()); ++i) {
     if (priority[i] >= top) continue;
-    GapQuery q{&vertices, &triangles, nullptr, triangle_box(vertices, triangles[i]), 0, INFINITY};
+    GapQuery q{&vertices, &triangles, nullptr, triangle_box(vertices, triangles[i]), 0, near_distance, INFINITY, {}};
     const Vec3f c = 0.5f * (q.box.lo + q.box.hi);
     q.half_diagonal = 0.5f * norm(q.box.hi - q.box.lo);
     for (const auto& t : tie_scenes) {
@@ -171,7 +224,14 @@ void Raycaster::Impl::build_tie_scenes() {
       rtcInitPointQueryContext(&context);
       rtcPointQuery(t.scene, &query, &context, visit_gap, &q);
     }
-    tie_gap[i] = q.best;
+    merge_boxes(q.near, 1e-6f * near_distance, kMaxPartnerBoxes);
+    tie_gates[i].gap = q.best;
+    near[i] = std::move(q.near);
+  }
+  for (size_t i = 0; i < triangles.size(); ++i) {
+    tie_gates[i].first = static_cast<uint32_t>(tie_boxes.size());
+    tie_gates[i].count = static_cast<uint32_t>(near[i].size());
+    tie_boxes.insert(tie_boxes.end(), near[i].begin(), near[i].end());
   }
 }
 
@@ -190,9 +250,20 @@ void Raycaster::Impl::resolve_ties(const int* valid, RTCRayHitNt<N>& rh, const f
     if (priority[prim] >= top) continue;
     t0[i] = rh.ray.tfar[i];
     tol[i] = tie_tolerance(t0[i]);
-    const float dir_len = std::sqrt(rh.ray.dir_x[i] * rh.ray.dir_x[i] + rh.ray.dir_y[i] * rh.ray.dir_y[i] +
-                                    rh.ray.dir_z[i] * rh.ray.dir_z[i]);
-    if (tie_gap[prim] > dir_len * tol[i]) continue;
+    const TieGate& gate = tie_gates[prim];
+    const Vec3f dir{rh.ray.dir_x[i], rh.ray.dir_y[i], rh.ray.dir_z[i]};
+    const float reach = norm(dir) * tol[i];
+    if (gate.gap > reach) continue;
+    if (reach <= near_distance) {
+      // Widened by float rounding of the hit point, so a partner is never missed by an ulp.
+      const Vec3f org{rh.ray.org_x[i], rh.ray.org_y[i], rh.ray.org_z[i]};
+      const Vec3f hit = org + t0[i] * dir;
+      const float slack = reach + 1e-6f * (std::fabs(hit.x) + std::fabs(hit.y) + std::fabs(hit.z) + t0[i] * norm(dir));
+      bool near = false;
+      for (uint32_t k = gate.first; k < gate.first + gate.count && !near; ++k)
+        near = box_within(tie_boxes[k], hit, slack);
+      if (!near) continue;
+    }
     pending[i] = -1;
     lane_priority[i] = priority[prim];
     any = true;

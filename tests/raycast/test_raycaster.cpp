@@ -155,6 +155,31 @@ TEST(Raycaster, DepthIsZDepthAndBarycentricsLocateTheHit) {
     }
 }
 
+TEST(Raycaster, HighestPriorityWinsAmongCoplanarLayers) {
+  // Three nested coplanar triangles in z = 5: large (priority 0), medium (2), small (1).
+  const std::vector<Vec3f> v{{-10, -10, 5}, {10, -10, 5}, {0, 10, 5}, {-5, -5, 5}, {5, -5, 5},
+                             {0, 5, 5},     {-2, -2, 5},  {2, -2, 5}, {0, 2, 5}};
+  const std::vector<std::array<uint32_t, 3>> tris{{6, 7, 8}, {0, 1, 2}, {3, 4, 5}};  // small, large, medium
+  // From 1e5 away the tie tolerance (1e-4 of the depth) exceeds the 1%-of-the-model partner
+  // distance, so the far rays exercise the plain gap test instead of the partner boxes.
+  for (const float start : {0.0f, -1e5f}) {
+    for (const auto& priority : {std::vector<uint8_t>{1, 0, 2}, std::vector<uint8_t>{3, 0, 2}}) {
+      const Raycaster rc(v, tris, priority);
+      std::vector<Ray> rays(3);
+      rays[0].origin = {0, -1, start};   // inside all three
+      rays[1].origin = {0, -4, start};   // inside large and medium
+      rays[2].origin = {-8, -9, start};  // inside large only
+      for (auto& r : rays) r.dir = {0, 0, 1};
+      std::vector<RayHit> hits;
+      rc.cast(rays, hits);
+      EXPECT_EQ(hits[0].prim, priority[0] == 3 ? 0u : 2u);
+      EXPECT_EQ(hits[1].prim, 2u);
+      EXPECT_EQ(hits[2].prim, 1u);
+      for (const auto& h : hits) EXPECT_NEAR(h.depth, 5.0f - start, 1e-6f * (5.0f - start) + 1e-5f);
+    }
+  }
+}
+
 TEST(Raycaster, EmptyMeshHitsNothing) {
   const Raycaster rc({}, {});
   std::vector<RayHit> hits;
