@@ -1,15 +1,11 @@
 #pragma once
-// The city-model options shared by `raycast` and `align-check`, and loading the model into the
-// scene frame. Header-only because the CLI's sources are listed one by one in CMakeLists.txt.
-#include <cmath>
+// The city-model options shared by `raycast`, `align-check` and `run`.
 #include <string>
-#include <vector>
 
 #include "citymodel/city_model.h"
-#include "citymodel/city_transform.h"
+#include "citymodel/scene_city_model.h"
 #include "cli/args.h"
 #include "core/error.h"
-#include "core/log.h"
 
 namespace cls {
 
@@ -37,28 +33,9 @@ inline CityMeshOptions city_mesh_options(const Args& args, const std::string& co
   return o;
 }
 
-struct CityMeshInputs {
-  Taxonomy taxonomy;
-  CityTransform transform;
-  SemanticMesh mesh;
-  std::vector<Vec3f> vertices;  // mesh vertices in the scene frame
-};
-
-// Reads and validates everything; cls::Error naming the file on any problem, so a command can
-// load all its inputs before it writes anything.
-inline CityMeshInputs load_city_mesh_inputs(const CityMeshOptions& options, const std::string& command) {
-  CityMeshInputs in;
-  in.taxonomy = load_taxonomy(options.model);
-  if (!options.transform_path.empty()) in.transform = read_city_transform(options.transform_path);
-  in.mesh = load_city_model(options.city, in.taxonomy, options.model.lod);
-  if (in.mesh.num_triangles() == 0) fail(options.city, "the city model has no triangles at the requested LoD");
-  in.vertices = scene_vertices(in.mesh, in.transform);
-  float extent = 0;
-  for (const auto& v : in.vertices) extent = std::fmax(extent, std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z))));
-  if (extent > 1e5f)
-    log_warn(cat(command, ": the city mesh reaches ", extent, " units from the scene origin; float precision there is ",
-                 "coarse (give --city-transform into the scene's local frame)"));
-  return in;
+// Reads and validates the city model named by the options (see scene_city_model.h).
+inline SceneCityModel load_city_mesh_inputs(const CityMeshOptions& options, const std::string& command) {
+  return load_scene_city_model(options.city, options.transform_path, options.model, command);
 }
 
 }  // namespace cls

@@ -10,7 +10,6 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "raycast/alignment.h"
-#include "raycast/closest_point.h"
 #include "scene/scene.h"
 
 namespace cls {
@@ -35,17 +34,9 @@ int cmd_align_check(int argc, char** argv) {
   scene_options.check_images = false;  // only the sparse points are used
   const Scene scene = load_scene(args.get("scene"), scene_options);
   if (scene.points.empty()) fail(args.get("scene"), "the scene has no sparse points to compare with the city model");
-  const CityMeshInputs city = load_city_mesh_inputs(city_options, "align-check");
+  const SceneCityModel city = load_city_mesh_inputs(city_options, "align-check");
 
-  std::vector<Vec3d> points;
-  points.reserve(scene.points.size());
-  for (const auto& p : scene.points) points.push_back(p.xyz);
-  const ClosestPointQuery query(city.vertices, city.mesh.triangles);
-  std::vector<double> distances = query.distances(points);
-  // Scene units -> city-model units: the transform scales model metres into the scene frame.
-  const double scale = city.transform.scale();
-  for (double& d : distances) d /= scale;
-  const AlignmentStats s = alignment_stats(std::move(distances), threshold);
+  const AlignmentStats s = check_alignment(scene, city, threshold);
   const bool aligned = s.fraction_within >= kMisalignedFraction;
 
   if (args.flag_set("json")) {

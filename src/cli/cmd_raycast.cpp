@@ -1,41 +1,18 @@
 // citylangsplat raycast: per-view label maps, coverage and depth from the city model (paper 3.1).
 #include <filesystem>
-#include <set>
 #include <string>
 #include <vector>
 
 #include "cli/args.h"
 #include "cli/city_mesh_inputs.h"
 #include "cli/commands.h"
-#include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
-#include "core/progress.h"
-#include "raycast/label_map_io.h"
-#include "raycast/label_maps.h"
-#include "raycast/raycaster.h"
+#include "raycast/label_export.h"
 #include "scene/scene.h"
 
 namespace cls {
 namespace fs = std::filesystem;
-namespace {
-
-// OUT/<image name without extension>: the image stem for flat names, keeping sub-folders so two
-// images "a/1.jpg" and "b/1.jpg" do not collide. cls::Error for names that would leave OUT.
-std::vector<fs::path> view_dirs(const Scene& scene, const fs::path& out) {
-  std::vector<fs::path> dirs;
-  std::set<fs::path> seen;
-  for (const auto& v : scene.views) {
-    const fs::path rel = fs::path(v.name).lexically_normal().replace_extension();
-    if (rel.empty() || rel.is_absolute() || *rel.begin() == "..")
-      fail(scene.root, "image name '" + v.name + "' is not a relative path inside the scene");
-    if (!seen.insert(rel).second) fail(scene.root, "two images map to the output folder '" + rel.string() + "'");
-    dirs.push_back(out / rel);
-  }
-  return dirs;
-}
-
-}  // namespace
 
 int cmd_raycast(int argc, char** argv) {
   Args args("raycast",
@@ -61,33 +38,11 @@ int cmd_raycast(int argc, char** argv) {
   const Scene scene = load_scene(args.get("scene"), scene_options);
   if (scene.views.empty()) fail(args.get("scene"), "the scene has no views");
   const fs::path out = args.get("out");
-  const std::vector<fs::path> dirs = view_dirs(scene, out);
-  const CityMeshInputs city = load_city_mesh_inputs(city_options, "raycast");
-  const LabelTable labels(city.mesh);
-  const Raycaster raycaster(city.vertices, city.mesh.triangles, opening_priority(city.mesh));
-  log_info(cat("raycast: ", scene.views.size(), " views, ", city.mesh.num_triangles(), " triangles, ",
-               city.mesh.buildings.size(), " buildings"));
-
-  std::vector<RayHit> hits;
-  LabelMaps maps;
-  double coverage_sum = 0;
-  Progress progress("raycast", scene.views.size(), "views");
-  for (size_t k = 0; k < scene.views.size(); ++k) {
-    const SceneView& view = scene.views[k];
-    raycaster.cast_view(view.camera, view.pose, hits);
-    labels.fill(hits, view.camera.width, view.camera.height, maps);
-    write_label_maps(dirs[k], maps, city.taxonomy);
-    size_t covered = 0;
-    for (uint8_t c : maps.coverage) covered += c != 0;
-    coverage_sum += static_cast<double>(covered) / maps.coverage.size();
-    log_verbose(cat(view.name, ": coverage ", 100.0 * covered / maps.coverage.size(), "%"));
-    progress.advance();
-  }
-  progress.finish();
-  // Written last: its presence marks a finished run.
-  write_text_atomic(out / "legend.json", city.taxonomy.legend_json());
-  log_info(cat("raycast: wrote ", scene.views.size(), " views to ", out.string(), " (mean coverage ",
-               100.0 * coverage_sum / scene.views.size(), "%)"));
+  label_map_dirs(scene, out);  // rejects image names that would leave OUT, before any file is written
+  const SceneCityModel city = load_city_mesh_inputs(city_options, "raycast");
+  const LabelExportSummary summary = export_label_maps(scene, city, out);
+  log_info(cat("raycast: wrote ", summary.views, " views to ", out.string(), " (mean coverage ",
+               100.0 * summary.mean_coverage, "%)"));
   return 0;
 }
 

@@ -4,6 +4,7 @@
 #include <numeric>
 
 #include "core/error.h"
+#include "raycast/closest_point.h"
 
 namespace cls {
 
@@ -21,6 +22,17 @@ AlignmentStats alignment_stats(std::vector<double> distances, double threshold) 
   s.median = distances[mid];
   if (s.points % 2 == 0) s.median = 0.5 * (s.median + *std::max_element(distances.begin(), distances.begin() + mid));
   return s;
+}
+
+AlignmentStats check_alignment(const Scene& scene, const SceneCityModel& city, double threshold) {
+  std::vector<Vec3d> points;
+  points.reserve(scene.points.size());
+  for (const auto& p : scene.points) points.push_back(p.xyz);
+  std::vector<double> distances = ClosestPointQuery(city.vertices, city.mesh.triangles).distances(points);
+  // Scene units -> city-model units: the transform scales model metres into the scene frame.
+  const double scale = city.transform.scale();
+  for (double& d : distances) d /= scale;
+  return alignment_stats(std::move(distances), threshold);
 }
 
 }  // namespace cls

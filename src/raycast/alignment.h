@@ -3,11 +3,14 @@
 #include <cstddef>
 #include <vector>
 
+#include "citymodel/scene_city_model.h"
+#include "scene/scene.h"
+
 namespace cls {
 
 struct AlignmentStats {
   size_t points = 0;
-  double threshold = 0;        // metres (scene units)
+  double threshold = 0;        // metres (city-model units for check_alignment)
   double fraction_within = 0;  // share of points with distance <= threshold
   double median = 0, mean = 0;
 };
@@ -19,5 +22,9 @@ constexpr double kMisalignedFraction = 0.25;
 
 // Statistics of point-to-mesh distances; `distances` must not be empty.
 AlignmentStats alignment_stats(std::vector<double> distances, double threshold);
+
+// Distance of every sparse point of `scene` to the nearest triangle of the city mesh, in
+// city-model units (scene distances divided by the transform's scale); the scene must have points.
+AlignmentStats check_alignment(const Scene& scene, const SceneCityModel& city, double threshold);
 
 }  // namespace cls

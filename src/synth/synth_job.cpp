@@ -10,6 +10,7 @@
 #include "citymodel/city_model.h"
 #include "citymodel/city_transform.h"
 #include "core/atomic_file.h"
+#include "core/hash.h"
 #include "core/error.h"
 #include "core/log.h"
 
@@ -18,15 +19,6 @@ namespace cls::synth {
 namespace fs = std::filesystem;
 
 namespace {
-
-// FNV-1a, 64 bit: identifies the input files' content in scene.json.
-std::string fnv1a64_hex(const std::string& bytes) {
-  uint64_t h = 0xcbf29ce484222325ULL;
-  for (const unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ULL;
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
-}
 
 bool is_empty_dir(const fs::path& p) { return fs::is_directory(p) && fs::directory_iterator(p) == fs::directory_iterator(); }
 
