@@ -8,18 +8,12 @@
 #include <map>
 
 #include "core/atomic_file.h"
+#include "core/endian.h"
 #include "core/error.h"
 #include "core/log.h"
 
 namespace cls {
 namespace {
-
-bool host_is_little_endian() {
-  const uint16_t probe = 1;
-  unsigned char first;
-  std::memcpy(&first, &probe, 1);
-  return first == 1;
-}
 
 // PLY binary_little_endian regardless of the host's byte order.
 template <class T>

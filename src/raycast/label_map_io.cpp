@@ -8,19 +8,13 @@
 #include <sstream>
 
 #include "core/atomic_file.h"
+#include "core/endian.h"
 #include "core/error.h"
 #include "core/log.h"
 
 namespace cls {
 namespace fs = std::filesystem;
 namespace {
-
-bool host_is_little_endian() {
-  const uint32_t one = 1;
-  unsigned char first;
-  std::memcpy(&first, &one, 1);
-  return first == 1;
-}
 
 void check_size(const fs::path& path, size_t size, int width, int height) {
   if (width <= 0 || height <= 0 || size != static_cast<size_t>(width) * height)

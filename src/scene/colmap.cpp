@@ -19,6 +19,7 @@
 #include <type_traits>
 
 #include "core/atomic_file.h"
+#include "core/endian.h"
 #include "core/error.h"
 #include "scene/path_query.h"
 #include "core/log.h"
@@ -26,7 +27,7 @@
 namespace cls {
 namespace fs = std::filesystem;
 
-static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "COLMAP binary I/O assumes a little-endian host");
+static_assert(host_is_little_endian(), "COLMAP binary I/O assumes a little-endian host");
 
 namespace {
 

@@ -319,7 +319,7 @@ TEST_F(SynthSceneTest, GroundTruthCloudHasClassesAndDensity) {
     std::set<int> labels_here;
     for (size_t t = 0; t < g.triangles.size(); ++t) {
       const auto& tri = g.triangles[t];
-      const double d = norm(X - test::closest_on_triangle(X, cast<double>(g.vertices[tri[0]]),
+      const double d = norm(X - closest_point_on_triangle(X, cast<double>(g.vertices[tri[0]]),
                                                           cast<double>(g.vertices[tri[1]]), cast<double>(g.vertices[tri[2]])));
       if (d > 1e-3) continue;
       const TriangleOrigin& o = g.origins[t];
