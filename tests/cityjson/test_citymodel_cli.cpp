@@ -1,5 +1,7 @@
 // `citylangsplat citymodel stats|export` as a user runs it: stdout, stderr, exit status, files.
 #include <gtest/gtest.h>
+
+#include "cli_runner.h"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -17,26 +19,6 @@ namespace {
 const std::string kData = CLS_TEST_DATA;
 const std::string kBroken = std::string(CLS_TEST_FIXTURES) + "/broken";
 
-struct CliRun {
-  int status = -1;
-  std::string out, err;
-};
-
-// Runs the CLI with `args` (shell-quoted by the caller), capturing stdout and stderr.
-CliRun run_cli(const std::string& args, const fs::path& dir) {
-  const fs::path err_file = dir / "stderr.txt";
-  const std::string cmd = std::string("'") + CLS_BINARY + "' " + args + " 2>'" + err_file.string() + "'";
-  CliRun r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  char buf[4096];
-  for (size_t n; (n = fread(buf, 1, sizeof buf, pipe)) > 0;) r.out.append(buf, n);
-  const int status = pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.err = cls::read_text_file(err_file);
-  fs::remove(err_file);
-  return r;
-}
 
 class CityModelCli : public ::testing::Test {
  protected:
@@ -51,7 +33,7 @@ class CityModelCli : public ::testing::Test {
 }  // namespace
 
 TEST_F(CityModelCli, StatsJsonIsExactlyOneObject) {
-  const CliRun r = run_cli("citymodel stats '" + kData + "/citygml/cityjson/texture4.city.json' --json", dir_);
+  const cls::test::CliResult r = cls::test::run_cli("citymodel stats '" + kData + "/citygml/cityjson/texture4.city.json' --json");
   ASSERT_EQ(r.status, 0) << r.err;
   ASSERT_FALSE(r.out.empty());
   EXPECT_EQ(r.out.back(), '\n');
@@ -73,23 +55,22 @@ TEST_F(CityModelCli, StatsJsonIsExactlyOneObject) {
 }
 
 TEST_F(CityModelCli, StatsTableAndLodOption) {
-  const CliRun r = run_cli("citymodel stats '" + kData + "/citygml/cityjson/multi_lod.json' --lod 1", dir_);
+  const cls::test::CliResult r = cls::test::run_cli("citymodel stats '" + kData + "/citygml/cityjson/multi_lod.json' --lod 1");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("LoD 1"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("surface"), std::string::npos) << r.out;
-  const CliRun bad = run_cli("citymodel stats '" + kData + "/citygml/cityjson/multi_lod.json' --lod 5", dir_);
+  const cls::test::CliResult bad = cls::test::run_cli("citymodel stats '" + kData + "/citygml/cityjson/multi_lod.json' --lod 5");
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.err.find("--lod"), std::string::npos) << bad.err;
-  const CliRun help = run_cli("citymodel export --help", dir_);
+  const cls::test::CliResult help = cls::test::run_cli("citymodel export --help");
   EXPECT_EQ(help.status, 0);
   EXPECT_NE(help.out.find("(default: highest)"), std::string::npos) << help.out;
 }
 
 TEST_F(CityModelCli, ExportWritesAPly) {
   const fs::path out = dir_ / "station.ply";
-  const CliRun r = run_cli("citymodel export '" + kData + "/citygml/cityjson/texture4.city.json' --out '" +
-                            out.string() + "'",
-                        dir_);
+  const cls::test::CliResult r = cls::test::run_cli("citymodel export '" + kData + "/citygml/cityjson/texture4.city.json' --out '" +
+                            out.string() + "'");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(r.out.empty());  // diagnostics go to stderr
   const std::string ply = cls::read_text_file(out);
@@ -117,7 +98,7 @@ TEST_F(CityModelCli, BrokenInputsFailCleanly) {
   for (const auto& [input, transform] : cases) {
     std::string args = "citymodel export '" + input + "' --out '" + out.string() + "'";
     if (!transform.empty()) args += " --city-transform '" + transform + "'";
-    const CliRun r = run_cli(args, dir_);
+    const cls::test::CliResult r = cls::test::run_cli(args);
     const std::string named = transform.empty() ? input : transform;
     EXPECT_EQ(r.status, 1) << args << "\n" << r.err;
     // The last line of stderr is the error (progress lines may come before it).
@@ -125,7 +106,7 @@ TEST_F(CityModelCli, BrokenInputsFailCleanly) {
     const std::string last = r.err.substr(last_line == std::string::npos ? 0 : last_line + 1);
     EXPECT_EQ(last.rfind("error: " + named + ": ", 0), 0u) << r.err;
     EXPECT_FALSE(fs::exists(out)) << args;
-    const CliRun stats = run_cli("citymodel stats '" + input + "' --json", dir_);
+    const cls::test::CliResult stats = cls::test::run_cli("citymodel stats '" + input + "' --json");
     if (transform.empty()) {
       EXPECT_EQ(stats.status, 1) << input;
       EXPECT_TRUE(stats.out.empty()) << stats.out;

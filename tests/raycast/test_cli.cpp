@@ -1,5 +1,7 @@
 // `citylangsplat raycast` and `align-check` end to end on a small COLMAP scene of FZK-Haus.
 #include <gtest/gtest.h>
+
+#include "cli_runner.h"
 #include <sys/wait.h>
 
 #include <filesystem>
@@ -20,22 +22,6 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kFzk = CLS_TEST_DATA "/citygml/fzk-haus/fzk_haus_lod3_v2.gml";
-
-struct CliRun {
-  int status = -1;
-  std::string out, err;
-};
-
-CliRun run_cli(const std::string& args, const fs::path& dir) {
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string cmd = std::string(CLS_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
-  const int raw = std::system(cmd.c_str());
-  CliRun r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = read_text_file(out);
-  r.err = read_text_file(err);
-  return r;
-}
 
 // A COLMAP text scene in the FZK-Haus local frame (source minus the mesh origin): two oblique
 // 160x120 views with blank images, and sparse points = the centroids of 80 mesh triangles plus
@@ -99,7 +85,7 @@ class CliScene : public testing::Test {
 
 TEST_F(CliScene, RaycastWritesEveryMapAndMatchesTheLibrary) {
   const fs::path out = dir_ / "out";
-  const CliRun r = run_cli("raycast " + scene_args() + " --out " + out.string(), dir_);
+  const test::CliResult r = test::run_cli("raycast " + scene_args() + " --out " + out.string());
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(r.out.empty()) << "stdout must stay clean: " << r.out;
 
@@ -138,32 +124,31 @@ TEST_F(CliScene, RaycastWritesEveryMapAndMatchesTheLibrary) {
 TEST_F(CliScene, RaycastValidatesBeforeWriting) {
   const fs::path out = dir_ / "out";
   const std::string broken = CLS_TEST_FIXTURES "/broken/city_transform_not_similarity.json";
-  CliRun r = run_cli("raycast --scene " + (dir_ / "scene").string() + " --city " + kFzk + " --city-transform " + broken +
-                      " --out " + out.string(),
-                  dir_);
+  test::CliResult r = test::run_cli("raycast --scene " + (dir_ / "scene").string() + " --city " + kFzk + " --city-transform " + broken +
+                      " --out " + out.string());
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("city_transform_not_similarity.json"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
 
   const std::string invalid = CLS_TEST_DATA "/citygml/citygml4j/invalid_building_v3.gml";
-  r = run_cli("raycast --scene " + (dir_ / "scene").string() + " --city " + invalid + " --out " + out.string(), dir_);
+  r = test::run_cli("raycast --scene " + (dir_ / "scene").string() + " --city " + invalid + " --out " + out.string());
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("invalid_building_v3.gml"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
 
   fs::remove(dir_ / "scene" / "images" / "view_b.png");
-  r = run_cli("raycast " + scene_args() + " --out " + out.string(), dir_);
+  r = test::run_cli("raycast " + scene_args() + " --out " + out.string());
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("view_b.png"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
 
-  r = run_cli("raycast --scene " + (dir_ / "scene").string() + " --out " + out.string(), dir_);
+  r = test::run_cli("raycast --scene " + (dir_ / "scene").string() + " --out " + out.string());
   EXPECT_EQ(r.status, 2);  // --city missing: a usage error
   EXPECT_FALSE(fs::exists(out));
 }
 
 TEST_F(CliScene, AlignCheckReportsTheShareOnTheMesh) {
-  CliRun r = run_cli("align-check " + scene_args() + " -d 0.5 --json", dir_);
+  test::CliResult r = test::run_cli("align-check " + scene_args() + " -d 0.5 --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);  // exactly one JSON object
   EXPECT_EQ(j["points"], 100);
@@ -178,7 +163,7 @@ TEST_F(CliScene, AlignCheckReportsTheShareOnTheMesh) {
   CityTransform shifted = read_city_transform((dir_ / "transform.json").string());
   shifted.matrix[0][3] += 30;
   write_city_transform((dir_ / "transform.json").string(), shifted);
-  r = run_cli("align-check " + scene_args() + " --json", dir_);
+  r = test::run_cli("align-check " + scene_args() + " --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto bad = nlohmann::json::parse(r.out);
   EXPECT_EQ(bad["fraction_within"].get<double>(), 0.0);
@@ -196,7 +181,7 @@ TEST_F(CliScene, AlignCheckReportsDistancesInModelUnits) {
   for (auto& [id, p] : model.points)
     for (double& x : p.xyz) x *= 2;
   write_colmap_text((dir_ / "scene" / "sparse" / "0").string(), model);
-  const CliRun r = run_cli("align-check " + scene_args() + " --json", dir_);
+  const test::CliResult r = test::run_cli("align-check " + scene_args() + " --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_DOUBLE_EQ(j["fraction_within"].get<double>(), 0.8);

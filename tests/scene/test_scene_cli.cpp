@@ -1,6 +1,8 @@
 // The `citylangsplat scene` command, run as a subprocess.
 #include <gtest/gtest.h>
 
+#include "cli_runner.h"
+
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -16,21 +18,7 @@ using namespace cls;
 
 namespace {
 
-struct CliResult {
-  int status;
-  std::string out;
-};
-
-CliResult run(const std::string& args) {
-  const std::string cmd = std::string(CLS_BINARY) + " " + args + " 2>/dev/null";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof(buf), p)) > 0) out.append(buf, n);
-  const int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
+test::CliResult run(const std::string& args) { return test::run_cli(args); }
 
 fs::path model_scene(const std::string& name) {
   const fs::path dir = test::fresh_dir(name);
@@ -49,7 +37,7 @@ fs::path model_scene(const std::string& name) {
 
 TEST(SceneCli, InfoJson) {
   const fs::path dir = model_scene("cli_info");
-  const CliResult r = run("scene info " + dir.string() + " --json --skip-image-check -r 2");
+  const test::CliResult r = run("scene info " + dir.string() + " --json --skip-image-check -r 2");
   ASSERT_EQ(r.status, 0);
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["source"], "colmap-bin");
