@@ -8,8 +8,8 @@
 
 namespace cls {
 
-Args::Args(std::string command, std::string summary)
-    : command_(std::move(command)), summary_(std::move(summary)) {
+Args::Args(std::string command, std::string summary, std::string program)
+    : command_(std::move(command)), summary_(std::move(summary)), program_(std::move(program)) {
   flag("help", "show this help and exit", "h");
 }
 
@@ -92,7 +92,7 @@ bool Args::parse(const std::vector<std::string>& args) {
 
 std::string Args::help() const {
   std::ostringstream s;
-  s << "usage: citylangsplat " << command_;
+  s << "usage: " << (program_.empty() ? "" : program_ + " ") << command_;
   for (const auto& p : positionals_)
     s << " " << (p.required ? "" : "[") << p.name << (p.repeated ? "..." : "") << (p.required ? "" : "]");
   s << " [options]\n\n" << summary_ << "\n";

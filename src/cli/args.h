@@ -9,7 +9,8 @@ namespace cls {
 
 class Args {
  public:
-  Args(std::string command, std::string summary);
+  // --help prints "usage: <program> <command> ..."; tools outside the CLI pass program = "".
+  Args(std::string command, std::string summary, std::string program = "citylangsplat");
 
   // --name VALUE (or --name=VALUE). `def` is shown in --help; "" means no default.
   Args& option(const std::string& name, const std::string& def, const std::string& help,
@@ -45,7 +46,7 @@ class Args {
   };
   const Spec* find_spec(const std::string& token) const;
 
-  std::string command_, summary_;
+  std::string command_, summary_, program_;
   std::vector<Spec> specs_;
   std::vector<Pos> positionals_;
   std::map<std::string, std::string> values_;
