@@ -1,0 +1,84 @@
+// The CLIP BPE tokenizer against the reference golden file (openai/CLIP simple_tokenizer.py and
+// clip.tokenize, tests/fixtures/clip/tokenizer/README.md): every line's normalised string,
+// pre-token pieces, ids and padded ids must be identical.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+#include "models/clip/tokenizer.h"
+
+namespace {
+
+using cls::clip::Tokenizer;
+
+const Tokenizer& tokenizer() {
+  static const Tokenizer t(std::string(CLS_TEST_DATA) + "/clip/bpe_simple_vocab_16e6.txt.gz");
+  return t;
+}
+
+std::vector<nlohmann::json> golden_lines() {
+  std::ifstream in(std::string(CLS_TEST_FIXTURES) + "/clip/tokenizer/golden.jsonl");
+  std::vector<nlohmann::json> out;
+  std::string line;
+  while (std::getline(in, line))
+    if (!line.empty()) out.push_back(nlohmann::json::parse(line));
+  return out;
+}
+
+TEST(ClipTokenizer, VocabularyLayout) {
+  const Tokenizer& t = tokenizer();
+  EXPECT_EQ(t.vocab_size(), 49408);
+  EXPECT_EQ(t.piece(0), "!");
+  EXPECT_EQ(t.piece(64), "a");
+  EXPECT_EQ(t.piece(320), "a</w>");
+  EXPECT_EQ(t.piece(49406), "<|startoftext|>");
+  EXPECT_EQ(t.piece(49407), "<|endoftext|>");
+  // Byte 0x20 (space) is one of the 68 non-printable bytes: U+0100 + 32 = 'Ġ'.
+  EXPECT_EQ(t.piece(188 + 32), "\xc4\xa0");
+}
+
+TEST(ClipTokenizer, GoldenFileEveryLine) {
+  const std::vector<nlohmann::json> lines = golden_lines();
+  ASSERT_EQ(lines.size(), 97u);
+  int truncated = 0;
+  for (const auto& g : lines) {
+    const std::string text = g["text"];
+    SCOPED_TRACE("text: " + text);
+    EXPECT_EQ(Tokenizer::normalize(text), g["normalized"].get<std::string>());
+    std::vector<std::string> pieces;
+    for (const std::string& tok : Tokenizer::pre_tokenize(Tokenizer::normalize(text)))
+      for (const std::string& p : tokenizer().bpe_pieces(tok)) pieces.push_back(p);
+    EXPECT_EQ(pieces, g["pieces"].get<std::vector<std::string>>());
+    EXPECT_EQ(tokenizer().encode(text), g["ids"].get<std::vector<int64_t>>());
+    EXPECT_EQ(tokenizer().tokenize(text), g["ids_padded77"].get<std::vector<int64_t>>());
+    if (g["truncated"].get<bool>()) {
+      ++truncated;
+      EXPECT_THROW(tokenizer().tokenize(text, 77, /*truncate=*/false), cls::Error);
+    }
+  }
+  EXPECT_EQ(truncated, 4);
+}
+
+TEST(ClipTokenizer, BatchIsRowsOfSingleTexts) {
+  const std::vector<std::string> texts{"a door", "", "a roof"};
+  const std::vector<int64_t> batch = tokenizer().tokenize(texts);
+  ASSERT_EQ(batch.size(), 3u * 77u);
+  for (size_t r = 0; r < texts.size(); ++r) {
+    const std::vector<int64_t> row = tokenizer().tokenize(texts[r]);
+    EXPECT_TRUE(std::equal(row.begin(), row.end(), batch.begin() + r * 77)) << r;
+  }
+  EXPECT_EQ(batch[77], cls::clip::kStartOfText);
+  EXPECT_EQ(batch[78], cls::clip::kEndOfText);
+}
+
+TEST(ClipTokenizer, MissingOrCorruptVocabularyIsAnError) {
+  EXPECT_THROW(Tokenizer("/nonexistent/bpe.txt.gz"), cls::Error);
+  // A plain (non-gzip) short file: zlib reads it transparently, and it has too few merges.
+  const std::string path = testing::TempDir() + "clip_vocab_short.txt";
+  std::ofstream(path) << "version\na b\n";
+  EXPECT_THROW(Tokenizer{path}, cls::Error);
+}
+
+}  // namespace
