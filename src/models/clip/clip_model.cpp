@@ -1,0 +1,241 @@
+#include "models/clip/clip_model.h"
+
+#include <ATen/ATen.h>
+
+#include <cmath>
+#include <limits>
+#include <set>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace cls::clip {
+namespace {
+
+std::string shape_str(at::IntArrayRef s) {
+  std::ostringstream o;
+  o << '[';
+  for (size_t i = 0; i < s.size(); ++i) o << (i ? ", " : "") << s[i];
+  o << ']';
+  return o.str();
+}
+
+// The reference LayerNorm subclass: computed in fp32, cast back.
+at::Tensor layer_norm(const at::Tensor& x, const at::Tensor& w, const at::Tensor& b) {
+  return at::layer_norm(x.to(at::kFloat), {x.size(-1)}, w, b, 1e-5).to(x.scalar_type());
+}
+
+// nn.MultiheadAttention (batch-first here): packed q,k,v projection, heads split contiguously,
+// softmax(q k^T / sqrt(hd) + mask) v, out_proj.
+at::Tensor multi_head_attention(const at::Tensor& x, const at::Tensor& in_w, const at::Tensor& in_b,
+                                const at::Tensor& out_w, const at::Tensor& out_b, int heads,
+                                const at::Tensor& mask) {
+  const int64_t n = x.size(0), l = x.size(1), w = x.size(2), hd = w / heads;
+  const at::Tensor qkv = at::linear(x, in_w, in_b).view({n, l, 3, heads, hd}).permute({2, 0, 3, 1, 4});
+  const at::Tensor q = qkv[0] * (1.0 / std::sqrt(static_cast<double>(hd)));
+  at::Tensor scores = at::matmul(q, qkv[1].transpose(-2, -1));  // [n, heads, l, l]
+  if (mask.defined()) scores = scores + mask;
+  const at::Tensor attn = at::softmax(scores, -1);
+  const at::Tensor out = at::matmul(attn, qkv[2]).permute({0, 2, 1, 3}).reshape({n, l, w});
+  return at::linear(out, out_w, out_b);
+}
+
+}  // namespace
+
+at::Tensor l2_normalize(const at::Tensor& f) { return f / f.norm(2, -1, true); }
+
+std::map<std::string, std::vector<int64_t>> ClipModel::expected_shapes(const ClipConfig& c) {
+  std::map<std::string, std::vector<int64_t>> s;
+  const int64_t vw = c.vision_width, tw = c.transformer_width, p = c.vision_patch_size;
+  auto blocks = [&](const std::string& prefix, int layers, int64_t w) {
+    for (int i = 0; i < layers; ++i) {
+      const std::string b = prefix + std::to_string(i) + ".";
+      s[b + "attn.in_proj_weight"] = {3 * w, w};
+      s[b + "attn.in_proj_bias"] = {3 * w};
+      s[b + "attn.out_proj.weight"] = {w, w};
+      s[b + "attn.out_proj.bias"] = {w};
+      s[b + "ln_1.weight"] = {w};
+      s[b + "ln_1.bias"] = {w};
+      s[b + "mlp.c_fc.weight"] = {4 * w, w};
+      s[b + "mlp.c_fc.bias"] = {4 * w};
+      s[b + "mlp.c_proj.weight"] = {w, 4 * w};
+      s[b + "mlp.c_proj.bias"] = {w};
+      s[b + "ln_2.weight"] = {w};
+      s[b + "ln_2.bias"] = {w};
+    }
+  };
+  s["visual.conv1.weight"] = {vw, 3, p, p};
+  s["visual.class_embedding"] = {vw};
+  s["visual.positional_embedding"] = {c.vision_tokens(), vw};
+  s["visual.ln_pre.weight"] = {vw};
+  s["visual.ln_pre.bias"] = {vw};
+  blocks("visual.transformer.resblocks.", c.vision_layers, vw);
+  s["visual.ln_post.weight"] = {vw};
+  s["visual.ln_post.bias"] = {vw};
+  s["visual.proj"] = {vw, c.embed_dim};
+  s["token_embedding.weight"] = {c.vocab_size, tw};
+  s["positional_embedding"] = {c.context_length, tw};
+  blocks("transformer.resblocks.", c.transformer_layers, tw);
+  s["ln_final.weight"] = {tw};
+  s["ln_final.bias"] = {tw};
+  s["text_projection"] = {tw, c.embed_dim};
+  s["logit_scale"] = {};
+  return s;
+}
+
+ClipModel::ClipModel(const ClipConfig& config, const std::map<std::string, at::Tensor>& state,
+                     const ClipOptions& options, const std::string& source)
+    : config_(config), options_(options) {
+  if (config.vision_heads <= 0 || config.vision_width % config.vision_heads != 0 ||
+      config.transformer_heads <= 0 || config.transformer_width % config.transformer_heads != 0)
+    fail(source, "CLIP config: widths must be divisible by the head counts");
+  if (options.device.is_cpu() && options.dtype == at::kHalf)
+    fail(source, "CLIP: float16 compute is only supported on CUDA; use float32 on the CPU");
+  if (options.dtype != at::kFloat && options.dtype != at::kHalf && options.dtype != at::kBFloat16)
+    fail(source, "CLIP: compute dtype must be float32, float16 or bfloat16");
+
+  // Validate names and shapes before touching any data.
+  const auto expected = expected_shapes(config);
+  static const std::set<std::string> kIgnored = {"input_resolution", "context_length", "vocab_size"};
+  std::vector<std::string> missing, unexpected, misshaped;
+  for (const auto& [name, shape] : expected) {
+    auto it = state.find(name);
+    if (it == state.end()) {
+      missing.push_back(name);
+    } else if (!it->second.defined() || it->second.sizes().vec() != shape) {
+      misshaped.push_back(name + " " + (it->second.defined() ? shape_str(it->second.sizes()) : "(undefined)") +
+                          ", expected " + shape_str(shape));
+    } else if (!at::isFloatingType(it->second.scalar_type())) {
+      misshaped.push_back(name + " has a non-floating dtype");
+    }
+  }
+  for (const auto& [name, t] : state)
+    if (!expected.count(name) && !kIgnored.count(name)) unexpected.push_back(name);
+  if (!missing.empty() || !unexpected.empty() || !misshaped.empty()) {
+    std::ostringstream msg;
+    msg << "CLIP weights do not match the model (vision " << config.vision_width << "x" << config.vision_layers
+        << ", text " << config.transformer_width << "x" << config.transformer_layers << ")";
+    auto list = [&](const char* what, const std::vector<std::string>& v) {
+      if (v.empty()) return;
+      msg << "\n  " << what << " (" << v.size() << "):";
+      for (size_t i = 0; i < v.size() && i < 20; ++i) msg << "\n    " << v[i];
+      if (v.size() > 20) msg << "\n    ...";
+    };
+    list("missing", missing);
+    list("unexpected", unexpected);
+    list("wrong shape/dtype", misshaped);
+    fail(source, msg.str());
+  }
+
+  const auto on_device = at::TensorOptions().device(options.device);
+  auto take = [&](const std::string& name) {
+    return state.at(name).to(on_device.dtype(options.dtype)).contiguous();
+  };
+  // LayerNorm parameters stay fp32 (the reference LayerNorm computes in fp32).
+  auto take_f32 = [&](const std::string& name) { return state.at(name).to(on_device.dtype(at::kFloat)).contiguous(); };
+  auto blocks = [&](const std::string& prefix, int layers) {
+    std::vector<Block> out;
+    for (int i = 0; i < layers; ++i) {
+      const std::string b = prefix + std::to_string(i) + ".";
+      out.push_back({take_f32(b + "ln_1.weight"), take_f32(b + "ln_1.bias"), take(b + "attn.in_proj_weight"),
+                     take(b + "attn.in_proj_bias"), take(b + "attn.out_proj.weight"),
+                     take(b + "attn.out_proj.bias"), take_f32(b + "ln_2.weight"), take_f32(b + "ln_2.bias"),
+                     take(b + "mlp.c_fc.weight"), take(b + "mlp.c_fc.bias"), take(b + "mlp.c_proj.weight"),
+                     take(b + "mlp.c_proj.bias")});
+    }
+    return out;
+  };
+  conv1_w_ = take("visual.conv1.weight");
+  class_embedding_ = take("visual.class_embedding");
+  visual_pos_ = take("visual.positional_embedding");
+  ln_pre_w_ = take_f32("visual.ln_pre.weight");
+  ln_pre_b_ = take_f32("visual.ln_pre.bias");
+  visual_blocks_ = blocks("visual.transformer.resblocks.", config.vision_layers);
+  ln_post_w_ = take_f32("visual.ln_post.weight");
+  ln_post_b_ = take_f32("visual.ln_post.bias");
+  visual_proj_ = take("visual.proj");
+  token_embedding_ = take("token_embedding.weight");
+  text_pos_ = take("positional_embedding");
+  text_blocks_ = blocks("transformer.resblocks.", config.transformer_layers);
+  ln_final_w_ = take_f32("ln_final.weight");
+  ln_final_b_ = take_f32("ln_final.bias");
+  text_projection_ = take("text_projection");
+  logit_scale_ = std::exp(state.at("logit_scale").to(at::kFloat).item<float>());
+  // build_attention_mask(): -inf strictly above the diagonal.
+  causal_mask_ = at::full({config.context_length, config.context_length},
+                          -std::numeric_limits<float>::infinity(), on_device.dtype(options.dtype))
+                     .triu_(1);
+}
+
+at::Tensor ClipModel::run_blocks(at::Tensor x, const std::vector<Block>& blocks, int heads, const at::Tensor& mask,
+                                 const std::string& prefix, ClipTrace* trace) const {
+  for (size_t i = 0; i < blocks.size(); ++i) {
+    const Block& b = blocks[i];
+    const std::string name = prefix + std::to_string(i);
+    const at::Tensor h1 = layer_norm(x, b.ln_1_w, b.ln_1_b);
+    const at::Tensor attn = multi_head_attention(h1, b.in_proj_w, b.in_proj_b, b.out_proj_w, b.out_proj_b, heads, mask);
+    x = x + attn;
+    const at::Tensor h2 = layer_norm(x, b.ln_2_w, b.ln_2_b);
+    at::Tensor m = at::linear(h2, b.c_fc_w, b.c_fc_b);
+    m = config_.activation == Activation::Gelu ? at::gelu(m) : m * at::sigmoid(1.702 * m);
+    m = at::linear(m, b.c_proj_w, b.c_proj_b);
+    x = x + m;
+    if (trace) {
+      (*trace)[name + ".ln_1"] = h1;
+      (*trace)[name + ".attn"] = attn;
+      (*trace)[name + ".ln_2"] = h2;
+      (*trace)[name + ".mlp"] = m;
+      (*trace)[name] = x;
+    }
+  }
+  return x;
+}
+
+at::Tensor ClipModel::encode_image(const at::Tensor& images, ClipTrace* trace) const {
+  const int64_t r = config_.image_resolution;
+  if (images.dim() != 4 || images.size(1) != 3 || images.size(2) != r || images.size(3) != r)
+    throw Error("CLIP encode_image: expected images [N, 3, " + std::to_string(r) + ", " + std::to_string(r) +
+                "], got " + shape_str(images.sizes()));
+  const at::Tensor in = images.to(conv1_w_.options());
+  const at::Tensor patches = at::conv2d(in, conv1_w_, {}, config_.vision_patch_size);  // [N, W, g, g]
+  if (trace) (*trace)["visual.conv1"] = patches;
+  const int64_t n = in.size(0), w = config_.vision_width;
+  at::Tensor x = patches.reshape({n, w, -1}).permute({0, 2, 1});  // [N, g*g, W], row-major grid
+  x = at::cat({class_embedding_.view({1, 1, w}).expand({n, 1, w}), x}, 1) + visual_pos_;
+  x = layer_norm(x, ln_pre_w_, ln_pre_b_);
+  if (trace) (*trace)["visual.ln_pre"] = x;
+  x = run_blocks(x, visual_blocks_, config_.vision_heads, at::Tensor(), "visual.transformer.resblocks.", trace);
+  const at::Tensor pooled = layer_norm(x.select(1, 0), ln_post_w_, ln_post_b_);
+  if (trace) (*trace)["visual.ln_post"] = pooled;
+  return at::matmul(pooled, visual_proj_);
+}
+
+at::Tensor ClipModel::encode_text(const at::Tensor& tokens, ClipTrace* trace) const {
+  if (tokens.dim() != 2 || tokens.size(1) != config_.context_length)
+    throw Error("CLIP encode_text: expected tokens [B, " + std::to_string(config_.context_length) + "], got " +
+                shape_str(tokens.sizes()));
+  const at::Tensor ids = tokens.to(token_embedding_.device(), at::kLong);
+  if (ids.numel() > 0 && (ids.min().item<int64_t>() < 0 || ids.max().item<int64_t>() >= config_.vocab_size))
+    throw Error("CLIP encode_text: token id outside [0, " + std::to_string(config_.vocab_size) + ")");
+  const int64_t b = ids.size(0);
+  at::Tensor x = at::embedding(token_embedding_, ids);  // [B, L, W]
+  if (trace) (*trace)["token_embedding"] = x;
+  x = x + text_pos_;
+  x = run_blocks(x, text_blocks_, config_.transformer_heads, causal_mask_, "transformer.resblocks.", trace);
+  x = layer_norm(x, ln_final_w_, ln_final_b_);
+  if (trace) (*trace)["ln_final"] = x;
+  // Pool at the first position of the largest id (the end-of-text token).
+  const at::Tensor eot = ids.argmax(-1);
+  const at::Tensor rows = at::arange(b, ids.options()) * x.size(1) + eot;
+  const at::Tensor pooled = x.reshape({-1, x.size(2)}).index_select(0, rows);
+  if (trace) (*trace)["text_pooled"] = pooled;
+  return at::matmul(pooled, text_projection_);
+}
+
+at::Tensor ClipModel::logits_per_image(const at::Tensor& image_features, const at::Tensor& text_features) const {
+  const at::Tensor img = l2_normalize(image_features.to(at::kFloat));
+  const at::Tensor txt = l2_normalize(text_features.to(at::kFloat));
+  return logit_scale_ * at::matmul(img, txt.t());
+}
+
+}  // namespace cls::clip

@@ -1,0 +1,174 @@
+// CLIP ViT image/text towers against the reference fixtures (openai/CLIP d05afc4, float32, see
+// tests/fixtures/clip/models/*/README.md): features, logits and every captured intermediate within
+// the README's suggested tolerance (atol = rtol = 1e-4, ~25x the observed fp32-vs-fp64 spread).
+#include <gtest/gtest.h>
+
+#include <ATen/ATen.h>
+
+#include "core/error.h"
+#include "models/clip/clip_model.h"
+#include "test_clip_fixture.h"
+
+namespace {
+
+using namespace cls::clip;
+using namespace cls::clip::testing;
+
+constexpr double kTol = 1e-4;
+
+void expect_close(const at::Tensor& got, const at::Tensor& want, const std::string& what, double tol = kTol) {
+  ASSERT_EQ(got.sizes(), want.sizes()) << what;
+  const at::Tensor g = got.to(at::kDouble), w = want.to(at::kDouble);
+  const double max_diff = (g - w).abs().max().item<double>();
+  EXPECT_TRUE(at::allclose(g, w, tol, tol)) << what << ": max abs diff " << max_diff;
+}
+
+struct Fixture {
+  ClipConfig config;
+  std::map<std::string, at::Tensor> state;
+  at::Tensor images, tokens;
+};
+
+Fixture load(const std::string& model, const std::string& weights = "weights_rows.safetensors") {
+  Fixture f;
+  const std::string dir = fixture_dir(model);
+  f.config = read_clip_config(dir + "/config.json");
+  f.state = load_state(dir + "/" + weights, f.config.vocab_size);
+  f.images = load_npy(dir + "/images.npy");
+  f.tokens = load_npy(dir + "/tokens.npy");
+  return f;
+}
+
+class ClipParity : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ClipParity, FeaturesLogitsAndIntermediates) {
+  const std::string model = GetParam();
+  const std::string dir = fixture_dir(model);
+  const Fixture f = load(model);
+  EXPECT_EQ(f.config.activation, model == "tiny_gelu" ? Activation::Gelu : Activation::QuickGelu);
+  const ClipModel clip(f.config, f.state, {}, dir);
+  ClipTrace trace;
+  const at::Tensor img = clip.encode_image(f.images, &trace);
+  const at::Tensor txt = clip.encode_text(f.tokens, &trace);
+  expect_close(img, load_npy(dir + "/image_features.npy"), "image_features");
+  expect_close(txt, load_npy(dir + "/text_features.npy"), "text_features");
+  expect_close(clip.logits_per_image(img, txt), load_npy(dir + "/logits_per_image.npy"), "logits_per_image");
+  const char* names[] = {"visual.conv1", "visual.ln_pre", "visual.ln_post", "token_embedding", "ln_final",
+                         "text_pooled"};
+  int checked = 0;
+  for (const std::string& name : names) {
+    ASSERT_TRUE(trace.count(name)) << name;
+    expect_close(trace.at(name), load_npy(dir + "/intermediates/" + name + ".npy"), name);
+    ++checked;
+  }
+  for (const std::string tower : {"visual.transformer.resblocks.", "transformer.resblocks."}) {
+    for (const std::string part : {".ln_1", ".attn", ".ln_2", ".mlp", ""}) {
+      const std::string name = tower + "0" + part;
+      expect_close(trace.at(name), load_npy(dir + "/intermediates/" + name + ".npy"), name);
+      ++checked;
+    }
+    expect_close(trace.at(tower + "1"), load_npy(dir + "/intermediates/" + tower + "1.npy"), tower + "1");
+    ++checked;
+  }
+  EXPECT_EQ(checked, 18);
+}
+
+TEST_P(ClipParity, OneSampleAtATimeMatchesTheBatch) {
+  const std::string model = GetParam();
+  const Fixture f = load(model);
+  const ClipModel clip(f.config, f.state);
+  const at::Tensor img = clip.encode_image(f.images), txt = clip.encode_text(f.tokens);
+  for (int64_t i = 0; i < f.images.size(0); ++i)
+    expect_close(clip.encode_image(f.images.narrow(0, i, 1)), img.narrow(0, i, 1), "image " + std::to_string(i));
+  for (int64_t i = 0; i < f.tokens.size(0); ++i)
+    expect_close(clip.encode_text(f.tokens.narrow(0, i, 1)), txt.narrow(0, i, 1), "text " + std::to_string(i));
+}
+
+INSTANTIATE_TEST_SUITE_P(Fixtures, ClipParity, ::testing::Values("tiny_gelu", "tiny_quickgelu"));
+
+// The wrong activation must be detected far above the tolerance (the test can fail).
+TEST(ClipModel, SwappedActivationIsVisible) {
+  Fixture f = load("tiny_gelu");
+  f.config.activation = Activation::QuickGelu;
+  const ClipModel clip(f.config, f.state);
+  const at::Tensor want = load_npy(fixture_dir("tiny_gelu") + "/image_features.npy");
+  EXPECT_GT((clip.encode_image(f.images) - want).abs().max().item<double>(), 1e-3);
+}
+
+TEST(ClipModel, Fp16WeightsUpcastMatchTheirReference) {
+  const std::string dir = fixture_dir("tiny_quickgelu");
+  const Fixture f = load("tiny_quickgelu", "weights_fp16.safetensors");
+  EXPECT_EQ(f.state.at("visual.proj").scalar_type(), at::kHalf);
+  const ClipModel clip(f.config, f.state);  // computes in float32
+  const at::Tensor img = clip.encode_image(f.images), txt = clip.encode_text(f.tokens);
+  expect_close(img, load_npy(dir + "/from_fp16_weights/image_features.npy"), "image_features (fp16 weights)");
+  expect_close(txt, load_npy(dir + "/from_fp16_weights/text_features.npy"), "text_features (fp16 weights)");
+  expect_close(clip.logits_per_image(img, txt), load_npy(dir + "/from_fp16_weights/logits_per_image.npy"),
+               "logits (fp16 weights)");
+}
+
+TEST(ClipModel, InferredConfigMatchesTheFixtureConfig) {
+  const Fixture f = load("tiny_quickgelu");
+  const ClipConfig c = infer_clip_config(f.state, Activation::QuickGelu);
+  EXPECT_EQ(c.vision_width, 128);
+  EXPECT_EQ(c.vision_layers, 2);
+  EXPECT_EQ(c.vision_patch_size, 16);
+  EXPECT_EQ(c.image_resolution, 64);
+  EXPECT_EQ(c.embed_dim, 32);
+  EXPECT_EQ(c.transformer_width, 32);
+  EXPECT_EQ(c.transformer_layers, 2);
+  EXPECT_EQ(c.vision_heads, 2);  // 128 / 64; the text heads (4) are not derivable, as in build_model()
+}
+
+TEST(ClipModel, BadWeightsAreReportedByNameBeforeCompute) {
+  const Fixture f = load("tiny_quickgelu");
+  auto message = [&](std::map<std::string, at::Tensor> state) -> std::string {
+    try {
+      ClipModel clip(f.config, state, {}, "w.safetensors");
+    } catch (const cls::Error& e) {
+      return e.what();
+    }
+    return "";
+  };
+  auto missing = f.state;
+  missing.erase("visual.transformer.resblocks.1.mlp.c_fc.bias");
+  EXPECT_NE(message(missing).find("missing (1):\n    visual.transformer.resblocks.1.mlp.c_fc.bias"), std::string::npos);
+  auto extra = f.state;
+  extra["visual.transformer.resblocks.2.ln_1.weight"] = at::zeros({128});
+  extra["input_resolution"] = at::zeros({});  // OpenAI JIT extras are ignored
+  EXPECT_NE(message(extra).find("unexpected (1):\n    visual.transformer.resblocks.2.ln_1.weight"),
+            std::string::npos);
+  auto shape = f.state;
+  shape["text_projection"] = at::zeros({32, 16});
+  const std::string m = message(shape);
+  EXPECT_NE(m.find("text_projection [32, 16], expected [32, 32]"), std::string::npos) << m;
+  EXPECT_EQ(m.rfind("w.safetensors: ", 0), 0u) << m;
+  auto dtype = f.state;
+  dtype["logit_scale"] = at::zeros({}, at::kLong);
+  EXPECT_NE(message(dtype).find("logit_scale has a non-floating dtype"), std::string::npos);
+}
+
+TEST(ClipModel, BadInputsAreErrors) {
+  const Fixture f = load("tiny_quickgelu");
+  const ClipModel clip(f.config, f.state);
+  EXPECT_THROW(clip.encode_image(at::zeros({1, 3, 32, 32})), cls::Error);
+  EXPECT_THROW(clip.encode_text(at::zeros({1, 76}, at::kLong)), cls::Error);
+  EXPECT_THROW(clip.encode_text(at::full({1, 77}, 49408, at::kLong)), cls::Error);
+  cls::clip::ClipOptions half;
+  half.dtype = at::kHalf;
+  EXPECT_THROW(ClipModel(f.config, f.state, half), cls::Error);  // fp16 is CUDA-only
+}
+
+TEST(ClipModel, PresetsHaveTheReferenceSizes) {
+  const ClipConfig b16 = clip_preset("ViT-B/16", Activation::Gelu);
+  EXPECT_EQ(b16.vision_tokens(), 197);
+  EXPECT_EQ(b16.embed_dim, 512);
+  EXPECT_EQ(clip_preset("ViT-B-32", Activation::QuickGelu).vision_tokens(), 50);
+  const ClipConfig l14 = clip_preset("ViT-L-14", Activation::QuickGelu);
+  EXPECT_EQ(l14.vision_tokens(), 257);
+  EXPECT_EQ(l14.embed_dim, 768);
+  EXPECT_EQ(ClipModel::expected_shapes(b16).size(), 12u * 12u * 2u + 14u);
+  EXPECT_THROW(clip_preset("RN50", Activation::QuickGelu), cls::Error);
+}
+
+}  // namespace
