@@ -6,6 +6,7 @@
 #include <ATen/ATen.h>
 
 #include "core/error.h"
+#include "models/clip/clip_loader.h"
 #include "models/clip/clip_model.h"
 #include "test_clip_fixture.h"
 
@@ -109,7 +110,9 @@ TEST(ClipModel, Fp16WeightsUpcastMatchTheirReference) {
 
 TEST(ClipModel, InferredConfigMatchesTheFixtureConfig) {
   const Fixture f = load("tiny_quickgelu");
-  const ClipConfig c = infer_clip_config(f.state, Activation::QuickGelu);
+  std::map<std::string, std::vector<int64_t>> shapes;
+  for (const auto& [name, t] : f.state) shapes[name] = t.sizes().vec();
+  const ClipConfig c = infer_clip_config(shapes, Activation::QuickGelu);
   EXPECT_EQ(c.vision_width, 128);
   EXPECT_EQ(c.vision_layers, 2);
   EXPECT_EQ(c.vision_patch_size, 16);
@@ -169,6 +172,32 @@ TEST(ClipModel, PresetsHaveTheReferenceSizes) {
   EXPECT_EQ(l14.embed_dim, 768);
   EXPECT_EQ(ClipModel::expected_shapes(b16).size(), 12u * 12u * 2u + 14u);
   EXPECT_THROW(clip_preset("RN50", Activation::QuickGelu), cls::Error);
+}
+
+}  // namespace
+
+namespace {
+
+// The full path from a weight file: the fp16 fixture through load_weight_file, config inferred
+// except the text heads (not derivable, as in the reference build_model()).
+TEST(ClipLoader, LoadsAWeightFileAndChecksItFirst) {
+  const std::string dir = fixture_dir("tiny_quickgelu");
+  ClipConfig config = read_clip_config(dir + "/config.json");
+  const ClipModel clip = load_clip_model(dir + "/weights_fp16.safetensors", Activation::QuickGelu, config);
+  expect_close(clip.encode_image(load_npy(dir + "/images.npy")),
+               load_npy(dir + "/from_fp16_weights/image_features.npy"), "image_features via loader");
+  // Inferred sizes (text heads max(1, 32 / 64) = 1, unlike the fixture's 4): the shapes check passes.
+  EXPECT_NO_THROW(load_clip_model(dir + "/weights_fp16.safetensors", Activation::QuickGelu));
+  // A wrong config is reported with the file name before any tensor is read.
+  config.transformer_layers = 3;
+  try {
+    load_clip_model(dir + "/weights_fp16.safetensors", Activation::QuickGelu, config);
+    ADD_FAILURE() << "no error";
+  } catch (const cls::Error& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("weights_fp16.safetensors"), std::string::npos) << m;
+    EXPECT_NE(m.find("missing (12):"), std::string::npos) << m;
+  }
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "models/clip/clip_config.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -65,10 +66,12 @@ ClipConfig read_clip_config(const std::string& path) {
   }
 }
 
-ClipConfig infer_clip_config(const std::map<std::string, at::Tensor>& state, Activation activation) {
-  auto get = [&](const std::string& k) -> const at::Tensor& {
+ClipConfig infer_clip_config(const std::map<std::string, std::vector<int64_t>>& state, Activation activation) {
+  auto get = [&](const std::string& k, size_t dims) -> const std::vector<int64_t>& {
     auto it = state.find(k);
     if (it == state.end()) throw Error("CLIP weights: no tensor '" + k + "' to infer the model size from");
+    if (it->second.size() != dims)
+      throw Error("CLIP weights: '" + k + "' must have " + std::to_string(dims) + " dimensions");
     return it->second;
   };
   auto count_layers = [&](const std::string& prefix) {
@@ -78,20 +81,19 @@ ClipConfig infer_clip_config(const std::map<std::string, at::Tensor>& state, Act
   };
   ClipConfig c;
   c.activation = activation;
-  const at::Tensor& conv = get("visual.conv1.weight");
-  if (conv.dim() != 4) throw Error("CLIP weights: visual.conv1.weight must be 4-d");
-  c.vision_width = static_cast<int>(conv.size(0));
-  c.vision_patch_size = static_cast<int>(conv.size(3));
+  const std::vector<int64_t>& conv = get("visual.conv1.weight", 4);
+  c.vision_width = static_cast<int>(conv[0]);
+  c.vision_patch_size = static_cast<int>(conv[3]);
   c.vision_layers = count_layers("visual.transformer.resblocks.");
-  c.vision_heads = c.vision_width / 64;
-  const int tokens = static_cast<int>(get("visual.positional_embedding").size(0));
+  c.vision_heads = std::max(1, c.vision_width / 64);  // at least one head for tiny widths
+  const int tokens = static_cast<int>(get("visual.positional_embedding", 2)[0]);
   const int grid = static_cast<int>(std::lround(std::sqrt(double(tokens - 1))));
   c.image_resolution = grid * c.vision_patch_size;
-  c.embed_dim = static_cast<int>(get("text_projection").size(1));
-  c.context_length = static_cast<int>(get("positional_embedding").size(0));
-  c.vocab_size = static_cast<int>(get("token_embedding.weight").size(0));
-  c.transformer_width = static_cast<int>(get("ln_final.weight").size(0));
-  c.transformer_heads = c.transformer_width / 64;
+  c.embed_dim = static_cast<int>(get("text_projection", 2)[1]);
+  c.context_length = static_cast<int>(get("positional_embedding", 2)[0]);
+  c.vocab_size = static_cast<int>(get("token_embedding.weight", 2)[0]);
+  c.transformer_width = static_cast<int>(get("ln_final.weight", 1)[0]);
+  c.transformer_heads = std::max(1, c.transformer_width / 64);
   c.transformer_layers = count_layers("transformer.resblocks.");
   return c;
 }

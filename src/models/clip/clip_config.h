@@ -1,10 +1,10 @@
 #pragma once
 // CLIP ViT hyperparameters (openai/CLIP clip/model.py CLIP.__init__ arguments) and the presets
 // CityLangSplat uses.
-#include <ATen/core/Tensor.h>
-
+#include <cstdint>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace cls::clip {
 
@@ -34,8 +34,8 @@ ClipConfig clip_preset(const std::string& name, Activation activation);
 // The fixture/OpenCLIP-style config.json (keys as in CLIP.__init__, "activation": "gelu"|"quick_gelu",
 // optional "vision_heads"/"transformer_heads"); throws cls::Error naming the file.
 ClipConfig read_clip_config(const std::string& path);
-// build_model(): sizes inferred from the state dict shapes; heads = width / 64.
-ClipConfig infer_clip_config(const std::map<std::string, at::Tensor>& state, Activation activation);
+// build_model(): sizes inferred from the state dict shapes (name -> shape); heads = width / 64.
+ClipConfig infer_clip_config(const std::map<std::string, std::vector<int64_t>>& shapes, Activation activation);
 
 Activation parse_activation(const std::string& name);  // "gelu" | "quick_gelu"
 const char* activation_name(Activation a);

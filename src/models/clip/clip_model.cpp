@@ -83,6 +83,39 @@ std::map<std::string, std::vector<int64_t>> ClipModel::expected_shapes(const Cli
   return s;
 }
 
+void check_clip_weights(const ClipConfig& config, const std::map<std::string, StoredTensor>& stored,
+                        const std::string& source) {
+  const auto expected = ClipModel::expected_shapes(config);
+  static const std::set<std::string> kIgnored = {"input_resolution", "context_length", "vocab_size"};
+  std::vector<std::string> missing, unexpected, misshaped;
+  for (const auto& [name, shape] : expected) {
+    auto it = stored.find(name);
+    if (it == stored.end()) {
+      missing.push_back(name);
+    } else if (it->second.shape != shape) {
+      misshaped.push_back(name + " " + shape_str(it->second.shape) + ", expected " + shape_str(shape));
+    } else if (!it->second.floating) {
+      misshaped.push_back(name + " has a non-floating dtype");
+    }
+  }
+  for (const auto& [name, t] : stored)
+    if (!expected.count(name) && !kIgnored.count(name)) unexpected.push_back(name);
+  if (missing.empty() && unexpected.empty() && misshaped.empty()) return;
+  std::ostringstream msg;
+  msg << "CLIP weights do not match the model (vision " << config.vision_width << "x" << config.vision_layers
+      << ", text " << config.transformer_width << "x" << config.transformer_layers << ")";
+  auto list = [&](const char* what, const std::vector<std::string>& v) {
+    if (v.empty()) return;
+    msg << "\n  " << what << " (" << v.size() << "):";
+    for (size_t i = 0; i < v.size() && i < 20; ++i) msg << "\n    " << v[i];
+    if (v.size() > 20) msg << "\n    ...";
+  };
+  list("missing", missing);
+  list("unexpected", unexpected);
+  list("wrong shape/dtype", misshaped);
+  fail(source, msg.str());
+}
+
 ClipModel::ClipModel(const ClipConfig& config, const std::map<std::string, at::Tensor>& state,
                      const ClipOptions& options, const std::string& source)
     : config_(config), options_(options) {
@@ -94,38 +127,11 @@ ClipModel::ClipModel(const ClipConfig& config, const std::map<std::string, at::T
   if (options.dtype != at::kFloat && options.dtype != at::kHalf && options.dtype != at::kBFloat16)
     fail(source, "CLIP: compute dtype must be float32, float16 or bfloat16");
 
-  // Validate names and shapes before touching any data.
-  const auto expected = expected_shapes(config);
-  static const std::set<std::string> kIgnored = {"input_resolution", "context_length", "vocab_size"};
-  std::vector<std::string> missing, unexpected, misshaped;
-  for (const auto& [name, shape] : expected) {
-    auto it = state.find(name);
-    if (it == state.end()) {
-      missing.push_back(name);
-    } else if (!it->second.defined() || it->second.sizes().vec() != shape) {
-      misshaped.push_back(name + " " + (it->second.defined() ? shape_str(it->second.sizes()) : "(undefined)") +
-                          ", expected " + shape_str(shape));
-    } else if (!at::isFloatingType(it->second.scalar_type())) {
-      misshaped.push_back(name + " has a non-floating dtype");
-    }
-  }
+  std::map<std::string, StoredTensor> stored;
   for (const auto& [name, t] : state)
-    if (!expected.count(name) && !kIgnored.count(name)) unexpected.push_back(name);
-  if (!missing.empty() || !unexpected.empty() || !misshaped.empty()) {
-    std::ostringstream msg;
-    msg << "CLIP weights do not match the model (vision " << config.vision_width << "x" << config.vision_layers
-        << ", text " << config.transformer_width << "x" << config.transformer_layers << ")";
-    auto list = [&](const char* what, const std::vector<std::string>& v) {
-      if (v.empty()) return;
-      msg << "\n  " << what << " (" << v.size() << "):";
-      for (size_t i = 0; i < v.size() && i < 20; ++i) msg << "\n    " << v[i];
-      if (v.size() > 20) msg << "\n    ...";
-    };
-    list("missing", missing);
-    list("unexpected", unexpected);
-    list("wrong shape/dtype", misshaped);
-    fail(source, msg.str());
-  }
+    stored[name] = {t.defined() ? t.sizes().vec() : std::vector<int64_t>{-1},
+                    t.defined() && at::isFloatingType(t.scalar_type())};
+  check_clip_weights(config, stored, source);
 
   const auto on_device = at::TensorOptions().device(options.device);
   auto take = [&](const std::string& name) {

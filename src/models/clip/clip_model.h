@@ -24,11 +24,21 @@ struct ClipOptions {
   at::ScalarType dtype = at::kFloat;  // kHalf / kBFloat16 only on CUDA
 };
 
+// What the name/shape check needs of one stored tensor.
+struct StoredTensor {
+  std::vector<int64_t> shape;
+  bool floating = true;
+};
+// Compares a weight container's names and shapes with what `config` needs; missing, unexpected and
+// mis-shaped (or non-floating) tensors are listed by name in one cls::Error prefixed by `source`.
+// OpenAI JIT-archive extras (input_resolution, context_length, vocab_size) are ignored.
+void check_clip_weights(const ClipConfig& config, const std::map<std::string, StoredTensor>& stored,
+                        const std::string& source);
+
 class ClipModel {
  public:
-  // Checks every expected tensor (name and shape, from `config`) before anything runs: missing,
-  // unexpected and mis-shaped tensors are listed by name in one cls::Error prefixed by `source`.
-  // OpenAI JIT-archive extras (input_resolution, context_length, vocab_size) are ignored.
+  // Runs check_clip_weights on `state` first; tensors are then converted to the compute
+  // dtype/device (any floating storage dtype: f32/f16/bf16).
   ClipModel(const ClipConfig& config, const std::map<std::string, at::Tensor>& state,
             const ClipOptions& options = {}, const std::string& source = "CLIP weights");
 
