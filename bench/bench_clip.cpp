@@ -1,0 +1,135 @@
+// CLIP throughput at real dimensions with random weights: LangSplat region crops per second
+// (crop + pad + resize + normalise + ViT image encoder, batched) and text encodes per second
+// (tokenizer + text transformer). Usage: bench_clip [--model ViT-B-16] [--threads 2] [--batch 32]
+// [--batches 3] [--device cpu|cuda] [--dtype float32|float16|bfloat16]. Figures go to docs/benchmarks.md.
+#include <ATen/ATen.h>
+#include <ATen/Parallel.h>
+#include <opencv2/imgproc.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <string>
+#include <vector>
+
+#include "cli/args.h"
+#include "core/error.h"
+#include "models/clip/clip_model.h"
+#include "models/clip/region_crops.h"
+#include "models/clip/region_encoder.h"
+#include "models/clip/tokenizer.h"
+
+namespace cls {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+double cpu_seconds() {
+  timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+// Random weights with the reference state_dict's names and shapes (scale 0.02, LayerNorm weight 1).
+std::map<std::string, at::Tensor> random_state(const clip::ClipConfig& config) {
+  std::map<std::string, at::Tensor> state;
+  for (const auto& [name, shape] : clip::ClipModel::expected_shapes(config)) {
+    if (name.find("ln_") != std::string::npos && name.size() > 7 && name.substr(name.size() - 7) == ".weight")
+      state[name] = at::ones(shape);
+    else
+      state[name] = at::randn(shape) * 0.02;
+  }
+  state["logit_scale"] = at::full({}, std::log(100.0));
+  return state;
+}
+
+int run(int argc, char** argv) {
+  Args args("bench_clip", "CLIP crops/s and text encodes/s at real dimensions with random weights", "");
+  args.option("model", "ViT-B-16", "ViT-B-32 | ViT-B-16 | ViT-L-14")
+      .option("threads", "2", "CPU threads (at::set_num_threads)")
+      .option("batch", "32", "crops per image-encoder batch")
+      .option("batches", "3", "timed batches (after one warm-up batch)")
+      .option("texts", "64", "texts per timed text run (batches of --batch)")
+      .option("device", "cpu", "cpu | cuda")
+      .option("dtype", "float32", "float32 | float16 | bfloat16 (half types on CUDA only)");
+  if (!args.parse(argc, argv)) return 0;
+  at::set_num_threads(args.get_int("threads"));
+  at::manual_seed(0);
+  const clip::ClipConfig config = clip::clip_preset(args.get("model"), clip::Activation::Gelu);
+  clip::ClipOptions options;
+  options.device = c10::Device(args.get("device"));
+  const std::string dt = args.get("dtype");
+  options.dtype = dt == "float16" ? at::kHalf : dt == "bfloat16" ? at::kBFloat16 : at::kFloat;
+  const clip::ClipModel model(config, random_state(config), options, "random " + args.get("model"));
+
+  // A 1000 x 750 image and `batch` elliptic masks of varied size, as SAM would give.
+  const int batch = args.get_int("batch"), batches = args.get_int("batches");
+  cv::Mat rgb(750, 1000, CV_8UC3);
+  cv::randu(rgb, 0, 256);
+  std::vector<cv::Mat> masks;
+  for (int i = 0; i < batch; ++i) {
+    cv::Mat m = cv::Mat::zeros(750, 1000, CV_8U);
+    cv::ellipse(m, cv::Point(100 + (i * 97) % 800, 80 + (i * 61) % 600), cv::Size(20 + (i * 13) % 200, 15 + (i * 7) % 150),
+                i * 11.0, 0, 360, cv::Scalar(1), -1);
+    masks.push_back(m);
+  }
+  clip::encode_regions(model, rgb, masks, batch);  // warm-up
+  double crop_s = 0;
+  {
+    const auto t0 = Clock::now();
+    for (int i = 0; i < batch; ++i) clip::langsplat_region_crop(rgb, masks[i], config.image_resolution);
+    crop_s = seconds_since(t0);
+  }
+  const double c0 = cpu_seconds();
+  const auto t0 = Clock::now();
+  for (int b = 0; b < batches; ++b) clip::encode_regions(model, rgb, masks, batch);
+  if (options.device.is_cuda()) at::zeros({1}, at::TensorOptions().device(options.device)).cpu();  // sync
+  const double wall = seconds_since(t0), cpu = cpu_seconds() - c0;
+  const double crops = double(batch) * batches;
+
+  // Text: tokenise + encode, `texts` prompts in batches of `batch`.
+  const clip::Tokenizer tokenizer;
+  const int n_texts = args.get_int("texts");
+  std::vector<std::string> texts;
+  for (int i = 0; i < n_texts; ++i) texts.push_back("a photo of building part number " + std::to_string(i));
+  auto encode_texts = [&] {
+    for (int b = 0; b < n_texts; b += batch) {
+      const std::vector<std::string> chunk(texts.begin() + b, texts.begin() + std::min(n_texts, b + batch));
+      const std::vector<int64_t> ids = tokenizer.tokenize(chunk);
+      const at::Tensor tok = at::from_blob(const_cast<int64_t*>(ids.data()),
+                                           {int64_t(chunk.size()), config.context_length}, at::kLong).clone();
+      model.encode_text(tok.to(options.device));
+    }
+  };
+  encode_texts();  // warm-up (fills the BPE cache, like repeated prompts do)
+  const double tc0 = cpu_seconds();
+  const auto tt0 = Clock::now();
+  encode_texts();
+  const double twall = seconds_since(tt0), tcpu = cpu_seconds() - tc0;
+
+  std::printf("model %s, device %s, dtype %s, threads %d, batch %d\n", args.get("model").c_str(),
+              args.get("device").c_str(), dt.c_str(), args.get_int("threads"), batch);
+  std::printf("crop preparation only: %.1f crops/s (%d crops of a 1000x750 image, 1 call each)\n", batch / crop_s, batch);
+  std::printf("region crops (prepare + encode): %.1f crops/s wall, %.1f per CPU-second x threads (%d crops, %.2f s)\n",
+              crops / wall, crops / cpu * args.get_int("threads"), int(crops), wall);
+  std::printf("text encodes (tokenise + encode): %.1f texts/s wall, %.1f per CPU-second x threads (%d texts, %.2f s)\n",
+              n_texts / twall, n_texts / tcpu * args.get_int("threads"), n_texts, twall);
+  return 0;
+}
+
+}  // namespace
+}  // namespace cls
+
+int main(int argc, char** argv) {
+  try {
+    return cls::run(argc, argv);
+  } catch (const cls::UsageError& e) {
+    std::fprintf(stderr, "bench_clip: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_clip: %s\n", e.what());
+    return 1;
+  }
+}
