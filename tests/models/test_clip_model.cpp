@@ -108,6 +108,20 @@ TEST(ClipModel, Fp16WeightsUpcastMatchTheirReference) {
                "logits (fp16 weights)");
 }
 
+// The reduced-precision path (the one CUDA fp16/bf16 takes; bf16 also runs on the CPU): weights and
+// activations in bf16, LayerNorm in fp32. bf16 keeps ~3 significant digits, so only closeness.
+TEST(ClipModel, Bfloat16ComputeStaysCloseToFloat32) {
+  const Fixture f = load("tiny_quickgelu");
+  const std::string dir = fixture_dir("tiny_quickgelu");
+  cls::clip::ClipOptions bf16;
+  bf16.dtype = at::kBFloat16;
+  const ClipModel clip(f.config, f.state, bf16);
+  const at::Tensor img = clip.encode_image(f.images), txt = clip.encode_text(f.tokens);
+  EXPECT_EQ(img.scalar_type(), at::kBFloat16);
+  expect_close(img, load_npy(dir + "/image_features.npy"), "bf16 image_features", 0.1);
+  expect_close(txt, load_npy(dir + "/text_features.npy"), "bf16 text_features", 0.1);
+}
+
 TEST(ClipModel, InferredConfigMatchesTheFixtureConfig) {
   const Fixture f = load("tiny_quickgelu");
   std::map<std::string, std::vector<int64_t>> shapes;

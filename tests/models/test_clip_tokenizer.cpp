@@ -3,11 +3,15 @@
 // pre-token pieces, ids and padded ids must be identical.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "models/clip/html_unescape.h"
 #include "models/clip/tokenizer.h"
+#include "models/clip/unicode_text.h"
 
 namespace {
 
@@ -79,6 +83,38 @@ TEST(ClipTokenizer, MissingOrCorruptVocabularyIsAnError) {
   const std::string path = testing::TempDir() + "clip_vocab_short.txt";
   std::ofstream(path) << "version\na b\n";
   EXPECT_THROW(Tokenizer{path}, cls::Error);
+}
+
+}  // namespace
+
+namespace {
+
+// Python 3.11 html.unescape on edge cases (expected values printed by CPython's html module).
+TEST(ClipHtmlUnescape, MatchesPythonOnEdgeCases) {
+  using cls::clip::html_unescape;
+  using cls::clip::utf32_to_utf8;
+  using cls::clip::utf8_to_utf32;
+  auto un = [](const std::string& s) { return utf32_to_utf8(html_unescape(utf8_to_utf32(s))); };
+  EXPECT_EQ(un("&copy2024"), "\xc2\xa9" "2024");   // legacy name without ';', longest prefix
+  EXPECT_EQ(un("&#x110000;"), "\xef\xbf\xbd");     // beyond U+10FFFF
+  EXPECT_EQ(un("&#xD800;"), "\xef\xbf\xbd");       // surrogate
+  EXPECT_EQ(un("&#128;"), "\xe2\x82\xac");         // windows-1252 euro
+  EXPECT_EQ(un("&#0;"), "\xef\xbf\xbd");
+  EXPECT_EQ(un("&#1;"), "");                        // invalid code point dropped
+  EXPECT_EQ(un("&amp"), "&");
+  EXPECT_EQ(un("&notit;"), "\xc2\xac" "it;");
+  EXPECT_EQ(un("&ampx"), "&x");
+  EXPECT_EQ(un("&#x;"), "&#x;");
+}
+
+TEST(ClipTokenizer, VocabularyIsFoundAndOverridable) {
+  EXPECT_TRUE(std::filesystem::exists(cls::clip::default_vocab_path()));
+  const std::string path = testing::TempDir() + "clip_vocab_override.gz";
+  std::filesystem::copy_file(std::string(CLS_TEST_DATA) + "/clip/bpe_simple_vocab_16e6.txt.gz", path,
+                             std::filesystem::copy_options::overwrite_existing);
+  setenv("CLS_CLIP_VOCAB", path.c_str(), 1);
+  EXPECT_EQ(cls::clip::default_vocab_path(), std::filesystem::path(path));
+  unsetenv("CLS_CLIP_VOCAB");
 }
 
 }  // namespace
