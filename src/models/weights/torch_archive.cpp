@@ -3,6 +3,7 @@
 #include <ATen/ATen.h>
 #include <caffe2/serialize/inline_container.h>
 #include <torch/csrc/jit/api/compilation_unit.h>
+#include <torch/csrc/jit/frontend/script_type_parser.h>
 #include <torch/csrc/jit/serialization/import_read.h>
 
 #include "core/error.h"
@@ -45,8 +46,12 @@ WeightFile read_torch_archive(const std::string& path) {
     if (!reader.hasRecord("data.pkl"))
       fail(path, "zip archive without data.pkl: not a PyTorch checkpoint");
     auto cu = std::make_shared<torch::jit::CompilationUnit>();
-    // Scripted classes (TorchScript archives) resolve to empty class types; no code is loaded.
+    // Scripted classes (TorchScript archives, "__torch__.*") resolve to empty class types; no code
+    // is loaded. The resolver also receives the container type tags torch::pickle_save writes
+    // ("Dict[str, Tensor]"): those are parsed as TorchScript types.
     torch::jit::TypeResolver resolve = [cu](const c10::QualifiedName& name) {
+      if (name.qualifiedName().rfind("__torch__.", 0) != 0)
+        return c10::StrongTypePtr(cu, torch::jit::ScriptTypeParser().parseType(name.qualifiedName()));
       c10::ClassTypePtr type = cu->get_class(name);
       if (!type) {
         type = c10::ClassType::create(name, cu);
@@ -70,7 +75,8 @@ WeightFile read_torch_archive(const std::string& path) {
       for (size_t i = 0; i < attributes.size(); ++i) obj->setSlot(i, attributes[i].second);
       return obj;
     };
-    root = torch::jit::readArchiveAndTensors("data", "", "data/", resolve, load_object, at::Device(at::kCPU), reader);
+    root = torch::jit::readArchiveAndTensors("data", "", "data/", resolve, load_object, at::Device(at::kCPU),
+                                             reader);
   } catch (const Error&) {
     throw;
   } catch (const std::exception& e) {
