@@ -20,6 +20,7 @@
 #include "models/clip/region_crops.h"
 #include "models/clip/region_encoder.h"
 #include "models/clip/tokenizer.h"
+#include "models/weights/clip_weights.h"
 
 namespace cls {
 namespace {
@@ -35,11 +36,10 @@ double cpu_seconds() {
 // Random weights with the reference state_dict's names and shapes (scale 0.02, LayerNorm weight 1).
 std::map<std::string, at::Tensor> random_state(const clip::ClipConfig& config) {
   std::map<std::string, at::Tensor> state;
-  for (const auto& [name, shape] : clip::ClipModel::expected_shapes(config)) {
-    if (name.find("ln_") != std::string::npos && name.size() > 7 && name.substr(name.size() - 7) == ".weight")
-      state[name] = at::ones(shape);
-    else
-      state[name] = at::randn(shape) * 0.02;
+  for (const ExpectedTensor& e : clip_expected_tensors(config.arch)) {
+    const bool ln_weight = e.name.find("ln_") != std::string::npos && e.name.size() > 7 &&
+                           e.name.compare(e.name.size() - 7, 7, ".weight") == 0;
+    state[e.name] = ln_weight ? at::ones(e.shape) : at::randn(e.shape) * 0.02;
   }
   state["logit_scale"] = at::full({}, std::log(100.0));
   return state;
@@ -79,7 +79,7 @@ int run(int argc, char** argv) {
   double crop_s = 0;
   {
     const auto t0 = Clock::now();
-    for (int i = 0; i < batch; ++i) clip::langsplat_region_crop(rgb, masks[i], config.image_resolution);
+    for (int i = 0; i < batch; ++i) clip::langsplat_region_crop(rgb, masks[i], config.arch.image_resolution);
     crop_s = seconds_since(t0);
   }
   const double c0 = cpu_seconds();
@@ -99,7 +99,7 @@ int run(int argc, char** argv) {
       const std::vector<std::string> chunk(texts.begin() + b, texts.begin() + std::min(n_texts, b + batch));
       const std::vector<int64_t> ids = tokenizer.tokenize(chunk);
       const at::Tensor tok = at::from_blob(const_cast<int64_t*>(ids.data()),
-                                           {int64_t(chunk.size()), config.context_length}, at::kLong).clone();
+                                           {int64_t(chunk.size()), config.arch.context_length}, at::kLong).clone();
       model.encode_text(tok.to(options.device));
     }
   };

@@ -34,7 +34,7 @@ Fixture load(const std::string& model, const std::string& weights = "weights_row
   Fixture f;
   const std::string dir = fixture_dir(model);
   f.config = read_clip_config(dir + "/config.json");
-  f.state = load_state(dir + "/" + weights, f.config.vocab_size);
+  f.state = load_state(dir + "/" + weights, f.config.arch.vocab_size);
   f.images = load_npy(dir + "/images.npy");
   f.tokens = load_npy(dir + "/tokens.npy");
   return f;
@@ -127,13 +127,13 @@ TEST(ClipModel, InferredConfigMatchesTheFixtureConfig) {
   std::map<std::string, std::vector<int64_t>> shapes;
   for (const auto& [name, t] : f.state) shapes[name] = t.sizes().vec();
   const ClipConfig c = infer_clip_config(shapes, Activation::QuickGelu);
-  EXPECT_EQ(c.vision_width, 128);
-  EXPECT_EQ(c.vision_layers, 2);
-  EXPECT_EQ(c.vision_patch_size, 16);
-  EXPECT_EQ(c.image_resolution, 64);
-  EXPECT_EQ(c.embed_dim, 32);
-  EXPECT_EQ(c.transformer_width, 32);
-  EXPECT_EQ(c.transformer_layers, 2);
+  EXPECT_EQ(c.arch.vision_width, 128);
+  EXPECT_EQ(c.arch.vision_layers, 2);
+  EXPECT_EQ(c.arch.vision_patch_size, 16);
+  EXPECT_EQ(c.arch.image_resolution, 64);
+  EXPECT_EQ(c.arch.embed_dim, 32);
+  EXPECT_EQ(c.arch.transformer_width, 32);
+  EXPECT_EQ(c.arch.transformer_layers, 2);
   EXPECT_EQ(c.vision_heads, 2);  // 128 / 64; the text heads (4) are not derivable, as in build_model()
 }
 
@@ -149,20 +149,21 @@ TEST(ClipModel, BadWeightsAreReportedByNameBeforeCompute) {
   };
   auto missing = f.state;
   missing.erase("visual.transformer.resblocks.1.mlp.c_fc.bias");
-  EXPECT_NE(message(missing).find("missing (1):\n    visual.transformer.resblocks.1.mlp.c_fc.bias"), std::string::npos);
+  EXPECT_NE(message(missing).find("1 missing:\n    visual.transformer.resblocks.1.mlp.c_fc.bias"), std::string::npos);
   auto extra = f.state;
   extra["visual.transformer.resblocks.2.ln_1.weight"] = at::zeros({128});
   extra["input_resolution"] = at::zeros({});  // OpenAI JIT extras are ignored
-  EXPECT_NE(message(extra).find("unexpected (1):\n    visual.transformer.resblocks.2.ln_1.weight"),
+  EXPECT_NE(message(extra).find("1 unexpected:\n    visual.transformer.resblocks.2.ln_1.weight"),
             std::string::npos);
   auto shape = f.state;
   shape["text_projection"] = at::zeros({32, 16});
   const std::string m = message(shape);
-  EXPECT_NE(m.find("text_projection [32, 16], expected [32, 32]"), std::string::npos) << m;
+  EXPECT_NE(m.find("text_projection: expected [32, 32], stored text_projection [32, 16]"), std::string::npos) << m;
   EXPECT_EQ(m.rfind("w.safetensors: ", 0), 0u) << m;
   auto dtype = f.state;
   dtype["logit_scale"] = at::zeros({}, at::kLong);
-  EXPECT_NE(message(dtype).find("logit_scale has a non-floating dtype"), std::string::npos);
+  const std::string d = message(dtype);
+  EXPECT_NE(d.find("1 with a wrong dtype:\n    logit_scale"), std::string::npos) << d;
 }
 
 TEST(ClipModel, BadInputsAreErrors) {
@@ -179,12 +180,11 @@ TEST(ClipModel, BadInputsAreErrors) {
 TEST(ClipModel, PresetsHaveTheReferenceSizes) {
   const ClipConfig b16 = clip_preset("ViT-B/16", Activation::Gelu);
   EXPECT_EQ(b16.vision_tokens(), 197);
-  EXPECT_EQ(b16.embed_dim, 512);
+  EXPECT_EQ(b16.arch.embed_dim, 512);
   EXPECT_EQ(clip_preset("ViT-B-32", Activation::QuickGelu).vision_tokens(), 50);
   const ClipConfig l14 = clip_preset("ViT-L-14", Activation::QuickGelu);
   EXPECT_EQ(l14.vision_tokens(), 257);
-  EXPECT_EQ(l14.embed_dim, 768);
-  EXPECT_EQ(ClipModel::expected_shapes(b16).size(), 12u * 12u * 2u + 14u);
+  EXPECT_EQ(l14.arch.embed_dim, 768);
   EXPECT_THROW(clip_preset("RN50", Activation::QuickGelu), cls::Error);
 }
 
@@ -203,15 +203,68 @@ TEST(ClipLoader, LoadsAWeightFileAndChecksItFirst) {
   // Inferred sizes (text heads max(1, 32 / 64) = 1, unlike the fixture's 4): the shapes check passes.
   EXPECT_NO_THROW(load_clip_model(dir + "/weights_fp16.safetensors", Activation::QuickGelu));
   // A wrong config is reported with the file name before any tensor is read.
-  config.transformer_layers = 3;
+  config.arch.transformer_layers = 3;
   try {
     load_clip_model(dir + "/weights_fp16.safetensors", Activation::QuickGelu, config);
     ADD_FAILURE() << "no error";
   } catch (const cls::Error& e) {
     const std::string m = e.what();
     EXPECT_NE(m.find("weights_fp16.safetensors"), std::string::npos) << m;
-    EXPECT_NE(m.find("missing (12):"), std::string::npos) << m;
+    EXPECT_NE(m.find("12 missing:\n    transformer.resblocks.2.attn.in_proj_weight"), std::string::npos) << m;
   }
+}
+
+}  // namespace
+
+namespace {
+
+// Hugging Face transformers CLIPModel names/values (modeling_clip.py), written from the canonical
+// state dict independently of the loader's table: q/k/v split, nn.Linear projections transposed.
+cls::WeightFile to_huggingface(const std::map<std::string, at::Tensor>& s) {
+  cls::WeightFile w("hf-layout");
+  auto tower = [&](const std::string& from, const std::string& to, int layers) {
+    for (int i = 0; i < layers; ++i) {
+      const std::string a = from + std::to_string(i) + ".", b = to + ".encoder.layers." + std::to_string(i) + ".";
+      const auto qkv_w = s.at(a + "attn.in_proj_weight").chunk(3, 0), qkv_b = s.at(a + "attn.in_proj_bias").chunk(3, 0);
+      const char* names[] = {"q_proj", "k_proj", "v_proj"};
+      for (int k = 0; k < 3; ++k) {
+        w.add(b + "self_attn." + names[k] + ".weight", qkv_w[k].contiguous());
+        w.add(b + "self_attn." + names[k] + ".bias", qkv_b[k].contiguous());
+      }
+      const std::pair<const char*, const char*> same[] = {
+          {"attn.out_proj", "self_attn.out_proj"}, {"ln_1", "layer_norm1"}, {"ln_2", "layer_norm2"},
+          {"mlp.c_fc", "mlp.fc1"}, {"mlp.c_proj", "mlp.fc2"}};
+      for (const auto& [x, y] : same) {
+        w.add(b + y + ".weight", s.at(a + x + ".weight"));
+        w.add(b + y + ".bias", s.at(a + x + ".bias"));
+      }
+    }
+  };
+  tower("transformer.resblocks.", "text_model", 2);
+  tower("visual.transformer.resblocks.", "vision_model", 2);
+  w.add("text_model.embeddings.token_embedding.weight", s.at("token_embedding.weight"));
+  w.add("text_model.embeddings.position_embedding.weight", s.at("positional_embedding"));
+  w.add("text_model.final_layer_norm.weight", s.at("ln_final.weight"));
+  w.add("text_model.final_layer_norm.bias", s.at("ln_final.bias"));
+  w.add("vision_model.embeddings.class_embedding", s.at("visual.class_embedding"));
+  w.add("vision_model.embeddings.patch_embedding.weight", s.at("visual.conv1.weight"));
+  w.add("vision_model.embeddings.position_embedding.weight", s.at("visual.positional_embedding"));
+  w.add("vision_model.pre_layrnorm.weight", s.at("visual.ln_pre.weight"));
+  w.add("vision_model.pre_layrnorm.bias", s.at("visual.ln_pre.bias"));
+  w.add("vision_model.post_layernorm.weight", s.at("visual.ln_post.weight"));
+  w.add("vision_model.post_layernorm.bias", s.at("visual.ln_post.bias"));
+  w.add("visual_projection.weight", s.at("visual.proj").t().contiguous());
+  w.add("text_projection.weight", s.at("text_projection").t().contiguous());
+  w.add("logit_scale", s.at("logit_scale"));
+  return w;
+}
+
+TEST(ClipLoader, HuggingFaceLayoutGivesTheSameFeatures) {
+  const Fixture f = load("tiny_gelu");
+  const std::string dir = fixture_dir("tiny_gelu");
+  const ClipModel clip(f.config, to_huggingface(f.state));
+  expect_close(clip.encode_image(f.images), load_npy(dir + "/image_features.npy"), "image_features (HF layout)");
+  expect_close(clip.encode_text(f.tokens), load_npy(dir + "/text_features.npy"), "text_features (HF layout)");
 }
 
 }  // namespace

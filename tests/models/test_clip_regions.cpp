@@ -108,7 +108,7 @@ TEST(ClipRegions, NormalisationUsesClipMeanAndStd) {
 TEST(ClipRegions, BatchedEncodingMatchesOneCropAtATime) {
   const std::string dir = cls::clip::testing::fixture_dir("tiny_quickgelu");
   const ClipConfig config = read_clip_config(dir + "/config.json");
-  const ClipModel model(config, cls::clip::testing::load_state(dir + "/weights_rows.safetensors", config.vocab_size));
+  const ClipModel model(config, cls::clip::testing::load_state(dir + "/weights_rows.safetensors", config.arch.vocab_size));
   cv::Mat rgb(40, 50, CV_8UC3);
   cv::randu(rgb, 0, 256);
   std::vector<cv::Mat> masks;

@@ -17,26 +17,17 @@ Activation parse_activation(const std::string& name) {
 
 const char* activation_name(Activation a) { return a == Activation::Gelu ? "gelu" : "quick_gelu"; }
 
-ClipConfig clip_preset(const std::string& name, Activation activation) {
+ClipConfig clip_config(const ClipArch& arch, Activation activation) {
   ClipConfig c;
+  c.arch = arch;
+  c.vision_heads = std::max(1, arch.vision_width / 64);  // at least one head for tiny widths
+  c.transformer_heads = std::max(1, arch.transformer_width / 64);
   c.activation = activation;
-  std::string n = name;
-  for (char& ch : n)
-    if (ch == '/') ch = '-';
-  if (n == "ViT-B-32" || n == "ViT-B-16") {
-    c.vision_patch_size = n == "ViT-B-32" ? 32 : 16;
-  } else if (n == "ViT-L-14") {
-    c.embed_dim = 768;
-    c.vision_layers = 24;
-    c.vision_width = 1024;
-    c.vision_heads = 16;
-    c.vision_patch_size = 14;
-    c.transformer_width = 768;
-    c.transformer_heads = 12;
-  } else {
-    throw Error("unknown CLIP model '" + name + "' (known: ViT-B-32, ViT-B-16, ViT-L-14)");
-  }
   return c;
+}
+
+ClipConfig clip_preset(const std::string& name, Activation activation) {
+  return clip_config(clip_arch(name), activation);
 }
 
 ClipConfig read_clip_config(const std::string& path) {
@@ -45,19 +36,20 @@ ClipConfig read_clip_config(const std::string& path) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(in);
-    ClipConfig c;
-    c.embed_dim = j.at("embed_dim");
-    c.image_resolution = j.at("image_resolution");
-    c.vision_layers = j.at("vision_layers");
-    c.vision_width = j.at("vision_width");
-    c.vision_patch_size = j.at("vision_patch_size");
-    c.vision_heads = j.value("vision_heads", c.vision_width / 64);
-    c.context_length = j.at("context_length");
-    c.vocab_size = j.at("vocab_size");
-    c.transformer_width = j.at("transformer_width");
-    c.transformer_heads = j.value("transformer_heads", c.transformer_width / 64);
-    c.transformer_layers = j.at("transformer_layers");
-    c.activation = parse_activation(j.value("activation", std::string("quick_gelu")));
+    ClipArch a;
+    a.name = "custom";
+    a.embed_dim = j.at("embed_dim");
+    a.image_resolution = j.at("image_resolution");
+    a.vision_layers = j.at("vision_layers");
+    a.vision_width = j.at("vision_width");
+    a.vision_patch_size = j.at("vision_patch_size");
+    a.context_length = j.at("context_length");
+    a.vocab_size = j.at("vocab_size");
+    a.transformer_width = j.at("transformer_width");
+    a.transformer_layers = j.at("transformer_layers");
+    ClipConfig c = clip_config(a, parse_activation(j.value("activation", std::string("quick_gelu"))));
+    c.vision_heads = j.value("vision_heads", c.vision_heads);
+    c.transformer_heads = j.value("transformer_heads", c.transformer_heads);
     return c;
   } catch (const nlohmann::json::exception& e) {
     fail(path, std::string("bad CLIP config: ") + e.what());
@@ -79,23 +71,21 @@ ClipConfig infer_clip_config(const std::map<std::string, std::vector<int64_t>>& 
     while (state.count(prefix + std::to_string(n) + ".ln_1.weight")) ++n;
     return n;
   };
-  ClipConfig c;
-  c.activation = activation;
+  ClipArch a;
+  a.name = "custom";
   const std::vector<int64_t>& conv = get("visual.conv1.weight", 4);
-  c.vision_width = static_cast<int>(conv[0]);
-  c.vision_patch_size = static_cast<int>(conv[3]);
-  c.vision_layers = count_layers("visual.transformer.resblocks.");
-  c.vision_heads = std::max(1, c.vision_width / 64);  // at least one head for tiny widths
+  a.vision_width = static_cast<int>(conv[0]);
+  a.vision_patch_size = static_cast<int>(conv[3]);
+  a.vision_layers = count_layers("visual.transformer.resblocks.");
   const int tokens = static_cast<int>(get("visual.positional_embedding", 2)[0]);
   const int grid = static_cast<int>(std::lround(std::sqrt(double(tokens - 1))));
-  c.image_resolution = grid * c.vision_patch_size;
-  c.embed_dim = static_cast<int>(get("text_projection", 2)[1]);
-  c.context_length = static_cast<int>(get("positional_embedding", 2)[0]);
-  c.vocab_size = static_cast<int>(get("token_embedding.weight", 2)[0]);
-  c.transformer_width = static_cast<int>(get("ln_final.weight", 1)[0]);
-  c.transformer_heads = std::max(1, c.transformer_width / 64);
-  c.transformer_layers = count_layers("transformer.resblocks.");
-  return c;
+  a.image_resolution = grid * a.vision_patch_size;
+  a.embed_dim = static_cast<int>(get("text_projection", 2)[1]);
+  a.context_length = static_cast<int>(get("positional_embedding", 2)[0]);
+  a.vocab_size = static_cast<int>(get("token_embedding.weight", 2)[0]);
+  a.transformer_width = static_cast<int>(get("ln_final.weight", 1)[0]);
+  a.transformer_layers = count_layers("transformer.resblocks.");
+  return clip_config(a, activation);
 }
 
 }  // namespace cls::clip

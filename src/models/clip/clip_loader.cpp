@@ -1,29 +1,32 @@
 #include "models/clip/clip_loader.h"
 
-#include <ATen/ATen.h>
-
-#include "models/weights/weight_file.h"
+#include "core/error.h"
+#include "models/weights/clip_weights.h"
+#include "models/weights/weight_layout.h"
 
 namespace cls::clip {
 
 ClipModel load_clip_model(const WeightFile& weights, Activation activation, const std::optional<ClipConfig>& config,
                           const ClipOptions& options) {
-  std::map<std::string, StoredTensor> stored;
+  if (config) {
+    ClipConfig c = *config;
+    c.activation = activation;
+    return ClipModel(c, weights, options);
+  }
   std::map<std::string, std::vector<int64_t>> shapes;
-  for (const std::string& name : weights.names()) {
-    const TensorInfo& info = weights.info(name);
-    stored[name] = {info.shape, at::isFloatingType(info.dtype)};
-    shapes[name] = info.shape;
+  for (const std::string& name : weights.names()) shapes[name] = weights.info(name).shape;
+  try {
+    return ClipModel(infer_clip_config(shapes, activation), weights, options);
+  } catch (const Error&) {
+    // Not canonical names (or not a complete canonical set): try the known architectures.
   }
-  ClipConfig c = config ? *config : infer_clip_config(shapes, activation);
-  c.activation = activation;
-  check_clip_weights(c, stored, weights.source());
-  std::map<std::string, at::Tensor> state;
-  for (const std::string& name : weights.names()) {
-    if (name == "input_resolution" || name == "context_length" || name == "vocab_size") continue;
-    state[name] = weights.get(name);
+  for (const char* preset : {"ViT-B-32", "ViT-B-16", "ViT-L-14"}) {
+    const ClipArch arch = clip_arch(preset);
+    if (map_weights(weights, clip_expected_tensors(arch), clip_layouts()).report.ok())
+      return ClipModel(clip_config(arch, activation), weights, options);
   }
-  return ClipModel(c, state, options, weights.source());
+  // Report against the closest preset, naming every problem.
+  return ClipModel(clip_preset("ViT-B-16", activation), weights, options);
 }
 
 ClipModel load_clip_model(const std::string& path, Activation activation, const std::optional<ClipConfig>& config,

@@ -4,10 +4,11 @@
 
 #include <cmath>
 #include <limits>
-#include <set>
 #include <sstream>
 
 #include "core/error.h"
+#include "models/weights/clip_weights.h"
+#include "models/weights/weight_layout.h"
 
 namespace cls::clip {
 namespace {
@@ -44,101 +45,44 @@ at::Tensor multi_head_attention(const at::Tensor& x, const at::Tensor& in_w, con
 
 at::Tensor l2_normalize(const at::Tensor& f) { return f / f.norm(2, -1, true); }
 
-std::map<std::string, std::vector<int64_t>> ClipModel::expected_shapes(const ClipConfig& c) {
-  std::map<std::string, std::vector<int64_t>> s;
-  const int64_t vw = c.vision_width, tw = c.transformer_width, p = c.vision_patch_size;
-  auto blocks = [&](const std::string& prefix, int layers, int64_t w) {
-    for (int i = 0; i < layers; ++i) {
-      const std::string b = prefix + std::to_string(i) + ".";
-      s[b + "attn.in_proj_weight"] = {3 * w, w};
-      s[b + "attn.in_proj_bias"] = {3 * w};
-      s[b + "attn.out_proj.weight"] = {w, w};
-      s[b + "attn.out_proj.bias"] = {w};
-      s[b + "ln_1.weight"] = {w};
-      s[b + "ln_1.bias"] = {w};
-      s[b + "mlp.c_fc.weight"] = {4 * w, w};
-      s[b + "mlp.c_fc.bias"] = {4 * w};
-      s[b + "mlp.c_proj.weight"] = {w, 4 * w};
-      s[b + "mlp.c_proj.bias"] = {w};
-      s[b + "ln_2.weight"] = {w};
-      s[b + "ln_2.bias"] = {w};
-    }
-  };
-  s["visual.conv1.weight"] = {vw, 3, p, p};
-  s["visual.class_embedding"] = {vw};
-  s["visual.positional_embedding"] = {c.vision_tokens(), vw};
-  s["visual.ln_pre.weight"] = {vw};
-  s["visual.ln_pre.bias"] = {vw};
-  blocks("visual.transformer.resblocks.", c.vision_layers, vw);
-  s["visual.ln_post.weight"] = {vw};
-  s["visual.ln_post.bias"] = {vw};
-  s["visual.proj"] = {vw, c.embed_dim};
-  s["token_embedding.weight"] = {c.vocab_size, tw};
-  s["positional_embedding"] = {c.context_length, tw};
-  blocks("transformer.resblocks.", c.transformer_layers, tw);
-  s["ln_final.weight"] = {tw};
-  s["ln_final.bias"] = {tw};
-  s["text_projection"] = {tw, c.embed_dim};
-  s["logit_scale"] = {};
-  return s;
+namespace {
+
+WeightFile as_weight_file(const std::map<std::string, at::Tensor>& state, const std::string& source) {
+  WeightFile w(source);
+  for (const auto& [name, t] : state) {
+    if (t.defined()) w.add(name, t);
+    else fail(source, "tensor '" + name + "' is undefined");
+  }
+  return w;
 }
 
-void check_clip_weights(const ClipConfig& config, const std::map<std::string, StoredTensor>& stored,
-                        const std::string& source) {
-  const auto expected = ClipModel::expected_shapes(config);
-  static const std::set<std::string> kIgnored = {"input_resolution", "context_length", "vocab_size"};
-  std::vector<std::string> missing, unexpected, misshaped;
-  for (const auto& [name, shape] : expected) {
-    auto it = stored.find(name);
-    if (it == stored.end()) {
-      missing.push_back(name);
-    } else if (it->second.shape != shape) {
-      misshaped.push_back(name + " " + shape_str(it->second.shape) + ", expected " + shape_str(shape));
-    } else if (!it->second.floating) {
-      misshaped.push_back(name + " has a non-floating dtype");
-    }
-  }
-  for (const auto& [name, t] : stored)
-    if (!expected.count(name) && !kIgnored.count(name)) unexpected.push_back(name);
-  if (missing.empty() && unexpected.empty() && misshaped.empty()) return;
-  std::ostringstream msg;
-  msg << "CLIP weights do not match the model (vision " << config.vision_width << "x" << config.vision_layers
-      << ", text " << config.transformer_width << "x" << config.transformer_layers << ")";
-  auto list = [&](const char* what, const std::vector<std::string>& v) {
-    if (v.empty()) return;
-    msg << "\n  " << what << " (" << v.size() << "):";
-    for (size_t i = 0; i < v.size() && i < 20; ++i) msg << "\n    " << v[i];
-    if (v.size() > 20) msg << "\n    ...";
-  };
-  list("missing", missing);
-  list("unexpected", unexpected);
-  list("wrong shape/dtype", misshaped);
-  fail(source, msg.str());
-}
+}  // namespace
 
 ClipModel::ClipModel(const ClipConfig& config, const std::map<std::string, at::Tensor>& state,
                      const ClipOptions& options, const std::string& source)
+    : ClipModel(config, as_weight_file(state, source), options) {}
+
+ClipModel::ClipModel(const ClipConfig& config, const WeightFile& weights, const ClipOptions& options)
     : config_(config), options_(options) {
-  if (config.vision_heads <= 0 || config.vision_width % config.vision_heads != 0 ||
-      config.transformer_heads <= 0 || config.transformer_width % config.transformer_heads != 0)
+  const std::string& source = weights.source();
+  const ClipArch& arch = config.arch;
+  if (config.vision_heads <= 0 || arch.vision_width % config.vision_heads != 0 ||
+      config.transformer_heads <= 0 || arch.transformer_width % config.transformer_heads != 0)
     fail(source, "CLIP config: widths must be divisible by the head counts");
   if (options.device.is_cpu() && options.dtype == at::kHalf)
     fail(source, "CLIP: float16 compute is only supported on CUDA; use float32 on the CPU");
   if (options.dtype != at::kFloat && options.dtype != at::kHalf && options.dtype != at::kBFloat16)
     fail(source, "CLIP: compute dtype must be float32, float16 or bfloat16");
-
-  std::map<std::string, StoredTensor> stored;
-  for (const auto& [name, t] : state)
-    stored[name] = {t.defined() ? t.sizes().vec() : std::vector<int64_t>{-1},
-                    t.defined() && at::isFloatingType(t.scalar_type())};
-  check_clip_weights(config, stored, source);
+  // Names and shapes first, nothing is read before this passes.
+  const WeightFile state = map_weights_strict(weights, clip_expected_tensors(arch), clip_layouts(),
+                                              "CLIP " + arch.name);
 
   const auto on_device = at::TensorOptions().device(options.device);
   auto take = [&](const std::string& name) {
-    return state.at(name).to(on_device.dtype(options.dtype)).contiguous();
+    return state.get(name).to(on_device.dtype(options.dtype)).contiguous();
   };
   // LayerNorm parameters stay fp32 (the reference LayerNorm computes in fp32).
-  auto take_f32 = [&](const std::string& name) { return state.at(name).to(on_device.dtype(at::kFloat)).contiguous(); };
+  auto take_f32 = [&](const std::string& name) { return state.get(name).to(on_device.dtype(at::kFloat)).contiguous(); };
   auto blocks = [&](const std::string& prefix, int layers) {
     std::vector<Block> out;
     for (int i = 0; i < layers; ++i) {
@@ -156,19 +100,19 @@ ClipModel::ClipModel(const ClipConfig& config, const std::map<std::string, at::T
   visual_pos_ = take("visual.positional_embedding");
   ln_pre_w_ = take_f32("visual.ln_pre.weight");
   ln_pre_b_ = take_f32("visual.ln_pre.bias");
-  visual_blocks_ = blocks("visual.transformer.resblocks.", config.vision_layers);
+  visual_blocks_ = blocks("visual.transformer.resblocks.", arch.vision_layers);
   ln_post_w_ = take_f32("visual.ln_post.weight");
   ln_post_b_ = take_f32("visual.ln_post.bias");
   visual_proj_ = take("visual.proj");
   token_embedding_ = take("token_embedding.weight");
   text_pos_ = take("positional_embedding");
-  text_blocks_ = blocks("transformer.resblocks.", config.transformer_layers);
+  text_blocks_ = blocks("transformer.resblocks.", arch.transformer_layers);
   ln_final_w_ = take_f32("ln_final.weight");
   ln_final_b_ = take_f32("ln_final.bias");
   text_projection_ = take("text_projection");
-  logit_scale_ = std::exp(state.at("logit_scale").to(at::kFloat).item<float>());
+  logit_scale_ = std::exp(state.get("logit_scale").to(at::kFloat).item<float>());
   // build_attention_mask(): -inf strictly above the diagonal.
-  causal_mask_ = at::full({config.context_length, config.context_length},
+  causal_mask_ = at::full({arch.context_length, arch.context_length},
                           -std::numeric_limits<float>::infinity(), on_device.dtype(options.dtype))
                      .triu_(1);
 }
@@ -198,14 +142,14 @@ at::Tensor ClipModel::run_blocks(at::Tensor x, const std::vector<Block>& blocks,
 }
 
 at::Tensor ClipModel::encode_image(const at::Tensor& images, ClipTrace* trace) const {
-  const int64_t r = config_.image_resolution;
+  const int64_t r = config_.arch.image_resolution;
   if (images.dim() != 4 || images.size(1) != 3 || images.size(2) != r || images.size(3) != r)
     throw Error("CLIP encode_image: expected images [N, 3, " + std::to_string(r) + ", " + std::to_string(r) +
                 "], got " + shape_str(images.sizes()));
   const at::Tensor in = images.to(conv1_w_.options());
-  const at::Tensor patches = at::conv2d(in, conv1_w_, {}, config_.vision_patch_size);  // [N, W, g, g]
+  const at::Tensor patches = at::conv2d(in, conv1_w_, {}, config_.arch.vision_patch_size);  // [N, W, g, g]
   if (trace) (*trace)["visual.conv1"] = patches;
-  const int64_t n = in.size(0), w = config_.vision_width;
+  const int64_t n = in.size(0), w = config_.arch.vision_width;
   at::Tensor x = patches.reshape({n, w, -1}).permute({0, 2, 1});  // [N, g*g, W], row-major grid
   x = at::cat({class_embedding_.view({1, 1, w}).expand({n, 1, w}), x}, 1) + visual_pos_;
   x = layer_norm(x, ln_pre_w_, ln_pre_b_);
@@ -217,12 +161,12 @@ at::Tensor ClipModel::encode_image(const at::Tensor& images, ClipTrace* trace) c
 }
 
 at::Tensor ClipModel::encode_text(const at::Tensor& tokens, ClipTrace* trace) const {
-  if (tokens.dim() != 2 || tokens.size(1) != config_.context_length)
-    throw Error("CLIP encode_text: expected tokens [B, " + std::to_string(config_.context_length) + "], got " +
+  if (tokens.dim() != 2 || tokens.size(1) != config_.arch.context_length)
+    throw Error("CLIP encode_text: expected tokens [B, " + std::to_string(config_.arch.context_length) + "], got " +
                 shape_str(tokens.sizes()));
   const at::Tensor ids = tokens.to(token_embedding_.device(), at::kLong);
-  if (ids.numel() > 0 && (ids.min().item<int64_t>() < 0 || ids.max().item<int64_t>() >= config_.vocab_size))
-    throw Error("CLIP encode_text: token id outside [0, " + std::to_string(config_.vocab_size) + ")");
+  if (ids.numel() > 0 && (ids.min().item<int64_t>() < 0 || ids.max().item<int64_t>() >= config_.arch.vocab_size))
+    throw Error("CLIP encode_text: token id outside [0, " + std::to_string(config_.arch.vocab_size) + ")");
   const int64_t b = ids.size(0);
   at::Tensor x = at::embedding(token_embedding_, ids);  // [B, L, W]
   if (trace) (*trace)["token_embedding"] = x;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "models/clip/clip_config.h"
+#include "models/weights/weight_file.h"
 
 namespace cls::clip {
 
@@ -24,21 +25,14 @@ struct ClipOptions {
   at::ScalarType dtype = at::kFloat;  // kHalf / kBFloat16 only on CUDA
 };
 
-// What the name/shape check needs of one stored tensor.
-struct StoredTensor {
-  std::vector<int64_t> shape;
-  bool floating = true;
-};
-// Compares a weight container's names and shapes with what `config` needs; missing, unexpected and
-// mis-shaped (or non-floating) tensors are listed by name in one cls::Error prefixed by `source`.
-// OpenAI JIT-archive extras (input_resolution, context_length, vocab_size) are ignored.
-void check_clip_weights(const ClipConfig& config, const std::map<std::string, StoredTensor>& stored,
-                        const std::string& source);
-
 class ClipModel {
  public:
-  // Runs check_clip_weights on `state` first; tensors are then converted to the compute
-  // dtype/device (any floating storage dtype: f32/f16/bf16).
+  // `weights` in any layout models/weights knows (OpenAI/OpenCLIP, Hugging Face, JIT archive):
+  // names and shapes are checked against the architecture first (map_weights_strict: every
+  // missing, unexpected, mis-shaped or non-float tensor in one cls::Error naming the file), then
+  // each tensor is read and converted to the compute dtype/device (any float storage: f32/f16/bf16).
+  ClipModel(const ClipConfig& config, const WeightFile& weights, const ClipOptions& options = {});
+  // The same from a canonical name -> tensor map (tests, random weights); `source` names it in errors.
   ClipModel(const ClipConfig& config, const std::map<std::string, at::Tensor>& state,
             const ClipOptions& options = {}, const std::string& source = "CLIP weights");
 
@@ -53,9 +47,6 @@ class ClipModel {
   // CLIP.forward: exp(logit_scale) * normalise(img) @ normalise(txt)^T  -> [N, B] (fp32).
   at::Tensor logits_per_image(const at::Tensor& image_features, const at::Tensor& text_features) const;
   float logit_scale() const { return logit_scale_; }
-
-  // The names and shapes the reference state_dict has for `config`.
-  static std::map<std::string, std::vector<int64_t>> expected_shapes(const ClipConfig& config);
 
  private:
   struct Block {

@@ -35,7 +35,7 @@ at::Tensor normalize_crops(const std::vector<cv::Mat>& crops) {
 at::Tensor encode_regions(const ClipModel& model, const cv::Mat& rgb, const std::vector<cv::Mat>& masks,
                           int batch_size) {
   if (batch_size <= 0) throw Error("encode_regions: batch size must be positive");
-  const int res = model.config().image_resolution;
+  const int res = model.config().arch.image_resolution;
   // Validate up front: nothing may throw inside the parallel loop.
   if (rgb.type() != CV_8UC3) throw Error("encode_regions: the image must be 8-bit RGB (CV_8UC3)");
   for (size_t i = 0; i < masks.size(); ++i)
@@ -50,7 +50,7 @@ at::Tensor encode_regions(const ClipModel& model, const cv::Mat& rgb, const std:
     const at::Tensor pixels = normalize_crops(crops).to(model.options().device);
     parts.push_back(l2_normalize(model.encode_image(pixels).to(at::kFloat)).cpu());
   }
-  if (parts.empty()) return at::empty({0, model.config().embed_dim}, at::kFloat);
+  if (parts.empty()) return at::empty({0, model.config().arch.embed_dim}, at::kFloat);
   return at::cat(parts, 0);
 }
 
