@@ -130,3 +130,13 @@ TEST(ClipRegions, BatchedEncodingMatchesOneCropAtATime) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(ClipRegions, NormaliseRejectsMixedCrops) {
+  EXPECT_THROW(cls::clip::normalize_crops({}), cls::Error);
+  EXPECT_THROW(cls::clip::normalize_crops({cv::Mat::zeros(4, 4, CV_8UC3), cv::Mat::zeros(5, 5, CV_8UC3)}), cls::Error);
+  EXPECT_THROW(cls::clip::normalize_crops({cv::Mat::zeros(4, 4, CV_8U)}), cls::Error);
+}
+
+}  // namespace

@@ -11,13 +11,15 @@ namespace cls::clip {
 at::Tensor normalize_crops(const std::vector<cv::Mat>& crops) {
   if (crops.empty()) throw Error("normalize_crops: no crops");
   const int s = crops[0].rows;
+  for (const cv::Mat& c : crops)
+    if (c.type() != CV_8UC3 || c.rows != s || c.cols != s)
+      throw Error("normalize_crops: every crop must be CV_8UC3 of the same square size");
   at::Tensor out = at::empty({static_cast<int64_t>(crops.size()), 3, s, s}, at::kFloat);
   float* dst = out.data_ptr<float>();
   const int64_t plane = int64_t(s) * s;
 #pragma omp parallel for schedule(static)
   for (int64_t i = 0; i < static_cast<int64_t>(crops.size()); ++i) {
     const cv::Mat& c = crops[i];
-    if (c.type() != CV_8UC3 || c.rows != s || c.cols != s) continue;  // checked below
     float* base = dst + i * 3 * plane;
     for (int y = 0; y < s; ++y) {
       const cv::Vec3b* row = c.ptr<cv::Vec3b>(y);
@@ -26,9 +28,6 @@ at::Tensor normalize_crops(const std::vector<cv::Mat>& crops) {
           base[ch * plane + int64_t(y) * s + x] = (row[x][ch] / 255.0f - kClipMean[ch]) / kClipStd[ch];
     }
   }
-  for (const cv::Mat& c : crops)
-    if (c.type() != CV_8UC3 || c.rows != s || c.cols != s)
-      throw Error("normalize_crops: every crop must be CV_8UC3 of the same square size");
   return out;
 }
 
