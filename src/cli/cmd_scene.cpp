@@ -11,9 +11,11 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "core/error.h"
+#include "core/progress.h"
 #include "core/log.h"
 #include "scene/colmap.h"
 #include "scene/pix4d.h"
+#include "scene/image_loader.h"
 #include "scene/scene.h"
 
 namespace cls {
@@ -28,13 +30,25 @@ int scene_info(int argc, char** argv) {
       .flag("json", "print one JSON object instead of text")
       .option("resolution", "1", "3DGS-style downscaling factor: 1, 2, 4 or 8", "r")
       .option("width", "0", "downscale to this image width instead (0 = off)")
-      .flag("skip-image-check", "do not check that every image file exists");
+      .flag("skip-image-check", "do not check that every image file exists")
+      .flag("verify-images", "decode every image (undistorted, downscaled) to find corrupt files before a long job");
   if (!args.parse(argc, argv)) return 0;
+  if (args.flag_set("verify-images") && args.flag_set("skip-image-check"))
+    throw UsageError("scene info: --verify-images and --skip-image-check exclude each other");
   SceneOptions options;
   options.resolution_factor = args.get_int("resolution");
   options.target_width = args.get_int("width");
   options.check_images = !args.flag_set("skip-image-check");
   const Scene scene = load_scene(args.get("DIR"), options);
+  if (args.flag_set("verify-images")) {
+    // One image at a time: a large scene never sits in memory.
+    ImageLoader loader;
+    Progress progress("verify images", scene.views.size(), "images");
+    for (const SceneView& v : scene.views) {
+      loader.load(v);
+      progress.advance();
+    }
+  }
 
   std::map<CameraKey, int> cameras;
   std::map<std::string, int> models;

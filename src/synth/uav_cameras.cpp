@@ -41,7 +41,7 @@ std::vector<SynthView> make_uav_views(const Box3d& city, const CameraRigOptions&
   std::vector<SynthView> views;
   for (int r = 0; r < rings; ++r) {
     const int first = options.views * r / rings, count = options.views * (r + 1) / rings - first;
-    const double ring_pitch = rings == 1 ? 40.0 : 30.0 + 25.0 * r / (rings - 1);
+    const double ring_pitch = rings == 1 ? 40.0 : 18.0 + 37.0 * r / (rings - 1);
     for (int k = 0; k < count; ++k) {
       const double step = 2 * kPi / count;
       const double azimuth = azimuth0 + step * (k + 0.5 * r / rings) + rng.uniform(-0.25, 0.25) * step;

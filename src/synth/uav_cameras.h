@@ -22,13 +22,15 @@ struct CameraRigOptions {
   uint64_t seed = 1;
 };
 
-// Pitch range of the views (degrees below the horizon).
-constexpr double kMinPitchDeg = 25, kMaxPitchDeg = 60;
+// Pitch range of the views (degrees below the horizon). The lowest ring (18 degrees) puts the top
+// of a 4:3 frame with a 60-degree horizontal FoV (23.4 degrees half vertical FoV) above the
+// horizon, so those views show sky, as low oblique UAV photos do.
+constexpr double kMinPitchDeg = 15, kMaxPitchDeg = 60;
 
 // Square pixels, principal point at the image centre, horizontal field of view `hfov_deg`.
 PinholeCamera pinhole_from_fov(int width, int height, double hfov_deg);
 
-// Views on rings around `city` at several altitudes (pitch 30..55 degrees, jittered by the seed,
+// Views on rings around `city` at several altitudes (pitch 18..55 degrees, jittered by the seed,
 // always within [kMinPitchDeg, kMaxPitchDeg]), looking at the model from a distance at which its
 // bounding sphere fills most of the frame.
 std::vector<SynthView> make_uav_views(const Box3d& city, const CameraRigOptions& options);

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 #include <torch/csrc/jit/serialization/pickle.h>
 #include <torch/script.h>
+#include <caffe2/serialize/inline_container.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -52,6 +53,80 @@ TEST(TorchArchive, ReadsAPickledStateDict) {
   const WeightFile n = read_torch_archive((dir.path / "ckpt.pt").string());
   EXPECT_EQ(n.size(), 3u);
   EXPECT_TRUE(n.contains("model.visual.conv1.weight"));
+}
+
+namespace {
+// Pickle opcodes (protocol 2) for the data.pkl Python's torch.save writes for a state dict:
+// OrderedDict() filled with torch._utils._rebuild_tensor_v2(persistent storage, offset, size,
+// stride, requires_grad, backward_hooks) values.
+std::string pickle_str(const std::string& s) {
+  std::string out = "X";
+  for (int k = 0; k < 4; ++k) out.push_back(static_cast<char>((s.size() >> (8 * k)) & 0xff));
+  return out + s;
+}
+std::string python_tensor_pickle(const std::string& storage_type, const std::string& key, int rows, int cols,
+                                 int storage_numel = -1) {
+  const std::string K = "K";
+  auto int1 = [&](int v) { return K + static_cast<char>(v); };
+  return "ctorch._utils\n_rebuild_tensor_v2\n(" +                                  // GLOBAL, MARK
+         std::string("(") + pickle_str("storage") + "ctorch\n" + storage_type + "\n" +  // persistent id tuple
+         pickle_str(key) + pickle_str("cpu") + int1(storage_numel < 0 ? rows * cols : storage_numel) + "tQ" +            // TUPLE, BINPERSID
+         int1(0) + int1(rows) + int1(cols) + "\x86" + int1(cols) + int1(1) + "\x86" +  // offset, size, stride
+         "\x89" + "ccollections\nOrderedDict\n)R" + "tR";                           // requires_grad, hooks
+}
+}  // namespace
+
+// The layout Python's torch.save (PyTorch >= 1.6) writes, e.g. the official SAM checkpoints:
+// archive/data.pkl with an OrderedDict and archive/data/<key> storages (also half precision).
+// (LibTorch 1.13's own unpickler turns these OrderedDicts into None; our reader must not.)
+void write_archive(const fs::path& p, const std::string& pkl, const std::vector<float>& w, const at::Tensor& h) {
+  caffe2::serialize::PyTorchStreamWriter writer(p.string());
+  writer.writeRecord("data.pkl", pkl.data(), pkl.size());
+  writer.writeRecord("byteorder", "little", 6);
+  writer.writeRecord("data/0", w.data(), w.size() * sizeof(float));
+  writer.writeRecord("data/1", h.data_ptr(), 8);
+  writer.writeEndOfFile();
+}
+
+TEST(TorchArchive, ReadsAPythonStyleStateDict) {
+  TempDir dir;
+  const std::vector<float> w = {1, 2, 3, 4, 5, 6};
+  const at::Tensor h = at::tensor({0.5f, -2.f, 3.f, 4.f}).to(at::kHalf).view({2, 2});
+  // Python batches dict items with MARK ... SETITEMS, and uses SETITEM for a batch of one.
+  std::string pkl = std::string("\x80\x02") + "ccollections\nOrderedDict\nq\x05)Rq\x06(";
+  pkl += pickle_str("image_encoder.pos_embed") + python_tensor_pickle("FloatStorage", "0", 2, 3);
+  pkl += pickle_str("mask_decoder.iou_token.weight") + python_tensor_pickle("HalfStorage", "1", 2, 2);
+  pkl += "u" + pickle_str("extra") + python_tensor_pickle("FloatStorage", "0", 3, 2) + "s.";
+  const fs::path p = dir.path / "sam_like.pth";
+  write_archive(p, pkl, w, h);
+  const WeightFile f = load_weight_file(p.string());
+  EXPECT_EQ(f.names(), (std::vector<std::string>{"extra", "image_encoder.pos_embed", "mask_decoder.iou_token.weight"}));
+  EXPECT_TRUE(at::equal(f.get("image_encoder.pos_embed"), at::tensor(w).view({2, 3})));
+  // size (3, 2) with stride (2, 1) over the same storage
+  EXPECT_TRUE(at::equal(f.get("extra"), at::tensor(w).view({3, 2})));
+  EXPECT_EQ(f.info("mask_decoder.iou_token.weight").dtype, at::kHalf);
+  EXPECT_TRUE(at::equal(f.get("mask_decoder.iou_token.weight"), h));
+
+  // Every truncation of the pickle program is an error naming the file, never a crash.
+  for (size_t n = 0; n + 1 < pkl.size(); ++n) {
+    const fs::path cut = dir.path / "cut.pth";
+    write_archive(cut, pkl.substr(0, n), w, h);
+    try {
+      load_weight_file(cut.string());
+      ADD_FAILURE() << "no error for data.pkl cut at " << n;
+    } catch (const Error& e) {
+      ASSERT_EQ(std::string(e.what()).rfind(cut.string() + ": ", 0), 0u) << e.what();
+    }
+  }
+  // A view reaching beyond its storage (6 floats) is refused before any read.
+  std::string big = std::string("\x80\x02}(") + pickle_str("w") + python_tensor_pickle("FloatStorage", "0", 4, 3, 6) + "u.";
+  write_archive(p, big, w, h);
+  try {
+    load_weight_file(p.string());
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("tensor 'w': view exceeds its storage"), std::string::npos) << e.what();
+  }
 }
 
 // A TorchScript archive (like OpenAI's CLIP .pt): module objects with parameters, buffers and a

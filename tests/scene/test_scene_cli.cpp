@@ -1,6 +1,8 @@
 // The `citylangsplat scene` command, run as a subprocess.
 #include <gtest/gtest.h>
 
+#include <opencv2/imgcodecs.hpp>
+
 #include "cli_runner.h"
 
 #include <cstdio>
@@ -57,6 +59,22 @@ TEST(SceneCli, InfoJson) {
   EXPECT_EQ(run("scene info " + dir.string()).status, 1);
   EXPECT_EQ(run("scene info " + dir.string() + " -r 3").status, 1);
   EXPECT_EQ(run("scene info").status, 2);
+  fs::remove_all(dir);
+}
+
+TEST(SceneCli, VerifyImagesFindsACorruptImageByName) {
+  const fs::path dir = model_scene("cli_verify");
+  fs::create_directories(dir / "images");
+  const cv::Mat grey(300, 400, CV_8UC3, cv::Scalar(90, 90, 90));
+  for (const char* name : {"im1.jpg", "im2.jpg", "im3.jpg"}) ASSERT_TRUE(cv::imwrite((dir / "images" / name).string(), grey));
+  EXPECT_EQ(run("scene info " + dir.string() + " --verify-images").status, 0);
+  // A JPEG cut after its header: the file exists, so only decoding finds the damage.
+  const std::string bytes = read_text_file(dir / "images" / "im2.jpg");
+  write_text_atomic(dir / "images" / "im2.jpg", bytes.substr(0, 40));
+  const test::CliResult r = test::run_cli("scene info " + dir.string() + " --verify-images");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("im2.jpg"), std::string::npos) << r.err;
+  EXPECT_EQ(run("scene info " + dir.string()).status, 0);  // existence only: not decoded
   fs::remove_all(dir);
 }
 

@@ -1,5 +1,7 @@
 // End-to-end tests of `citylangsplat synth` on FZK-Haus LoD3 (tiny: 4 views of 96x72).
 #include <gtest/gtest.h>
+
+#include "synth/file_tree.h"
 #include <sys/wait.h>
 
 #include <cmath>
@@ -39,12 +41,6 @@ std::string tiny(const fs::path& out, int seed = 1) {
          std::to_string(seed);
 }
 
-std::map<std::string, std::string> read_tree(const fs::path& root) {
-  std::map<std::string, std::string> files;
-  for (const auto& e : fs::recursive_directory_iterator(root))
-    if (e.is_regular_file()) files[fs::relative(e.path(), root).string()] = read_text_file(e.path());
-  return files;
-}
 
 }  // namespace
 
@@ -53,7 +49,7 @@ TEST(SynthCli, SameSeedSameBytesOtherSeedDiffers) {
   ASSERT_EQ(synth(tiny(a)), 0);
   ASSERT_EQ(synth(tiny(b)), 0);
   ASSERT_EQ(synth(tiny(c, 2)), 0);
-  const auto fa = read_tree(a), fb = read_tree(b), fc = read_tree(c);
+  const auto fa = test::read_tree(a), fb = test::read_tree(b), fc = test::read_tree(c);
   for (const char* f : {"scene.json", "city/fzk_haus_lod3_v2.gml", "city/transform.json", "images/0000.png",
                         "images/0003.png", "gt/labels/0003.png", "gt/legend.json", "gt/points.ply",
                         "sparse/0/cameras.bin", "sparse/0/images.bin", "sparse/0/points3D.bin",
@@ -174,7 +170,7 @@ TEST(SynthCli, BadInputsFailBeforeWritingAnything) {
   write_text_atomic(out / "precious.txt", "keep");
   EXPECT_EQ(synth(tiny(out) + " --overwrite"), 1);
   EXPECT_EQ(read_text_file(out / "precious.txt"), "keep");
-  EXPECT_EQ(read_tree(out).size(), 1u);
+  EXPECT_EQ(test::read_tree(out).size(), 1u);
   // No staging directory is left behind.
   for (const auto& e : fs::directory_iterator(out.parent_path()))
     EXPECT_EQ(e.path().filename().string().find("." + out.filename().string() + ".synth-tmp"), std::string::npos);

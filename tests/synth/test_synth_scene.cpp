@@ -1,5 +1,7 @@
 // Library-level tests of the synthetic scene generator on a hand-built house (no file reader).
 #include <gtest/gtest.h>
+
+#include "synth/file_tree.h"
 #include <omp.h>
 
 #include <cmath>
@@ -61,12 +63,6 @@ fs::path fresh_dir(const std::string& name) {
   return d;
 }
 
-std::map<std::string, std::string> read_tree(const fs::path& root) {
-  std::map<std::string, std::string> files;
-  for (const auto& e : fs::recursive_directory_iterator(root))
-    if (e.is_regular_file()) files[fs::relative(e.path(), root).string()] = read_text_file(e.path());
-  return files;
-}
 
 }  // namespace
 
@@ -149,7 +145,7 @@ TEST_F(SynthSceneTest, WrittenFilesAreByteIdenticalForTheSameSeed) {
   const fs::path a = fresh_dir("a"), b = fresh_dir("b");
   write_synth_outputs(a.string(), *scene_, *taxonomy_);
   write_synth_outputs(b.string(), render_synth_scene(*mesh_, *taxonomy_, tiny_settings(7)), *taxonomy_);
-  const auto files_a = read_tree(a), files_b = read_tree(b);
+  const auto files_a = test::read_tree(a), files_b = test::read_tree(b);
   EXPECT_EQ(files_a.size(), 6u * 2 + 6 + 2);  // images, labels, sparse/0 x6, legend, points.ply
   EXPECT_TRUE(files_a == files_b);
   EXPECT_TRUE(files_a.count("images/0005.png") && files_a.count("gt/labels/0005.png") &&
