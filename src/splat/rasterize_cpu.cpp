@@ -39,41 +39,77 @@ class StripedLocks {
   std::unique_ptr<std::atomic_flag[]> flags_;
 };
 
+// A tile's Gaussians gathered contiguously (front to back) before its pixels walk them.
+template <class T>
+struct TileGaussian {
+  T mean2d[2];
+  T conic[3];
+  T opacity;
+  T cutoff;  // alpha_cutoff_power(opacity)
+  T depth;
+  int32_t id;
+};
+
+template <class T>
+void gather_tile(const SplatForwardState<T>& st, const T* opacities, int tile, std::vector<TileGaussian<T>>& out) {
+  const int begin = st.tile_begin[tile], end = st.tile_end[tile];
+  out.resize(end - begin);
+  for (int k = begin; k < end; ++k) {
+    const int id = st.ids[k];
+    const ProjectedGaussian<T>& p = st.proj[id];
+    TileGaussian<T>& g = out[k - begin];
+    g.mean2d[0] = p.mean2d[0], g.mean2d[1] = p.mean2d[1];
+    g.conic[0] = p.conic[0], g.conic[1] = p.conic[1], g.conic[2] = p.conic[2];
+    g.opacity = opacities[id];
+    g.cutoff = alpha_cutoff_power(g.opacity);
+    g.depth = p.depth;
+    g.id = id;
+  }
+}
+
 // Front-to-back blending of one tile (renderCUDA). kC > 0 fixes the channel count at compile time
 // (RGB), kC = 0 loops over C at run time (the inner loop over contiguous channels vectorises).
 template <class T, int kC>
 void forward_tile(const SplatCamera<T>& cam, const SplatForwardState<T>& st, const T* opacities,
                   const T* values, int C, const T* bg, int tile, T* image, T* alpha_out, T* depth_out, T* final_T, int32_t* n_contrib,
-                  std::vector<T>& acc) {
+                  std::vector<T>& acc, std::vector<TileGaussian<T>>& list) {
   const int nc = kC > 0 ? kC : C;
   const int tx = tile % cam.tiles_x(), ty = tile / cam.tiles_x();
   const int x0 = tx * kTileSize, y0 = ty * kTileSize;
   const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
-  const int begin = st.tile_begin[tile], end = st.tile_end[tile];
-  acc.resize(nc);
+  gather_tile(st, opacities, tile, list);
+  const int L = static_cast<int>(list.size());
+  // fixed-size channels live on the stack (registers for RGB)
+  T acc_fixed[kC > 0 ? kC : 1];
+  if (kC == 0) acc.resize(nc);
+  T* const acc_p = kC > 0 ? acc_fixed : acc.data();
   for (int py = y0; py < y1; ++py) {
     for (int px = x0; px < x1; ++px) {
       const T cx = T(px) + T(0.5), cy = T(py) + T(0.5);
       T Tr = T(1), d = T(0);
-      std::fill(acc.begin(), acc.end(), T(0));
+      std::fill(acc_p, acc_p + nc, T(0));
       int last = 0;
-      for (int k = begin; k < end; ++k) {
-        const int id = st.ids[k];
-        const ProjectedGaussian<T>& g = st.proj[id];
-        const T a = gaussian_alpha(g.mean2d, g.conic, opacities[id], cx, cy);
+      for (int k = 0; k < L; ++k) {
+        const TileGaussian<T>& g = list[k];
+        const T power = gaussian_power(g.mean2d, g.conic, cx, cy);
+        if (power < g.cutoff) continue;
+        T G;
+        const T a = alpha_from_power(power, g.opacity, G);
         if (a == T(0)) continue;
         const T test_T = Tr * (T(1) - a);
         if (test_T < T(kTransmittanceMin)) break;
         const T w = a * Tr;
-        const T* v = values + static_cast<size_t>(id) * nc;
-        for (int c = 0; c < nc; ++c) acc[c] += w * v[c];
+        const T* v = values + static_cast<size_t>(g.id) * nc;
+        T* ac = acc_p;
+#pragma omp simd
+        for (int c = 0; c < nc; ++c) ac[c] += w * v[c];
         d += w * g.depth;
         Tr = test_T;
-        last = k - begin + 1;
+        last = k + 1;
       }
       const size_t pix = static_cast<size_t>(py) * cam.width + px;
       T* out = image + pix * nc;
-      for (int c = 0; c < nc; ++c) out[c] = acc[c] + (bg ? Tr * bg[c] : T(0));
+      for (int c = 0; c < nc; ++c) out[c] = acc_p[c] + (bg ? Tr * bg[c] : T(0));
       alpha_out[pix] = T(1) - Tr;
       depth_out[pix] = d;
       final_T[pix] = Tr;
@@ -90,19 +126,22 @@ template <class T, int kC>
 void backward_tile(const SplatCamera<T>& cam, const SplatForwardState<T>& st, const T* opacities,
                    const T* values, int C, const T* bg, int tile, const T* dL_dimage, const T* dL_dalpha,
                    const T* dL_ddepth, std::vector<T>& buf, std::vector<T>& rec, std::vector<T>& last_v,
-                   std::vector<uint8_t>& touched, T* geom_grad, T* value_grad, StripedLocks& locks) {
+                   std::vector<uint8_t>& touched, std::vector<TileGaussian<T>>& list, T* geom_grad, T* value_grad,
+                   StripedLocks& locks) {
   const int nc = kC > 0 ? kC : C;
   const int S = 9 + nc;
   const int tx = tile % cam.tiles_x(), ty = tile / cam.tiles_x();
   const int x0 = tx * kTileSize, y0 = ty * kTileSize;
   const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
-  const int begin = st.tile_begin[tile], end = st.tile_end[tile];
-  const int L = end - begin;
+  gather_tile(st, opacities, tile, list);
+  const int L = static_cast<int>(list.size());
   if (L == 0) return;
   buf.assign(static_cast<size_t>(L) * S, T(0));
   touched.assign(L, 0);
-  rec.resize(nc);
-  last_v.resize(nc);
+  T rec_fixed[kC > 0 ? kC : 1];
+  if (kC == 0) rec.resize(nc);
+  T* const rec_p = kC > 0 ? rec_fixed : rec.data();
+  (void)last_v;
   for (int py = y0; py < y1; ++py) {
     for (int px = x0; px < x1; ++px) {
       const size_t pix = static_cast<size_t>(py) * cam.width + px;
@@ -117,13 +156,16 @@ void backward_tile(const SplatCamera<T>& cam, const SplatForwardState<T>& st, co
       if (bg)
         for (int c = 0; c < nc; ++c) bg_dot += bg[c] * dpix[c];
       T Tr = T_final, last_alpha = T(0), rec_d = T(0), last_d = T(0);
-      std::fill(rec.begin(), rec.end(), T(0));
-      std::fill(last_v.begin(), last_v.end(), T(0));
+      std::fill(rec_p, rec_p + nc, T(0));
+      const T* last_v_p = nullptr;  // values of the previous (later) contributor
       for (int k = n - 1; k >= 0; --k) {
-        const int id = st.ids[begin + k];
-        const ProjectedGaussian<T>& g = st.proj[id];
-        const T a = gaussian_alpha(g.mean2d, g.conic, opacities[id], cx, cy);
+        const TileGaussian<T>& g = list[k];
+        const T power = gaussian_power(g.mean2d, g.conic, cx, cy);
+        if (power < g.cutoff) continue;
+        T G;
+        const T a = alpha_from_power(power, g.opacity, G);
         if (a == T(0)) continue;
+        const int id = g.id;
         Tr = Tr / (T(1) - a);
         const T w = a * Tr;
         T* e = buf.data() + static_cast<size_t>(k) * S;
@@ -132,10 +174,16 @@ void backward_tile(const SplatCamera<T>& cam, const SplatForwardState<T>& st, co
         T* ev = e + 9;
         T dL_da = T(0);
         // rec = sum over later Gaussians j of v_j alpha_j prod_{i<l<j} (1 - alpha_l)
+        T* rc = rec_p;
+        if (last_v_p) {
+          const T* lv = last_v_p;
+#pragma omp simd
+          for (int c = 0; c < nc; ++c) rc[c] = last_alpha * lv[c] + (T(1) - last_alpha) * rc[c];
+        }
+        last_v_p = v;
+#pragma omp simd reduction(+ : dL_da)
         for (int c = 0; c < nc; ++c) {
-          rec[c] = last_alpha * last_v[c] + (T(1) - last_alpha) * rec[c];
-          last_v[c] = v[c];
-          dL_da += (v[c] - rec[c]) * dpix[c];
+          dL_da += (v[c] - rc[c]) * dpix[c];
           ev[c] += w * dpix[c];
         }
         rec_d = last_alpha * last_d + (T(1) - last_alpha) * rec_d;
@@ -146,18 +194,19 @@ void backward_tile(const SplatCamera<T>& cam, const SplatForwardState<T>& st, co
         // alpha = 1 - T_final and the background term T_final * bg: dT_final/dalpha = -T_final/(1-alpha)
         dL_da += (dA - bg_dot) * T_final / (T(1) - a);
         last_alpha = a;
-        e[7] += gaussian_alpha_backward(g.mean2d, g.conic, opacities[id], cx, cy, dL_da, e, e + 2, e + 4);
+        e[7] += gaussian_alpha_backward(g.mean2d, g.conic, g.opacity, cx, cy, G, dL_da, e, e + 2, e + 4);
       }
     }
   }
   for (int k = 0; k < L; ++k) {
     if (!touched[k]) continue;
-    const int id = st.ids[begin + k];
+    const int id = list[k].id;
     const T* e = buf.data() + static_cast<size_t>(k) * S;
     locks.lock(id);
     T* gg = geom_grad + static_cast<size_t>(id) * 9;
     for (int c = 0; c < 9; ++c) gg[c] += e[c];
     T* vg = value_grad + static_cast<size_t>(id) * nc;
+#pragma omp simd
     for (int c = 0; c < nc; ++c) vg[c] += e[9 + c];
     locks.unlock(id);
   }
@@ -241,12 +290,13 @@ void rasterize_forward_cpu(const SplatCamera<T>& cam, const SplatInputs<T>& in, 
 #pragma omp parallel
   {
     std::vector<T> acc;
+    std::vector<TileGaussian<T>> list;
 #pragma omp for schedule(dynamic, 1)
     for (int t = 0; t < n_tiles; ++t) {
       switch (C) {
-        case 1: forward_tile<T, 1>(cam, st, in.opacities, values, C, in.background, t, image, alpha, depth, st.final_T.data(), st.n_contrib.data(), acc); break;
-        case 3: forward_tile<T, 3>(cam, st, in.opacities, values, C, in.background, t, image, alpha, depth, st.final_T.data(), st.n_contrib.data(), acc); break;
-        default: forward_tile<T, 0>(cam, st, in.opacities, values, C, in.background, t, image, alpha, depth, st.final_T.data(), st.n_contrib.data(), acc); break;
+        case 1: forward_tile<T, 1>(cam, st, in.opacities, values, C, in.background, t, image, alpha, depth, st.final_T.data(), st.n_contrib.data(), acc, list); break;
+        case 3: forward_tile<T, 3>(cam, st, in.opacities, values, C, in.background, t, image, alpha, depth, st.final_T.data(), st.n_contrib.data(), acc, list); break;
+        default: forward_tile<T, 0>(cam, st, in.opacities, values, C, in.background, t, image, alpha, depth, st.final_T.data(), st.n_contrib.data(), acc, list); break;
       }
     }
   }
@@ -281,12 +331,13 @@ void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>
   {
     std::vector<T> buf, rec, last_v;
     std::vector<uint8_t> touched;
+    std::vector<TileGaussian<T>> list;
 #pragma omp for schedule(dynamic, 1)
     for (int t = 0; t < n_tiles; ++t) {
       switch (C) {
-        case 1: backward_tile<T, 1>(cam, st, in.opacities, values, C, in.background, t, dL_dimage, dL_dalpha, dL_ddepth, buf, rec, last_v, touched, geom.data(), value_grad, locks); break;
-        case 3: backward_tile<T, 3>(cam, st, in.opacities, values, C, in.background, t, dL_dimage, dL_dalpha, dL_ddepth, buf, rec, last_v, touched, geom.data(), value_grad, locks); break;
-        default: backward_tile<T, 0>(cam, st, in.opacities, values, C, in.background, t, dL_dimage, dL_dalpha, dL_ddepth, buf, rec, last_v, touched, geom.data(), value_grad, locks); break;
+        case 1: backward_tile<T, 1>(cam, st, in.opacities, values, C, in.background, t, dL_dimage, dL_dalpha, dL_ddepth, buf, rec, last_v, touched, list, geom.data(), value_grad, locks); break;
+        case 3: backward_tile<T, 3>(cam, st, in.opacities, values, C, in.background, t, dL_dimage, dL_dalpha, dL_ddepth, buf, rec, last_v, touched, list, geom.data(), value_grad, locks); break;
+        default: backward_tile<T, 0>(cam, st, in.opacities, values, C, in.background, t, dL_dimage, dL_dalpha, dL_ddepth, buf, rec, last_v, touched, list, geom.data(), value_grad, locks); break;
       }
     }
   }
