@@ -47,8 +47,42 @@ struct TileGaussian {
   T opacity;
   T cutoff;  // alpha_cutoff_power(opacity)
   T depth;
+  T box[4];  // xmin, xmax, ymin, ymax: a conservative bound of where power >= cutoff
   int32_t id;
 };
+
+// Pixels walk only the Gaussians whose cutoff ellipse box overlaps their 4x4 sub-tile: the others
+// would all be skipped by the cutoff test, so results are the same, with ~16x fewer evaluations.
+constexpr int kSubTile = 4;
+
+// Bounding box of {d : -0.5 d^T Q d >= cutoff}: half-widths sqrt(R (Q^-1)_xx), sqrt(R (Q^-1)_yy) with
+// R = -2 cutoff, widened by a margin far beyond rounding.
+template <class T>
+void cutoff_box(TileGaussian<T>& g) {
+  const T R = T(-2) * g.cutoff;
+  const T det = g.conic[0] * g.conic[2] - g.conic[1] * g.conic[1];
+  if (!(R > T(0)) || !(det > T(0))) {
+    g.box[0] = g.box[2] = T(1e30), g.box[1] = g.box[3] = T(-1e30);  // never passes
+    return;
+  }
+  const T hx = std::sqrt(R * g.conic[2] / det) * T(1.001) + T(0.01);
+  const T hy = std::sqrt(R * g.conic[0] / det) * T(1.001) + T(0.01);
+  g.box[0] = g.mean2d[0] - hx, g.box[1] = g.mean2d[0] + hx;
+  g.box[2] = g.mean2d[1] - hy, g.box[3] = g.mean2d[1] + hy;
+}
+
+// Indices into the tile list of the Gaussians that can reach pixel centres of the sub-tile whose
+// first pixel is (sx, sy), in list (depth) order.
+template <class T>
+void subtile_list(const std::vector<TileGaussian<T>>& list, int sx, int sy, std::vector<int32_t>& out) {
+  const T x_lo = T(sx) + T(0.5), x_hi = T(sx + kSubTile) - T(0.5);
+  const T y_lo = T(sy) + T(0.5), y_hi = T(sy + kSubTile) - T(0.5);
+  out.clear();
+  for (int k = 0; k < static_cast<int>(list.size()); ++k) {
+    const T* b = list[k].box;
+    if (b[1] >= x_lo && b[0] <= x_hi && b[3] >= y_lo && b[2] <= y_hi) out.push_back(k);
+  }
+}
 
 template <class T>
 void gather_tile(const SplatForwardState<T>& st, const T* opacities, int tile, std::vector<TileGaussian<T>>& out) {
@@ -64,6 +98,7 @@ void gather_tile(const SplatForwardState<T>& st, const T* opacities, int tile, s
     g.cutoff = alpha_cutoff_power(g.opacity);
     g.depth = p.depth;
     g.id = id;
+    cutoff_box(g);
   }
 }
 
@@ -72,25 +107,28 @@ void gather_tile(const SplatForwardState<T>& st, const T* opacities, int tile, s
 template <class T, int kC>
 void forward_tile(const SplatCamera<T>& cam, const SplatForwardState<T>& st, const T* opacities,
                   const T* values, int C, const T* bg, int tile, T* image, T* alpha_out, T* depth_out, T* final_T, int32_t* n_contrib,
-                  std::vector<T>& acc, std::vector<TileGaussian<T>>& list) {
+                  std::vector<T>& acc, std::vector<TileGaussian<T>>& list, std::vector<int32_t>& sub) {
   const int nc = kC > 0 ? kC : C;
   const int tx = tile % cam.tiles_x(), ty = tile / cam.tiles_x();
   const int x0 = tx * kTileSize, y0 = ty * kTileSize;
   const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
   gather_tile(st, opacities, tile, list);
-  const int L = static_cast<int>(list.size());
   // fixed-size channels live on the stack (registers for RGB)
   T acc_fixed[kC > 0 ? kC : 1];
   if (kC == 0) acc.resize(nc);
   T* const acc_p = kC > 0 ? acc_fixed : acc.data();
-  for (int py = y0; py < y1; ++py) {
-    for (int px = x0; px < x1; ++px) {
+  for (int sy = y0; sy < y1; sy += kSubTile)
+  for (int sx = x0; sx < x1; sx += kSubTile) {
+  subtile_list(list, sx, sy, sub);
+  const int L = static_cast<int>(sub.size());
+  for (int py = sy; py < std::min(sy + kSubTile, y1); ++py) {
+    for (int px = sx; px < std::min(sx + kSubTile, x1); ++px) {
       const T cx = T(px) + T(0.5), cy = T(py) + T(0.5);
       T Tr = T(1), d = T(0);
       std::fill(acc_p, acc_p + nc, T(0));
       int last = 0;
       for (int k = 0; k < L; ++k) {
-        const TileGaussian<T>& g = list[k];
+        const TileGaussian<T>& g = list[sub[k]];
         const T power = gaussian_power(g.mean2d, g.conic, cx, cy);
         if (power < g.cutoff) continue;
         T G;
@@ -113,8 +151,9 @@ void forward_tile(const SplatCamera<T>& cam, const SplatForwardState<T>& st, con
       alpha_out[pix] = T(1) - Tr;
       depth_out[pix] = d;
       final_T[pix] = Tr;
-      n_contrib[pix] = last;
+      n_contrib[pix] = last;  // entries of the sub-tile list walked
     }
+  }
   }
 }
 
@@ -125,8 +164,9 @@ void forward_tile(const SplatCamera<T>& cam, const SplatForwardState<T>& st, con
 template <class T, int kC>
 void backward_tile(const SplatCamera<T>& cam, const SplatForwardState<T>& st, const T* opacities,
                    const T* values, int C, const T* bg, int tile, const T* dL_dimage, const T* dL_dalpha,
-                   const T* dL_ddepth, std::vector<T>& buf, std::vector<T>& rec, std::vector<T>& last_v,
-                   std::vector<uint8_t>& touched, std::vector<TileGaussian<T>>& list, T* geom_grad, T* value_grad,
+                   const T* dL_ddepth, std::vector<T>& buf,
+                   std::vector<uint8_t>& touched, std::vector<TileGaussian<T>>& list, std::vector<int32_t>& sub,
+                   T* geom_grad, T* value_grad,
                    StripedLocks& locks) {
   const int nc = kC > 0 ? kC : C;
   const int S = 9 + nc;
@@ -138,12 +178,11 @@ void backward_tile(const SplatCamera<T>& cam, const SplatForwardState<T>& st, co
   if (L == 0) return;
   buf.assign(static_cast<size_t>(L) * S, T(0));
   touched.assign(L, 0);
-  T rec_fixed[kC > 0 ? kC : 1];
-  if (kC == 0) rec.resize(nc);
-  T* const rec_p = kC > 0 ? rec_fixed : rec.data();
-  (void)last_v;
-  for (int py = y0; py < y1; ++py) {
-    for (int px = x0; px < x1; ++px) {
+  for (int sy = y0; sy < y1; sy += kSubTile)
+  for (int sx = x0; sx < x1; sx += kSubTile) {
+  subtile_list(list, sx, sy, sub);
+  for (int py = sy; py < std::min(sy + kSubTile, y1); ++py) {
+    for (int px = sx; px < std::min(sx + kSubTile, x1); ++px) {
       const size_t pix = static_cast<size_t>(py) * cam.width + px;
       const int n = st.n_contrib[pix];
       if (n == 0) continue;
@@ -156,9 +195,9 @@ void backward_tile(const SplatCamera<T>& cam, const SplatForwardState<T>& st, co
       if (bg)
         for (int c = 0; c < nc; ++c) bg_dot += bg[c] * dpix[c];
       T Tr = T_final, last_alpha = T(0), rec_d = T(0), last_d = T(0);
-      std::fill(rec_p, rec_p + nc, T(0));
-      const T* last_v_p = nullptr;  // values of the previous (later) contributor
-      for (int k = n - 1; k >= 0; --k) {
+      T rec_dot = T(0), last_v_dot = T(0);
+      for (int j = n - 1; j >= 0; --j) {
+        const int k = sub[j];
         const TileGaussian<T>& g = list[k];
         const T power = gaussian_power(g.mean2d, g.conic, cx, cy);
         if (power < g.cutoff) continue;
@@ -172,20 +211,18 @@ void backward_tile(const SplatCamera<T>& cam, const SplatForwardState<T>& st, co
         touched[k] = 1;
         const T* v = values + static_cast<size_t>(id) * nc;
         T* ev = e + 9;
-        T dL_da = T(0);
-        // rec = sum over later Gaussians j of v_j alpha_j prod_{i<l<j} (1 - alpha_l)
-        T* rc = rec_p;
-        if (last_v_p) {
-          const T* lv = last_v_p;
-#pragma omp simd
-          for (int c = 0; c < nc; ++c) rc[c] = last_alpha * lv[c] + (T(1) - last_alpha) * rc[c];
-        }
-        last_v_p = v;
-#pragma omp simd reduction(+ : dL_da)
+        // dC/dalpha_i . dL/dC = T_i (v_i - rec_i) . dpix, where rec_i = sum over later contributors j of
+        // v_j alpha_j prod_{i<l<j} (1 - alpha_l). rec is linear in the values, so only its dot product
+        // with dpix is carried: rec_dot_i = a_{i+1} (v_{i+1} . dpix) + (1 - a_{i+1}) rec_dot_{i+1}.
+        T v_dot = T(0);
+#pragma omp simd reduction(+ : v_dot)
         for (int c = 0; c < nc; ++c) {
-          dL_da += (v[c] - rc[c]) * dpix[c];
+          v_dot += v[c] * dpix[c];
           ev[c] += w * dpix[c];
         }
+        rec_dot = last_alpha * last_v_dot + (T(1) - last_alpha) * rec_dot;
+        last_v_dot = v_dot;
+        T dL_da = v_dot - rec_dot;
         rec_d = last_alpha * last_d + (T(1) - last_alpha) * rec_d;
         last_d = g.depth;
         dL_da += (g.depth - rec_d) * dD;
@@ -197,6 +234,7 @@ void backward_tile(const SplatCamera<T>& cam, const SplatForwardState<T>& st, co
         e[7] += gaussian_alpha_backward(g.mean2d, g.conic, g.opacity, cx, cy, G, dL_da, e, e + 2, e + 4);
       }
     }
+  }
   }
   for (int k = 0; k < L; ++k) {
     if (!touched[k]) continue;
@@ -291,12 +329,13 @@ void rasterize_forward_cpu(const SplatCamera<T>& cam, const SplatInputs<T>& in, 
   {
     std::vector<T> acc;
     std::vector<TileGaussian<T>> list;
+    std::vector<int32_t> sub;
 #pragma omp for schedule(dynamic, 1)
     for (int t = 0; t < n_tiles; ++t) {
       switch (C) {
-        case 1: forward_tile<T, 1>(cam, st, in.opacities, values, C, in.background, t, image, alpha, depth, st.final_T.data(), st.n_contrib.data(), acc, list); break;
-        case 3: forward_tile<T, 3>(cam, st, in.opacities, values, C, in.background, t, image, alpha, depth, st.final_T.data(), st.n_contrib.data(), acc, list); break;
-        default: forward_tile<T, 0>(cam, st, in.opacities, values, C, in.background, t, image, alpha, depth, st.final_T.data(), st.n_contrib.data(), acc, list); break;
+        case 1: forward_tile<T, 1>(cam, st, in.opacities, values, C, in.background, t, image, alpha, depth, st.final_T.data(), st.n_contrib.data(), acc, list, sub); break;
+        case 3: forward_tile<T, 3>(cam, st, in.opacities, values, C, in.background, t, image, alpha, depth, st.final_T.data(), st.n_contrib.data(), acc, list, sub); break;
+        default: forward_tile<T, 0>(cam, st, in.opacities, values, C, in.background, t, image, alpha, depth, st.final_T.data(), st.n_contrib.data(), acc, list, sub); break;
       }
     }
   }
@@ -329,15 +368,16 @@ void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>
   StripedLocks locks;
 #pragma omp parallel
   {
-    std::vector<T> buf, rec, last_v;
+    std::vector<T> buf;
     std::vector<uint8_t> touched;
     std::vector<TileGaussian<T>> list;
+    std::vector<int32_t> sub;
 #pragma omp for schedule(dynamic, 1)
     for (int t = 0; t < n_tiles; ++t) {
       switch (C) {
-        case 1: backward_tile<T, 1>(cam, st, in.opacities, values, C, in.background, t, dL_dimage, dL_dalpha, dL_ddepth, buf, rec, last_v, touched, list, geom.data(), value_grad, locks); break;
-        case 3: backward_tile<T, 3>(cam, st, in.opacities, values, C, in.background, t, dL_dimage, dL_dalpha, dL_ddepth, buf, rec, last_v, touched, list, geom.data(), value_grad, locks); break;
-        default: backward_tile<T, 0>(cam, st, in.opacities, values, C, in.background, t, dL_dimage, dL_dalpha, dL_ddepth, buf, rec, last_v, touched, list, geom.data(), value_grad, locks); break;
+        case 1: backward_tile<T, 1>(cam, st, in.opacities, values, C, in.background, t, dL_dimage, dL_dalpha, dL_ddepth, buf, touched, list, sub, geom.data(), value_grad, locks); break;
+        case 3: backward_tile<T, 3>(cam, st, in.opacities, values, C, in.background, t, dL_dimage, dL_dalpha, dL_ddepth, buf, touched, list, sub, geom.data(), value_grad, locks); break;
+        default: backward_tile<T, 0>(cam, st, in.opacities, values, C, in.background, t, dL_dimage, dL_dalpha, dL_ddepth, buf, touched, list, sub, geom.data(), value_grad, locks); break;
       }
     }
   }
