@@ -84,8 +84,8 @@ SceneArrays<T> scene_arrays(const RandomScene& s) {
   return a;
 }
 
-template <class T>
-SplatCamera<T> cast_camera(const SplatCamera<double>& c) {
+template <class T, class U>
+SplatCamera<T> cast_camera(const SplatCamera<U>& c) {
   SplatCamera<T> r;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) r.R.m[i][j] = T(c.R.m[i][j]);

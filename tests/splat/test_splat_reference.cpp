@@ -80,5 +80,60 @@ TEST(SplatReference, PixelCentreConvention) {
   EXPECT_NEAR(depth[11 * 40 + 20], 0.9f * z, 1e-5);
 }
 
+// Hand-computed blending at the centre of pixel (10, 10) where every Gaussian peaks (power = 0).
+struct StackedGaussians {
+  std::vector<float> means, scales, quats, opacities, values;
+  float background = 1000;
+  void add(float depth, float opacity, float value) {
+    const float u = 10.5f, v = 10.5f, f = 40, c = 8;  // camera: f = 40, principal point (8, 8)
+    for (float m : {(u - c) * depth / f, (v - c) * depth / f, depth}) means.push_back(m);
+    for (int k = 0; k < 3; ++k) scales.push_back(0.05f * depth);
+    for (float q : {1.f, 0.f, 0.f, 0.f}) quats.push_back(q);
+    opacities.push_back(opacity);
+    values.push_back(value);
+  }
+  // Returns (fast path, reference) values at pixel (10, 10).
+  std::pair<float, double> render() const {
+    SplatCamera<float> cam;
+    cam.width = cam.height = 24, cam.fx = cam.fy = 40, cam.cx = cam.cy = 8;
+    SplatInputs<float> in;
+    in.n = static_cast<int>(opacities.size());
+    in.means = means.data(), in.scales = scales.data(), in.quats = quats.data(), in.opacities = opacities.data();
+    in.features = values.data(), in.channels = 1, in.background = &background;
+    std::vector<float> image(24 * 24), alpha(24 * 24), depth(24 * 24);
+    SplatForwardState<float> st;
+    rasterize_forward_cpu(cam, in, image.data(), alpha.data(), depth.data(), st);
+    auto d = [](const std::vector<float>& v) { return std::vector<double>(v.begin(), v.end()); };
+    const auto md = d(means), sd = d(scales), qd = d(quats), od = d(opacities), vd = d(values);
+    const double bg = background;
+    SplatInputs<double> ind;
+    ind.n = in.n, ind.means = md.data(), ind.scales = sd.data(), ind.quats = qd.data(), ind.opacities = od.data();
+    ind.features = vd.data(), ind.channels = 1, ind.background = &bg;
+    const ReferenceImage ref = reference_render(test::cast_camera<double>(cam), ind);
+    return {image[10 * 24 + 10], ref.image[10 * 24 + 10]};
+  }
+};
+
+TEST(SplatReference, AlphaIsClampedAt099) {
+  StackedGaussians s;
+  s.add(3, 1.0f, 1);
+  const auto [fast, ref] = s.render();
+  EXPECT_NEAR(fast, 0.99 * 1 + 0.01 * 1000, 1e-3);
+  EXPECT_NEAR(ref, 0.99 * 1 + 0.01 * 1000, 1e-9);
+}
+
+TEST(SplatReference, BlendingStopsBeforeTransmittanceFallsBelow1e4) {
+  // alpha 0.98 three times: T = 0.02, 4e-4, then 8e-6 < 1e-4, so the third is not blended and the
+  // background is weighted by T = 4e-4.
+  StackedGaussians s;
+  s.add(2, 0.98f, 1);
+  s.add(3, 0.98f, 10);
+  s.add(4, 0.98f, 100);
+  const double expected = 0.98 * 1 + 0.02 * 0.98 * 10 + 0.02 * 0.02 * 1000;
+  const auto [fast, ref] = s.render();
+  EXPECT_NEAR(fast, expected, 1e-4);
+  EXPECT_NEAR(ref, expected, 1e-5);  // opacities are the float 0.98f
+}
+
 }  // namespace
 }  // namespace cls
