@@ -5,6 +5,12 @@
 #include "core/error.h"
 #include "splat/rasterize_cpu.h"
 
+#ifdef CLS_WITH_CUDA
+#include <c10/cuda/CUDAStream.h>
+
+#include "splat/rasterize_cuda.h"
+#endif
+
 namespace cls {
 namespace {
 
@@ -33,6 +39,35 @@ SplatInputs<T> make_inputs(const at::Tensor& means, const at::Tensor& scales, co
   return in;
 }
 
+#ifdef CLS_WITH_CUDA
+// What a CUDA forward keeps for its backward.
+struct CudaSavedState {
+  CudaForwardStatePtr state;
+  SplatCamera<float> cam;
+};
+
+CudaSplatArgs cuda_args(const SplatCamera<float>& cam, const at::Tensor& means, const at::Tensor& scales,
+                        const at::Tensor& quats, const at::Tensor& opacities, const at::Tensor& values, int sh_degree,
+                        const at::Tensor& background) {
+  CudaSplatArgs a;
+  a.cam = cam;
+  a.n = static_cast<int>(means.size(0));
+  a.means = means.data_ptr<float>(), a.scales = scales.data_ptr<float>(), a.quats = quats.data_ptr<float>();
+  a.opacities = opacities.data_ptr<float>();
+  if (sh_degree >= 0) {
+    a.sh = values.data_ptr<float>(), a.sh_degree = sh_degree, a.channels = 3;
+  } else {
+    a.features = values.data_ptr<float>(), a.channels = static_cast<int>(values.size(1));
+  }
+  a.background = background.defined() ? background.data_ptr<float>() : nullptr;
+  return a;
+}
+
+void check_cuda(int rc, const char* what) {
+  if (rc != 0) throw Error(std::string("rasterize: CUDA error ") + std::to_string(rc) + " in " + what);
+}
+#endif
+
 class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
  public:
   // values: SH N x (degree+1)^2 x 3 when sh_degree >= 0, else features N x C. All contiguous, one dtype.
@@ -49,6 +84,19 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
     at::Tensor radii = torch::zeros({means.size(0)}, opts.dtype(torch::kInt32));
     at::Tensor bg = settings->background.defined() ? settings->background.to(opts).contiguous() : at::Tensor();
     at::Tensor holder;
+    if (means.is_cuda()) {
+#ifdef CLS_WITH_CUDA
+      auto* saved = new CudaSavedState();
+      holder = torch::from_blob(saved, {1}, [](void* p) { delete static_cast<CudaSavedState*>(p); },
+                                torch::TensorOptions().dtype(torch::kUInt8));
+      saved->cam = make_splat_camera<float>(cam, settings->pose);
+      CudaSplatArgs a = cuda_args(saved->cam, means, scales, quats, opacities, values, int(sh_degree), bg);
+      a.image = image.data_ptr<float>(), a.alpha = alpha.data_ptr<float>(), a.depth = depth.data_ptr<float>();
+      void* stream = c10::cuda::getCurrentCUDAStream().stream();
+      check_cuda(rasterize_forward_cuda(a, saved->state, stream), "forward");
+      check_cuda(cuda_forward_radii(*saved->state, radii.data_ptr<int32_t>(), stream), "radii");
+#endif
+    } else {
     AT_DISPATCH_FLOATING_TYPES(means.scalar_type(), "rasterize_forward", [&] {
       using T = scalar_t;
       auto* state = new SplatForwardState<T>();
@@ -61,6 +109,7 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
       int32_t* r = radii.data_ptr<int32_t>();
       for (int i = 0; i < in.n; ++i) r[i] = state->proj[i].visible ? state->proj[i].radius : 0;
     });
+    }
     ctx->save_for_backward({means, scales, quats, opacities, values});
     ctx->saved_data["state"] = holder;
     ctx->saved_data["sh_degree"] = sh_degree;
@@ -85,6 +134,21 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
                d_quats = torch::zeros_like(quats), d_opac = torch::zeros_like(opacities),
                d_values = torch::zeros_like(values), d_mean2d = torch::zeros({means.size(0), 2}, means.options()),
                d_abs = torch::zeros({means.size(0), 2}, means.options());
+    if (means.is_cuda()) {
+#ifdef CLS_WITH_CUDA
+      const auto& saved_state = *static_cast<const CudaSavedState*>(state_ptr);
+      const CudaSplatArgs a = cuda_args(saved_state.cam, means, scales, quats, opacities, values, sh_degree, bg);
+      CudaSplatGrads g;
+      g.means = d_means.data_ptr<float>(), g.scales = d_scales.data_ptr<float>(), g.quats = d_quats.data_ptr<float>();
+      g.opacities = d_opac.data_ptr<float>();
+      (sh_degree >= 0 ? g.sh : g.features) = d_values.data_ptr<float>();
+      g.mean2d = d_mean2d.data_ptr<float>(), g.mean2d_abs = d_abs.data_ptr<float>();
+      auto ptr = [](const at::Tensor& t) -> const float* { return t.defined() ? t.data_ptr<float>() : nullptr; };
+      check_cuda(rasterize_backward_cuda(a, *saved_state.state, ptr(g_image), ptr(g_alpha), ptr(g_depth), g,
+                                         c10::cuda::getCurrentCUDAStream().stream()),
+                 "backward");
+#endif
+    } else {
     AT_DISPATCH_FLOATING_TYPES(means.scalar_type(), "rasterize_backward", [&] {
       using T = scalar_t;
       const auto& state = *static_cast<const SplatForwardState<T>*>(state_ptr);
@@ -97,6 +161,7 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
       auto ptr = [](const at::Tensor& t) -> const T* { return t.defined() ? t.data_ptr<T>() : nullptr; };
       rasterize_backward_cpu(in, state, ptr(g_image), ptr(g_alpha), ptr(g_depth), g);
     });
+    }
     if (abs_grad.defined()) abs_grad.add_(d_abs.to(abs_grad.scalar_type()));
     if (!ctx->saved_data["has_means2d"].toBool()) d_mean2d = at::Tensor();
     return {d_means, d_scales, d_quats, d_opac, d_values, d_mean2d, at::Tensor(), at::Tensor()};
@@ -110,12 +175,17 @@ void check_inputs(const at::Tensor& means, const at::Tensor& scales, const at::T
     if (!t.defined() || t.sizes() != at::IntArrayRef(shape))
       throw Error(std::string("rasterize: ") + name + " must have shape " + c10::str(shape) +
                   (t.defined() ? ", got " + c10::str(t.sizes()) : ", got undefined"));
-    if (t.scalar_type() != means.scalar_type() || !t.device().is_cpu())
-      throw Error(std::string("rasterize: ") + name + " must be a CPU tensor of the means' dtype");
+    if (t.scalar_type() != means.scalar_type() || t.device() != means.device())
+      throw Error(std::string("rasterize: ") + name + " must have the means' dtype and device");
   };
   if (means.dim() != 2) throw Error("rasterize: means must be N x 3");
   if (means.scalar_type() != torch::kFloat32 && means.scalar_type() != torch::kFloat64)
     throw Error("rasterize: tensors must be float32 or float64");
+#ifdef CLS_WITH_CUDA
+  if (means.is_cuda() && means.scalar_type() != torch::kFloat32) throw Error("rasterize: CUDA tensors must be float32");
+#else
+  if (!means.device().is_cpu()) throw Error("rasterize: this build has no CUDA backend; use CPU tensors");
+#endif
   need(means, "means", {n, 3});
   need(scales, "scales", {n, 3});
   need(quats, "quats", {n, 4});

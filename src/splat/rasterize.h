@@ -1,5 +1,7 @@
 #pragma once
-// The rasterizer as LibTorch autograd functions (CPU, float32 or float64 tensors).
+// The rasterizer as LibTorch autograd functions: CPU tensors (float32 or float64) run
+// rasterize_cpu.h; CUDA float32 tensors run the kernels of rasterize_cuda.h where the build links the
+// CUDA backend (CLS_WITH_CUDA). All tensors on the means' device.
 //
 // Inputs are activated parameters as in 3DGS's GaussianRasterizer: means N x 3, scales N x 3 (> 0),
 // quats N x 4 (w, x, y, z; normalised inside, gradients flow to the raw values), opacities N,

@@ -41,6 +41,27 @@ using CudaForwardStatePtr = std::unique_ptr<CudaForwardState, CudaForwardStateDe
 // cudaError_t met (0 = success); `state` receives the buffers.
 int rasterize_forward_cuda(const CudaSplatArgs& args, CudaForwardStatePtr& state, void* stream = nullptr);
 
+// Gradients of the backward pass, device memory, zero-initialised by the caller; shapes as the inputs
+// (sh or features by the path of the forward), mean2d and mean2d_abs N x 2. Null entries are skipped.
+struct CudaSplatGrads {
+  float* means = nullptr;
+  float* scales = nullptr;
+  float* quats = nullptr;
+  float* opacities = nullptr;
+  float* sh = nullptr;
+  float* features = nullptr;
+  float* mean2d = nullptr;
+  float* mean2d_abs = nullptr;
+};
+
+// Backward of the forward that produced `state` with the same `args` (its output pointers are not
+// read). dL_dimage H x W x C; dL_dalpha, dL_ddepth H x W or null. The math is the CPU path's (shared
+// headers); the scheduling is the original's (per-pixel backward walk, atomic accumulation), written
+// for correctness first: not yet optimised for many channels.
+int rasterize_backward_cuda(const CudaSplatArgs& args, const CudaForwardState& state, const float* dL_dimage,
+                            const float* dL_dalpha, const float* dL_ddepth, const CudaSplatGrads& grads,
+                            void* stream = nullptr);
+
 // Screen radii (N int32, 0 where culled) of the last forward, copied to device memory `radii`.
 int cuda_forward_radii(const CudaForwardState& state, int32_t* radii, void* stream = nullptr);
 

@@ -8,23 +8,10 @@
 
 #include "splat/blend_pixel.h"
 #include "splat/rasterize_cuda.h"
+#include "splat/rasterize_cuda_state.cuh"
 #include "splat/sh.h"
 
 namespace cls {
-
-struct CudaForwardState {
-  int n = 0, width = 0, height = 0, channels = 0;
-  int64_t instances = 0;
-  ProjectedGaussian<float>* proj = nullptr;  // N
-  float* colors = nullptr;                   // N x 3 (SH path)
-  uint8_t* clamped = nullptr;                // N x 3 (SH path)
-  uint32_t* tiles_touched = nullptr;         // N, then inclusive prefix sums
-  uint64_t* keys = nullptr;                  // instances, sorted (tile << 32 | depth bits)
-  uint32_t* ids = nullptr;                   // instances, sorted Gaussian ids
-  uint2* ranges = nullptr;                   // per tile [begin, end)
-  float* final_T = nullptr;                  // H x W
-  int32_t* n_contrib = nullptr;              // H x W
-};
 
 void CudaForwardStateDeleter::operator()(CudaForwardState* s) const {
   if (!s) return;
