@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <unistd.h>
+
 #include "core/error.h"
 #include "splat/ply_gaussians.h"
 #include "splat/rasterize.h"
@@ -17,11 +19,22 @@ namespace {
 
 namespace fs = std::filesystem;
 
+fs::path temp_dir() { return fs::temp_directory_path() / ("cls_splat_ply_" + std::to_string(::getpid())); }
+
 fs::path temp_path(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("cls_splat_ply_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
+  fs::create_directories(temp_dir());
+  return temp_dir() / name;
 }
+
+// Removes the test's scratch files when the test binary ends.
+class TempDirCleanup : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(temp_dir(), ec);
+  }
+};
+const auto* const kCleanup = ::testing::AddGlobalTestEnvironment(new TempDirCleanup);
 
 GaussianModel random_model(int64_t n, int degree, int features) {
   torch::manual_seed(7 + degree);
