@@ -1,0 +1,139 @@
+// CPU rasterizer speed: forward and forward+backward ms per iteration for a fixed random scene
+// (default 200k Gaussians, 800x600) with RGB from SH degree 3 and with 128 feature channels.
+// Usage: bench_splat [--threads N] [--gaussians N] [--width W] [--height H] [--iters N]
+// Figures go to docs/benchmarks.md.
+#include <omp.h>
+#include <time.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include "cli/args.h"
+#include "core/error.h"
+#include "splat/rasterize_cpu.h"
+
+namespace cls {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// CPU time of the process: on a shared machine, CPU ms / threads estimates the wall time the
+// threads would take on idle cores.
+double cpu_ms() {
+  timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return 1e3 * t.tv_sec + 1e-6 * t.tv_nsec;
+}
+
+struct Scene {
+  SplatCamera<float> cam;
+  int n = 0;
+  std::vector<float> means, scales, quats, opacities, sh, features;
+};
+
+// Gaussians spread over the view frustum between z = 3 and 15, screen sigmas log-uniform in
+// [0.5, 8] px (the range a trained 3DGS scene has), opacities in [0.1, 0.9], SH degree 3.
+Scene make_scene(int n, int width, int height, int channels) {
+  Scene s;
+  s.n = n;
+  s.cam.width = width, s.cam.height = height;
+  s.cam.fx = s.cam.fy = 0.8f * width;
+  s.cam.cx = 0.5f * width, s.cam.cy = 0.5f * height;
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<float> U(0, 1);
+  for (int i = 0; i < n; ++i) {
+    const float z = 3 + 12 * U(rng);
+    s.means.insert(s.means.end(), {(U(rng) - 0.5f) * z * width / s.cam.fx, (U(rng) - 0.5f) * z * height / s.cam.fy, z});
+    for (int k = 0; k < 3; ++k) s.scales.push_back(z / s.cam.fx * 0.5f * std::pow(16.0f, U(rng)));
+    float q[4], qn = 0;
+    for (float& v : q) v = U(rng) - 0.5f, qn += v * v;
+    for (float v : q) s.quats.push_back(v / std::sqrt(qn));
+    s.opacities.push_back(0.1f + 0.8f * U(rng));
+  }
+  s.sh.resize(static_cast<size_t>(n) * 48);
+  for (auto& v : s.sh) v = 0.2f * (U(rng) - 0.5f);
+  for (int i = 0; i < n; ++i) s.sh[48 * i] += 1;
+  s.features.resize(static_cast<size_t>(n) * channels);
+  for (auto& v : s.features) v = U(rng);
+  return s;
+}
+
+struct Timing {
+  double forward_ms = 0, backward_ms = 0, cpu_ms = 0;
+  double instances = 0;
+};
+
+Timing run(const Scene& s, bool use_sh, int channels, int iters) {
+  SplatInputs<float> in;
+  in.n = s.n;
+  in.means = s.means.data(), in.scales = s.scales.data(), in.quats = s.quats.data(), in.opacities = s.opacities.data();
+  if (use_sh) in.sh = s.sh.data(), in.sh_degree = 3;
+  else in.features = s.features.data(), in.channels = channels;
+  const int C = use_sh ? 3 : channels;
+  const size_t n_pix = static_cast<size_t>(s.cam.width) * s.cam.height;
+  std::vector<float> image(n_pix * C), alpha(n_pix), depth(n_pix), dimage(n_pix * C, 1e-3f);
+  std::vector<float> gm(s.means.size()), gs(s.scales.size()), gq(s.quats.size()), go(s.opacities.size()),
+      gsh(use_sh ? s.sh.size() : 0), gf(use_sh ? 0 : s.features.size()), g2(2 * s.n), g2a(2 * s.n);
+  SplatForwardState<float> st;
+  Timing t;
+  for (int it = -1; it < iters; ++it) {  // iteration -1 warms up
+    const double c0 = cpu_ms();
+    const auto t0 = Clock::now();
+    rasterize_forward_cpu(s.cam, in, image.data(), alpha.data(), depth.data(), st);
+    const auto t1 = Clock::now();
+    SplatGradients<float> g;
+    g.means = gm.data(), g.scales = gs.data(), g.quats = gq.data(), g.opacities = go.data();
+    g.sh = use_sh ? gsh.data() : nullptr;
+    g.features = use_sh ? nullptr : gf.data();
+    g.mean2d = g2.data(), g.mean2d_abs = g2a.data();
+    rasterize_backward_cpu<float>(in, st, dimage.data(), nullptr, nullptr, g);
+    const auto t2 = Clock::now();
+    const double c2 = cpu_ms();
+    if (it >= 0) {
+      t.cpu_ms += (c2 - c0) / iters;
+      t.forward_ms += std::chrono::duration<double, std::milli>(t1 - t0).count() / iters;
+      t.backward_ms += std::chrono::duration<double, std::milli>(t2 - t1).count() / iters;
+    }
+  }
+  t.instances = static_cast<double>(st.ids.size());
+  return t;
+}
+
+int bench_main(int argc, char** argv) {
+  Args args("bench_splat", "CPU Gaussian rasterizer forward/backward time", "");
+  args.option("threads", "2", "OpenMP threads")
+      .option("gaussians", "200000", "number of Gaussians")
+      .option("width", "800", "image width")
+      .option("height", "600", "image height")
+      .option("channels", "128", "feature channels of the second run")
+      .option("iters", "5", "timed iterations per configuration (after one warm-up)");
+  if (!args.parse(argc, argv)) return 0;
+  omp_set_num_threads(args.get_int("threads"));
+  const int channels = args.get_int("channels");
+  const Scene s = make_scene(args.get_int("gaussians"), args.get_int("width"), args.get_int("height"), channels);
+  std::printf("scene: %d Gaussians, %dx%d, %d threads\n", s.n, s.cam.width, s.cam.height, args.get_int("threads"));
+  for (int pass = 0; pass < 2; ++pass) {
+    const bool use_sh = pass == 0;
+    const Timing t = run(s, use_sh, channels, args.get_int("iters"));
+    std::printf("%-14s forward %8.1f ms  backward %8.1f ms  forward+backward %8.1f ms  CPU %8.1f ms  "
+                "(%.0f tile instances)\n",
+                use_sh ? "RGB (SH deg 3)" : (std::to_string(channels) + " channels").c_str(), t.forward_ms,
+                t.backward_ms, t.forward_ms + t.backward_ms, t.cpu_ms, t.instances);
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace cls
+
+int main(int argc, char** argv) {
+  try {
+    return cls::bench_main(argc, argv);
+  } catch (const cls::Error& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,237 @@
+#include "splat/rasterize.h"
+
+#include <torch/torch.h>
+
+#include "core/error.h"
+#include "splat/rasterize_cpu.h"
+
+#ifdef CLS_WITH_CUDA
+#include <c10/cuda/CUDAStream.h>
+
+#include "splat/rasterize_cuda.h"
+#endif
+
+namespace cls {
+namespace {
+
+using torch::autograd::AutogradContext;
+using torch::autograd::variable_list;
+
+template <class T>
+SplatInputs<T> make_inputs(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
+                           const at::Tensor& opacities, const at::Tensor& values, int sh_degree,
+                           const at::Tensor& background) {
+  SplatInputs<T> in;
+  in.n = static_cast<int>(means.size(0));
+  in.means = means.data_ptr<T>();
+  in.scales = scales.data_ptr<T>();
+  in.quats = quats.data_ptr<T>();
+  in.opacities = opacities.data_ptr<T>();
+  if (sh_degree >= 0) {
+    in.sh = values.data_ptr<T>();
+    in.sh_degree = sh_degree;
+    in.channels = 3;
+  } else {
+    in.features = values.data_ptr<T>();
+    in.channels = static_cast<int>(values.size(1));
+  }
+  in.background = background.defined() ? background.data_ptr<T>() : nullptr;
+  return in;
+}
+
+#ifdef CLS_WITH_CUDA
+// What a CUDA forward keeps for its backward.
+struct CudaSavedState {
+  CudaForwardStatePtr state;
+  SplatCamera<float> cam;
+};
+
+CudaSplatArgs cuda_args(const SplatCamera<float>& cam, const at::Tensor& means, const at::Tensor& scales,
+                        const at::Tensor& quats, const at::Tensor& opacities, const at::Tensor& values, int sh_degree,
+                        const at::Tensor& background) {
+  CudaSplatArgs a;
+  a.cam = cam;
+  a.n = static_cast<int>(means.size(0));
+  a.means = means.data_ptr<float>(), a.scales = scales.data_ptr<float>(), a.quats = quats.data_ptr<float>();
+  a.opacities = opacities.data_ptr<float>();
+  if (sh_degree >= 0) {
+    a.sh = values.data_ptr<float>(), a.sh_degree = sh_degree, a.channels = 3;
+  } else {
+    a.features = values.data_ptr<float>(), a.channels = static_cast<int>(values.size(1));
+  }
+  a.background = background.defined() ? background.data_ptr<float>() : nullptr;
+  return a;
+}
+
+void check_cuda(int rc, const char* what) {
+  if (rc != 0) throw Error(std::string("rasterize: CUDA error ") + std::to_string(rc) + " in " + what);
+}
+#endif
+
+class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
+ public:
+  // values: SH N x (degree+1)^2 x 3 when sh_degree >= 0, else features N x C. All contiguous, one dtype.
+  static variable_list forward(AutogradContext* ctx, at::Tensor means, at::Tensor scales, at::Tensor quats,
+                               at::Tensor opacities, at::Tensor values, at::Tensor means2d, int64_t sh_degree,
+                               const RasterizeSettings* settings) {
+    (void)means2d;
+    const auto& cam = settings->camera;
+    const int C = sh_degree >= 0 ? 3 : static_cast<int>(values.size(1));
+    const auto opts = means.options();
+    at::Tensor image = torch::empty({cam.height, cam.width, C}, opts);
+    at::Tensor alpha = torch::empty({cam.height, cam.width}, opts);
+    at::Tensor depth = torch::empty({cam.height, cam.width}, opts);
+    at::Tensor radii = torch::zeros({means.size(0)}, opts.dtype(torch::kInt32));
+    at::Tensor bg = settings->background.defined() ? settings->background.to(opts).contiguous() : at::Tensor();
+    at::Tensor holder;
+    if (means.is_cuda()) {
+#ifdef CLS_WITH_CUDA
+      auto* saved = new CudaSavedState();
+      holder = torch::from_blob(saved, {1}, [](void* p) { delete static_cast<CudaSavedState*>(p); },
+                                torch::TensorOptions().dtype(torch::kUInt8));
+      saved->cam = make_splat_camera<float>(cam, settings->pose);
+      CudaSplatArgs a = cuda_args(saved->cam, means, scales, quats, opacities, values, int(sh_degree), bg);
+      a.image = image.data_ptr<float>(), a.alpha = alpha.data_ptr<float>(), a.depth = depth.data_ptr<float>();
+      void* stream = c10::cuda::getCurrentCUDAStream().stream();
+      check_cuda(rasterize_forward_cuda(a, saved->state, stream), "forward");
+      check_cuda(cuda_forward_radii(*saved->state, radii.data_ptr<int32_t>(), stream), "radii");
+#endif
+    } else {
+    AT_DISPATCH_FLOATING_TYPES(means.scalar_type(), "rasterize_forward", [&] {
+      using T = scalar_t;
+      auto* state = new SplatForwardState<T>();
+      // The forward state is plain C++; a byte tensor whose deleter frees it carries it to backward.
+      holder = torch::from_blob(state, {1}, [](void* p) { delete static_cast<SplatForwardState<T>*>(p); },
+                                torch::TensorOptions().dtype(torch::kUInt8));
+      const SplatInputs<T> in = make_inputs<T>(means, scales, quats, opacities, values, int(sh_degree), bg);
+      rasterize_forward_cpu(make_splat_camera<T>(cam, settings->pose), in, image.data_ptr<T>(),
+                            alpha.data_ptr<T>(), depth.data_ptr<T>(), *state);
+      int32_t* r = radii.data_ptr<int32_t>();
+      for (int i = 0; i < in.n; ++i) r[i] = state->proj[i].visible ? state->proj[i].radius : 0;
+    });
+    }
+    ctx->save_for_backward({means, scales, quats, opacities, values});
+    ctx->saved_data["state"] = holder;
+    ctx->saved_data["sh_degree"] = sh_degree;
+    ctx->saved_data["background"] = bg;
+    ctx->saved_data["abs_grad"] = settings->mean2d_abs_grad;
+    ctx->saved_data["has_means2d"] = means2d.numel() > 0;
+    ctx->mark_non_differentiable({radii});
+    return {image, alpha, depth, radii};
+  }
+
+  static variable_list backward(AutogradContext* ctx, variable_list grad_out) {
+    const auto saved = ctx->get_saved_variables();
+    const at::Tensor &means = saved[0], &scales = saved[1], &quats = saved[2], &opacities = saved[3], &values = saved[4];
+    const int sh_degree = static_cast<int>(ctx->saved_data["sh_degree"].toInt());
+    const at::Tensor bg = ctx->saved_data["background"].toTensor();
+    at::Tensor abs_grad = ctx->saved_data["abs_grad"].toTensor();
+    void* state_ptr = ctx->saved_data["state"].toTensor().data_ptr();
+    auto contiguous_or_undef = [](const at::Tensor& t) { return t.defined() ? t.contiguous() : t; };
+    const at::Tensor g_image = contiguous_or_undef(grad_out[0]), g_alpha = contiguous_or_undef(grad_out[1]),
+                     g_depth = contiguous_or_undef(grad_out[2]);
+    at::Tensor d_means = torch::zeros_like(means), d_scales = torch::zeros_like(scales),
+               d_quats = torch::zeros_like(quats), d_opac = torch::zeros_like(opacities),
+               d_values = torch::zeros_like(values), d_mean2d = torch::zeros({means.size(0), 2}, means.options()),
+               d_abs = torch::zeros({means.size(0), 2}, means.options());
+    if (means.is_cuda()) {
+#ifdef CLS_WITH_CUDA
+      const auto& saved_state = *static_cast<const CudaSavedState*>(state_ptr);
+      const CudaSplatArgs a = cuda_args(saved_state.cam, means, scales, quats, opacities, values, sh_degree, bg);
+      CudaSplatGrads g;
+      g.means = d_means.data_ptr<float>(), g.scales = d_scales.data_ptr<float>(), g.quats = d_quats.data_ptr<float>();
+      g.opacities = d_opac.data_ptr<float>();
+      (sh_degree >= 0 ? g.sh : g.features) = d_values.data_ptr<float>();
+      g.mean2d = d_mean2d.data_ptr<float>(), g.mean2d_abs = d_abs.data_ptr<float>();
+      auto ptr = [](const at::Tensor& t) -> const float* { return t.defined() ? t.data_ptr<float>() : nullptr; };
+      check_cuda(rasterize_backward_cuda(a, *saved_state.state, ptr(g_image), ptr(g_alpha), ptr(g_depth), g,
+                                         c10::cuda::getCurrentCUDAStream().stream()),
+                 "backward");
+#endif
+    } else {
+    AT_DISPATCH_FLOATING_TYPES(means.scalar_type(), "rasterize_backward", [&] {
+      using T = scalar_t;
+      const auto& state = *static_cast<const SplatForwardState<T>*>(state_ptr);
+      const SplatInputs<T> in = make_inputs<T>(means, scales, quats, opacities, values, sh_degree, bg);
+      SplatGradients<T> g;
+      g.means = d_means.data_ptr<T>(), g.scales = d_scales.data_ptr<T>(), g.quats = d_quats.data_ptr<T>();
+      g.opacities = d_opac.data_ptr<T>();
+      (sh_degree >= 0 ? g.sh : g.features) = d_values.data_ptr<T>();
+      g.mean2d = d_mean2d.data_ptr<T>(), g.mean2d_abs = d_abs.data_ptr<T>();
+      auto ptr = [](const at::Tensor& t) -> const T* { return t.defined() ? t.data_ptr<T>() : nullptr; };
+      rasterize_backward_cpu(in, state, ptr(g_image), ptr(g_alpha), ptr(g_depth), g);
+    });
+    }
+    if (abs_grad.defined()) abs_grad.add_(d_abs.to(abs_grad.scalar_type()));
+    if (!ctx->saved_data["has_means2d"].toBool()) d_mean2d = at::Tensor();
+    return {d_means, d_scales, d_quats, d_opac, d_values, d_mean2d, at::Tensor(), at::Tensor()};
+  }
+};
+
+void check_inputs(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
+                  const at::Tensor& opacities, const RasterizeSettings& s) {
+  const int64_t n = means.size(0);
+  auto need = [&](const at::Tensor& t, const char* name, std::vector<int64_t> shape) {
+    if (!t.defined() || t.sizes() != at::IntArrayRef(shape))
+      throw Error(std::string("rasterize: ") + name + " must have shape " + c10::str(shape) +
+                  (t.defined() ? ", got " + c10::str(t.sizes()) : ", got undefined"));
+    if (t.scalar_type() != means.scalar_type() || t.device() != means.device())
+      throw Error(std::string("rasterize: ") + name + " must have the means' dtype and device");
+  };
+  if (means.dim() != 2) throw Error("rasterize: means must be N x 3");
+  if (means.scalar_type() != torch::kFloat32 && means.scalar_type() != torch::kFloat64)
+    throw Error("rasterize: tensors must be float32 or float64");
+#ifdef CLS_WITH_CUDA
+  if (means.is_cuda() && means.scalar_type() != torch::kFloat32) throw Error("rasterize: CUDA tensors must be float32");
+#else
+  if (!means.device().is_cpu()) throw Error("rasterize: this build has no CUDA backend; use CPU tensors");
+#endif
+  need(means, "means", {n, 3});
+  need(scales, "scales", {n, 3});
+  need(quats, "quats", {n, 4});
+  need(opacities, "opacities", {n});
+  if (s.camera.width <= 0 || s.camera.height <= 0 || !(s.camera.fx > 0) || !(s.camera.fy > 0))
+    throw Error("rasterize: camera needs a positive size and focal lengths");
+}
+
+RasterizeOutput run(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
+                    const at::Tensor& opacities, const at::Tensor& values, int sh_degree, const at::Tensor& means2d,
+                    const RasterizeSettings& s) {
+  const int C = sh_degree >= 0 ? 3 : static_cast<int>(values.size(1));
+  if (s.background.defined() && s.background.numel() != C)
+    throw Error("rasterize: background must have " + std::to_string(C) + " values");
+  if (s.mean2d_abs_grad.defined() && s.mean2d_abs_grad.sizes() != at::IntArrayRef({means.size(0), 2}))
+    throw Error("rasterize: mean2d_abs_grad must be N x 2");
+  // An undefined means2d still needs a tensor slot in apply(); a zero-size one gets no gradient.
+  const at::Tensor m2d = means2d.defined() ? means2d : torch::zeros({0}, means.options());
+  auto out = RasterizeFunction::apply(means.contiguous(), scales.contiguous(), quats.contiguous(),
+                                      opacities.contiguous(), values.contiguous(), m2d, int64_t(sh_degree), &s);
+  return {out[0], out[1], out[2], out[3]};
+}
+
+}  // namespace
+
+RasterizeOutput rasterize_sh(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
+                             const at::Tensor& opacities, const at::Tensor& sh, int sh_degree,
+                             const at::Tensor& means2d, const RasterizeSettings& settings) {
+  check_inputs(means, scales, quats, opacities, settings);
+  const int64_t K = (sh_degree + 1) * (sh_degree + 1);
+  if (sh_degree < 0 || sh_degree > 3 || sh.dim() != 3 || sh.size(0) != means.size(0) || sh.size(1) < K ||
+      sh.size(2) != 3)
+    throw Error("rasterize_sh: sh must be N x K x 3 with K >= (degree+1)^2 and degree 0-3, got " + c10::str(sh.sizes()) +
+                " for degree " + std::to_string(sh_degree));
+  if (sh.scalar_type() != means.scalar_type()) throw Error("rasterize_sh: sh must have the means' dtype");
+  return run(means, scales, quats, opacities, sh.slice(1, 0, K), sh_degree, means2d, settings);
+}
+
+RasterizeOutput rasterize_features(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
+                                   const at::Tensor& opacities, const at::Tensor& features,
+                                   const at::Tensor& means2d, const RasterizeSettings& settings) {
+  check_inputs(means, scales, quats, opacities, settings);
+  if (features.dim() != 2 || features.size(0) != means.size(0) || features.size(1) < 1)
+    throw Error("rasterize_features: features must be N x C, got " + c10::str(features.sizes()));
+  if (features.scalar_type() != means.scalar_type()) throw Error("rasterize_features: features must have the means' dtype");
+  return run(means, scales, quats, opacities, features, -1, means2d, settings);
+}
+
+}  // namespace cls

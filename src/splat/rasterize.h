@@ -1,0 +1,44 @@
+#pragma once
+// The rasterizer as LibTorch autograd functions: CPU tensors (float32 or float64) run
+// rasterize_cpu.h; CUDA float32 tensors run the kernels of rasterize_cuda.h where the build links the
+// CUDA backend (CLS_WITH_CUDA). All tensors on the means' device.
+//
+// Inputs are activated parameters as in 3DGS's GaussianRasterizer: means N x 3, scales N x 3 (> 0),
+// quats N x 4 (w, x, y, z; normalised inside, gradients flow to the raw values), opacities N,
+// and either SH coefficients N x K x 3 (colour, K >= (degree+1)^2) or features N x C.
+// GaussianModel supplies them (scales(), opacities(), quats, sh() / features).
+#include <ATen/core/Tensor.h>
+
+#include "scene/camera.h"
+
+namespace cls {
+
+struct RasterizeSettings {
+  PinholeCamera camera;
+  Pose pose;  // world to camera
+  at::Tensor background;  // C values, or undefined for zero (not differentiated)
+  // Densification statistics: when defined (N x 2, same dtype), the backward adds the per-pixel sum
+  // of |dL/dmean2d| (AbsGS / gsplat absgrad) to it.
+  at::Tensor mean2d_abs_grad;
+};
+
+struct RasterizeOutput {
+  at::Tensor image;  // H x W x C (channel-last)
+  at::Tensor alpha;  // H x W, 1 - final transmittance
+  at::Tensor depth;  // H x W, sum_i alpha_i T_i z_i (not normalised by alpha)
+  at::Tensor radii;  // N int32 screen radius in pixels, 0 where culled (not differentiable)
+};
+
+// `means2d`: optional N x 2 tensor (zeros, requires_grad) that receives dL/dmean2d in pixels, the
+// screen-space gradient densification thresholds (3DGS's screenspace_points). May be undefined.
+// `sh_degree` uses the first (degree+1)^2 coefficients of `sh` (the active degree during training).
+RasterizeOutput rasterize_sh(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
+                             const at::Tensor& opacities, const at::Tensor& sh, int sh_degree,
+                             const at::Tensor& means2d, const RasterizeSettings& settings);
+
+// C feature channels (e.g. 128 language latents); no SH, no view dependence.
+RasterizeOutput rasterize_features(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
+                                   const at::Tensor& opacities, const at::Tensor& features,
+                                   const at::Tensor& means2d, const RasterizeSettings& settings);
+
+}  // namespace cls

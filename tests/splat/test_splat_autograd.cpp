@@ -1,0 +1,154 @@
+// The rasterizer as a LibTorch autograd function: gradients against central finite differences of
+// the same function in float64, and the float32 path against the float64 one.
+#include <gtest/gtest.h>
+#include <torch/torch.h>
+
+#include "core/error.h"
+#include "splat/gaussians.h"
+#include "splat/rasterize.h"
+#include "splat_scene.h"
+
+namespace cls {
+namespace {
+
+struct TorchScene {
+  RasterizeSettings settings;
+  torch::Tensor means, scales, quats, opacities, values, w_image, w_alpha, w_depth;
+  bool sh = true;
+};
+
+TorchScene torch_scene(bool use_sh, int channels, unsigned seed, torch::Dtype dtype) {
+  const auto s = test::random_scene(10, 36, 34, channels, use_sh, seed, 0.7);
+  TorchScene t;
+  t.sh = use_sh;
+  t.settings.camera = PinholeCamera{s.cam.fx, s.cam.fy, s.cam.cx, s.cam.cy, s.cam.width, s.cam.height};
+  t.settings.pose.R = s.cam.R;
+  t.settings.pose.t = s.cam.t;
+  auto tensor = [&](const std::vector<double>& v, std::vector<int64_t> shape) {
+    return torch::tensor(v, torch::kFloat64).reshape(shape).to(dtype);
+  };
+  const int64_t n = s.n;
+  t.means = tensor(s.means, {n, 3});
+  t.scales = tensor(s.scales, {n, 3});
+  t.quats = tensor(s.quats, {n, 4});
+  t.opacities = tensor(s.opacities, {n});
+  t.values = use_sh ? tensor(s.sh, {n, 16, 3}) : tensor(s.features, {n, channels});
+  t.settings.background = tensor(s.background, {int64_t(s.background.size())});
+  torch::manual_seed(seed);
+  t.w_image = torch::randn({s.cam.height, s.cam.width, s.channels}, torch::kFloat64).to(dtype);
+  t.w_alpha = torch::randn({s.cam.height, s.cam.width}, torch::kFloat64).to(dtype);
+  t.w_depth = 0.2 * torch::randn({s.cam.height, s.cam.width}, torch::kFloat64).to(dtype);
+  return t;
+}
+
+torch::Tensor loss_of(const TorchScene& t, const torch::Tensor& means2d, const RasterizeSettings& settings) {
+  const RasterizeOutput o = t.sh ? rasterize_sh(t.means, t.scales, t.quats, t.opacities, t.values, 3, means2d, settings)
+                                 : rasterize_features(t.means, t.scales, t.quats, t.opacities, t.values, means2d, settings);
+  return (o.image * t.w_image).sum() + (o.alpha * t.w_alpha).sum() + (o.depth * t.w_depth).sum();
+}
+
+std::vector<torch::Tensor> analytic_grads(TorchScene& t, torch::Tensor* mean2d_grad, torch::Tensor* abs_grad) {
+  std::vector<torch::Tensor*> params = {&t.means, &t.scales, &t.quats, &t.opacities, &t.values};
+  for (auto* p : params) *p = p->detach().requires_grad_(true);
+  torch::Tensor means2d = torch::zeros({t.means.size(0), 2}, t.means.options()).requires_grad_(true);
+  RasterizeSettings settings = t.settings;
+  settings.mean2d_abs_grad = torch::zeros({t.means.size(0), 2}, t.means.options());
+  loss_of(t, means2d, settings).backward();
+  std::vector<torch::Tensor> grads;
+  for (auto* p : params) {
+    grads.push_back(p->grad().clone());
+    *p = p->detach();
+  }
+  *mean2d_grad = means2d.grad();
+  *abs_grad = settings.mean2d_abs_grad;
+  return grads;
+}
+
+void check_against_fd(bool use_sh, int channels, unsigned seed) {
+  TorchScene t = torch_scene(use_sh, channels, seed, torch::kFloat64);
+  torch::Tensor g2d, gabs;
+  const auto grads = analytic_grads(t, &g2d, &gabs);
+  std::vector<torch::Tensor*> params = {&t.means, &t.scales, &t.quats, &t.opacities, &t.values};
+  const char* names[] = {"means", "scales", "quats", "opacities", "values"};
+  const double h = 1e-6;
+  for (size_t p = 0; p < params.size(); ++p) {
+    torch::Tensor flat = params[p]->view({-1});
+    const auto g = grads[p].reshape({-1});
+    ASSERT_GT(g.abs().max().item<double>(), 1e-3) << names[p] << " gradient is all zero";
+    for (int64_t k = 0; k < flat.numel(); ++k) {
+      const double x0 = flat[k].item<double>();
+      flat[k] = x0 + h;
+      const double lp = loss_of(t, {}, t.settings).item<double>();
+      flat[k] = x0 - h;
+      const double lm = loss_of(t, {}, t.settings).item<double>();
+      flat[k] = x0;
+      const double fd = (lp - lm) / (2 * h), a = g[k].item<double>();
+      EXPECT_LT(std::abs(a - fd) / std::max({std::abs(a), std::abs(fd), 1e-3}), 1e-4) << names[p] << "[" << k << "]";
+    }
+  }
+  // dL/dmean2d summed over Gaussians is the derivative with respect to the principal point.
+  for (int axis = 0; axis < 2; ++axis) {
+    RasterizeSettings s = t.settings;
+    double& c = axis == 0 ? s.camera.cx : s.camera.cy;
+    c += h;
+    const double lp = loss_of(t, {}, s).item<double>();
+    c -= 2 * h;
+    const double lm = loss_of(t, {}, s).item<double>();
+    const double fd = (lp - lm) / (2 * h), a = g2d.select(1, axis).sum().item<double>();
+    EXPECT_LT(std::abs(a - fd) / std::max({std::abs(a), std::abs(fd), 1e-3}), 1e-4) << "mean2d axis " << axis;
+  }
+  EXPECT_TRUE((gabs >= g2d.abs() - 1e-12).all().item<bool>());
+  EXPECT_GT(gabs.sum().item<double>(), 0.0);
+}
+
+TEST(SplatAutograd, ShGradientsMatchFiniteDifferences) { check_against_fd(true, 3, 21); }
+TEST(SplatAutograd, FeatureGradientsMatchFiniteDifferences) { check_against_fd(false, 4, 22); }
+
+// The float32 fast path gives the float64 gradients up to float rounding.
+TEST(SplatAutograd, Float32MatchesFloat64) {
+  for (bool use_sh : {true, false}) {
+    TorchScene td = torch_scene(use_sh, 32, 23, torch::kFloat64);
+    TorchScene tf = torch_scene(use_sh, 32, 23, torch::kFloat32);
+    torch::Tensor g2d_d, abs_d, g2d_f, abs_f;
+    const auto gd = analytic_grads(td, &g2d_d, &abs_d);
+    const auto gf = analytic_grads(tf, &g2d_f, &abs_f);
+    for (size_t p = 0; p < gd.size(); ++p) {
+      const double scale = gd[p].abs().max().item<double>();
+      EXPECT_LT((gf[p].to(torch::kFloat64) - gd[p]).abs().max().item<double>(), 1e-3 * scale) << "param " << p;
+    }
+    EXPECT_LT((g2d_f.to(torch::kFloat64) - g2d_d).abs().max().item<double>(), 1e-3 * g2d_d.abs().max().item<double>());
+  }
+}
+
+TEST(SplatAutograd, GradientsReachTheRawModelParameters) {
+  GaussianModel g = make_gaussians(2, 1, 0);
+  g.means = torch::tensor({0.0f, 0.0f, 4.0f, 0.3f, 0.1f, 5.0f}).reshape({2, 3});
+  g.log_scales.fill_(std::log(0.2));
+  g.log_scales.requires_grad_(true);
+  g.opacity_logits.requires_grad_(true);
+  g.sh_dc.fill_(0.5);
+  g.sh_dc.requires_grad_(true);
+  g.means.requires_grad_(true);
+  RasterizeSettings s;
+  s.camera = PinholeCamera{40, 40, 16, 16, 32, 32};
+  const auto o = rasterize_sh(g.means, g.scales(), g.quats, g.opacities(), g.sh(), 1, {}, s);
+  EXPECT_EQ(o.radii.scalar_type(), torch::kInt32);
+  EXPECT_GT(o.radii.min().item<int>(), 0);
+  o.image.sum().backward();
+  for (const auto* t : {&g.means, &g.log_scales, &g.opacity_logits, &g.sh_dc}) {
+    ASSERT_TRUE(t->grad().defined());
+    EXPECT_GT(t->grad().abs().sum().item<double>(), 0.0);
+  }
+}
+
+TEST(SplatAutograd, RejectsBadShapes) {
+  RasterizeSettings s;
+  s.camera = PinholeCamera{40, 40, 16, 16, 32, 32};
+  const auto m = torch::zeros({3, 3});
+  EXPECT_THROW(rasterize_features(m, torch::ones({3, 3}), torch::ones({3, 4}), torch::ones({2}), torch::ones({3, 5}), {}, s), Error);
+  EXPECT_THROW(rasterize_sh(m, torch::ones({3, 3}), torch::ones({3, 4}), torch::ones({3}), torch::ones({3, 3, 3}), 2, {}, s), Error);
+  EXPECT_THROW(rasterize_features(m, torch::ones({3, 3}), torch::ones({3, 4}), torch::ones({3}), torch::ones({3, 5}, torch::kFloat64), {}, s), Error);
+}
+
+}  // namespace
+}  // namespace cls

@@ -1,0 +1,118 @@
+// The CUDA forward rasterizer against the CPU path (same scene, same order of blending). Runs only
+// where the CUDA backend is linked (CLS_WITH_CUDA) and a device is present; skipped, saying so,
+// elsewhere.
+#include <gtest/gtest.h>
+
+#ifdef CLS_WITH_CUDA
+#include <torch/cuda.h>
+#include <torch/torch.h>
+
+#include "splat/rasterize.h"
+#include "splat/rasterize_cuda.h"
+#include "splat_scene.h"
+
+namespace cls {
+namespace {
+
+void compare_cuda_cpu(const test::RandomScene& s) {
+  const auto a = test::scene_arrays<float>(s);
+  const SplatCamera<float> cam = test::cast_camera<float>(s.cam);
+  const size_t n_pix = static_cast<size_t>(cam.width) * cam.height;
+  std::vector<float> image(n_pix * s.channels), alpha(n_pix), depth(n_pix);
+  SplatForwardState<float> st;
+  rasterize_forward_cpu(cam, a.inputs(s), image.data(), alpha.data(), depth.data(), st);
+
+  auto dev = [](const std::vector<float>& v) {
+    return torch::tensor(v.empty() ? std::vector<float>{0.f} : v, torch::kFloat32).to(torch::kCUDA);
+  };
+  const auto means = dev(a.means), scales = dev(a.scales), quats = dev(a.quats), opac = dev(a.opacities),
+             sh = dev(a.sh), feat = dev(a.features), bg = dev(a.background);
+  auto g_image = torch::empty({cam.height, cam.width, s.channels}, torch::dtype(torch::kFloat32).device(torch::kCUDA));
+  auto g_alpha = torch::empty({cam.height, cam.width}, g_image.options());
+  auto g_depth = torch::empty({cam.height, cam.width}, g_image.options());
+  CudaSplatArgs args;
+  args.cam = cam;
+  args.n = s.n;
+  args.means = means.data_ptr<float>(), args.scales = scales.data_ptr<float>();
+  args.quats = quats.data_ptr<float>(), args.opacities = opac.data_ptr<float>();
+  if (!a.sh.empty()) args.sh = sh.data_ptr<float>(), args.sh_degree = s.sh_degree;
+  else args.features = feat.data_ptr<float>();
+  args.channels = s.channels;
+  args.background = bg.data_ptr<float>();
+  args.image = g_image.data_ptr<float>(), args.alpha = g_alpha.data_ptr<float>(), args.depth = g_depth.data_ptr<float>();
+  CudaForwardStatePtr state;
+  ASSERT_EQ(rasterize_forward_cuda(args, state), 0);
+  torch::cuda::synchronize();
+  const auto cpu_image = torch::from_blob(image.data(), {cam.height, cam.width, s.channels});
+  const auto cpu_alpha = torch::from_blob(alpha.data(), {cam.height, cam.width});
+  const auto cpu_depth = torch::from_blob(depth.data(), {cam.height, cam.width});
+  EXPECT_LT((g_image.cpu() - cpu_image).abs().max().item<float>(), 1e-5f) << s.channels << " channels";
+  EXPECT_LT((g_alpha.cpu() - cpu_alpha).abs().max().item<float>(), 1e-5f);
+  EXPECT_LT((g_depth.cpu() - cpu_depth).abs().max().item<float>(), 1e-4f);
+}
+
+// Gradients through the autograd function on CUDA against the CPU function (float32 both).
+void compare_gradients(bool use_sh, int channels, unsigned seed) {
+  const auto s = test::random_scene(200, 53, 37, channels, use_sh, seed, 0.9);
+  RasterizeSettings settings;
+  settings.camera = PinholeCamera{s.cam.fx, s.cam.fy, s.cam.cx, s.cam.cy, s.cam.width, s.cam.height};
+  settings.pose.R = s.cam.R;
+  settings.pose.t = s.cam.t;
+  auto t = [](const std::vector<double>& v, std::vector<int64_t> shape) {
+    return torch::tensor(v, torch::kFloat64).reshape(shape).to(torch::kFloat32);
+  };
+  const int64_t n = s.n;
+  std::vector<torch::Tensor> params = {t(s.means, {n, 3}), t(s.scales, {n, 3}), t(s.quats, {n, 4}), t(s.opacities, {n}),
+                                       use_sh ? t(s.sh, {n, 16, 3}) : t(s.features, {n, channels})};
+  torch::manual_seed(seed);
+  const auto w = torch::randn({s.cam.height, s.cam.width, s.channels});
+  const auto wa = torch::randn({s.cam.height, s.cam.width});
+  std::vector<std::vector<torch::Tensor>> grads;
+  std::vector<torch::Tensor> m2d;
+  for (const torch::Device dev : {torch::Device(torch::kCPU), torch::Device(torch::kCUDA)}) {
+    std::vector<torch::Tensor> p;
+    for (const auto& x : params) p.push_back(x.to(dev).requires_grad_(true));
+    auto means2d = torch::zeros({n, 2}, torch::dtype(torch::kFloat32).device(dev)).requires_grad_(true);
+    RasterizeSettings sd = settings;
+    sd.background = t(s.background, {int64_t(s.background.size())}).to(dev);
+    const auto o = use_sh ? rasterize_sh(p[0], p[1], p[2], p[3], p[4], 3, means2d, sd)
+                          : rasterize_features(p[0], p[1], p[2], p[3], p[4], means2d, sd);
+    ((o.image * w.to(dev)).sum() + (o.alpha * wa.to(dev)).sum()).backward();
+    std::vector<torch::Tensor> g;
+    for (auto& x : p) g.push_back(x.grad().cpu());
+    grads.push_back(g);
+    m2d.push_back(means2d.grad().cpu());
+  }
+  for (size_t k = 0; k < params.size(); ++k) {
+    const double scale = grads[0][k].abs().max().item<double>();
+    EXPECT_LT((grads[1][k] - grads[0][k]).abs().max().item<double>(), 1e-3 * scale) << "param " << k;
+  }
+  EXPECT_LT((m2d[1] - m2d[0]).abs().max().item<double>(), 1e-3 * m2d[0].abs().max().item<double>());
+}
+
+TEST(SplatCuda, GradientsMatchCpu) {
+  if (!torch::cuda::is_available()) GTEST_SKIP() << "no CUDA device: the CUDA backward is not compared with the CPU path";
+  compare_gradients(true, 3, 51);
+  compare_gradients(false, 32, 52);
+  compare_gradients(false, 128, 53);
+}
+
+TEST(SplatCuda, ForwardMatchesCpu) {
+  if (!torch::cuda::is_available()) GTEST_SKIP() << "no CUDA device: the CUDA rasterizer is not compared with the CPU path";
+  compare_cuda_cpu(test::random_scene(400, 70, 45, 3, true, 31, 0.98));
+  for (int C : {1, 3, 16, 32, 128}) compare_cuda_cpu(test::random_scene(300, 53, 37, C, false, 40 + C, 0.98));
+}
+
+}  // namespace
+}  // namespace cls
+
+#else
+
+TEST(SplatCuda, ForwardMatchesCpu) {
+  GTEST_SKIP() << "built without the CUDA backend (CLS_WITH_CUDA): the CUDA rasterizer is not compared with the CPU path";
+}
+TEST(SplatCuda, GradientsMatchCpu) {
+  GTEST_SKIP() << "built without the CUDA backend (CLS_WITH_CUDA): the CUDA backward is not compared with the CPU path";
+}
+
+#endif
