@@ -177,7 +177,7 @@ TEST(SamPredictor, BatchedFloat64PointsAsTheAmgPassesThem) {
   EXPECT_TRUE(torch::equal(bin.masks, out.masks > 0.0));
 }
 
-TEST(SamPredictor, PredictBeforeSetImageIsAnError) {
+TEST(SamPredictor, BadCallsAreErrors) {
   SamPredictor predictor(testing::load_tiny_sam());
   SamPrompt p;
   p.points = {{1.0, 2.0}};
@@ -187,6 +187,9 @@ TEST(SamPredictor, PredictBeforeSetImageIsAnError) {
   p.labels.clear();
   EXPECT_THROW(predictor.predict(p), Error);
   EXPECT_THROW(predictor.set_features(torch::zeros({1, 32, 64, 64}), {10, 10}), Error);
+  p.points.clear();
+  p.mask_input = torch::zeros({1, 128, 128});  // must be 1 x 256 x 256
+  EXPECT_THROW(predictor.predict(p), Error);
 }
 
 }  // namespace
