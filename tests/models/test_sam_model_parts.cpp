@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
@@ -185,6 +186,29 @@ void expect_real_layout(const std::string& file, SamConfig cfg, int blocks_built
   }
   EXPECT_EQ(checked, names.size()) << file << ": the model has tensors the official one does not";
   EXPECT_EQ(j.at("encoder").at("depth").get<int>(), depth);
+}
+
+// load_sam goes through the layout mapping: the fixture file (official names) and the same tensors
+// under Hugging Face SamModel names give the same model.
+TEST(SamWeights, LoadSamReadsOfficialAndHuggingFaceNames) {
+  const auto cfg = sam_config_from_json_file(sam_fixture("config.json"));
+  Sam official = load_sam(sam_fixture("weights.safetensors"), cfg);
+  const auto ref = read_safetensors(sam_fixture("weights.safetensors"));
+  std::vector<SafetensorsEntry> hf;
+  for (const auto& name : ref.names()) {
+    const auto t = ref.get(name);
+    hf.push_back({sam_official_to_hf(name), t.scalar_type(), t.sizes().vec(), t});
+  }
+  const auto path = (std::filesystem::temp_directory_path() / "cls_test_sam_hf.safetensors").string();
+  write_safetensors(path, hf);
+  Sam from_hf = load_sam(path, cfg);
+  std::filesystem::remove(path);
+  const auto a = sam_state_names(*official), b = sam_state_names(*from_hf);
+  ASSERT_EQ(a.size(), ref.size());
+  for (const auto& [name, t] : a) {
+    EXPECT_TRUE(torch::equal(t, ref.get(name))) << name;
+    EXPECT_TRUE(torch::equal(t, b.at(name))) << name;
+  }
 }
 
 TEST(SamWeights, OfficialLayouts) {

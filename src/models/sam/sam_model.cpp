@@ -70,4 +70,35 @@ void load_sam_weights(SamImpl& model, const WeightFile& weights) {
   for (auto& [name, target] : targets) target.copy_(weights.get(name, target.scalar_type()));
 }
 
+SamArch sam_arch_of(const SamConfig& cfg) {
+  if (cfg.out_chans != cfg.prompt_embed_dim) throw Error("SAM config: neck out_chans must equal prompt_embed_dim");
+  SamArch a;
+  a.name = "custom";
+  a.image_size = cfg.img_size;
+  a.patch_size = cfg.patch_size;
+  a.encoder_embed_dim = cfg.embed_dim;
+  a.encoder_depth = cfg.depth;
+  a.encoder_num_heads = cfg.num_heads;
+  a.global_attn_indexes = cfg.global_attn_indexes;
+  a.window_size = cfg.window_size;
+  a.mlp_ratio = float(cfg.mlp_ratio);
+  a.prompt_embed_dim = cfg.prompt_embed_dim;
+  a.mask_in_chans = cfg.mask_in_chans;
+  a.decoder_depth = cfg.decoder_transformer_depth;
+  a.decoder_num_heads = cfg.decoder_num_heads;
+  a.decoder_mlp_dim = cfg.decoder_mlp_dim;
+  a.attention_downsample_rate = cfg.attention_downsample_rate;
+  a.num_multimask_outputs = cfg.num_multimask_outputs;
+  a.iou_head_depth = cfg.iou_head_depth;
+  a.iou_head_hidden_dim = cfg.iou_head_hidden_dim;
+  return a;
+}
+
+Sam load_sam(const std::string& path, const SamConfig& cfg) {
+  Sam model(cfg);
+  load_sam_weights(*model, load_sam_checkpoint(path, sam_arch_of(cfg)));
+  model->eval();
+  return model;
+}
+
 }  // namespace cls::sam
