@@ -76,7 +76,11 @@ SamPrediction SamPredictor::predict_batch(const torch::Tensor& point_coords, con
   if (!is_image_set()) throw Error("SAM: set_image must be called before predict");
   if (point_coords.defined() != point_labels.defined()) throw Error("SAM: point coordinates need labels");
   torch::NoGradGuard no_grad;
-  const auto emb = model_->prompt_encoder->forward(point_coords, point_labels, boxes, mask_input);
+  // Prompts may come from the CPU while the model sits on a GPU.
+  const auto dev = device();
+  const auto on_device = [&](const torch::Tensor& t) { return t.defined() ? t.to(dev) : t; };
+  const auto emb = model_->prompt_encoder->forward(on_device(point_coords), on_device(point_labels), on_device(boxes),
+                                                   on_device(mask_input));
   const auto dec = model_->mask_decoder->forward(features_, model_->prompt_encoder->get_dense_pe(), emb.sparse, emb.dense,
                                                  multimask_output);
   SamPrediction out;
