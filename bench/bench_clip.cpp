@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_timer.h"
 #include "cli/args.h"
 #include "core/error.h"
 #include "models/clip/clip_model.h"
@@ -25,14 +26,9 @@
 namespace cls {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-double cpu_seconds() {
-  timespec t;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
+using bench::Clock;
+using bench::cpu_seconds;
+using bench::seconds_since;
 // Random weights with the reference state_dict's names and shapes (scale 0.02, LayerNorm weight 1).
 std::map<std::string, at::Tensor> random_state(const clip::ClipConfig& config) {
   std::map<std::string, at::Tensor> state;

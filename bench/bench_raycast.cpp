@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "citymodel/citygml_reader.h"
+#include "bench_timer.h"
 #include "cli/args.h"
 #include "core/error.h"
 #include "raycast/label_maps.h"
@@ -21,18 +22,9 @@
 namespace cls {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-// CPU time of the whole process: on a shared machine rays per CPU-second x threads estimates the
-// throughput the threads would reach on idle cores.
-double cpu_seconds() {
-  timespec t;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
+using bench::Clock;
+using bench::cpu_seconds;
+using bench::seconds_since;
 std::vector<Vec3f> local_vertices(const SemanticMesh& mesh) {
   std::vector<Vec3f> v;
   v.reserve(mesh.vertices.size());

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_timer.h"
 #include "cli/args.h"
 #include "core/error.h"
 #include "models/sam/sam_predictor.h"
@@ -18,16 +19,9 @@
 namespace cls {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-double cpu_seconds() {
-  timespec t;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
+using bench::Clock;
+using bench::cpu_seconds;
+using bench::seconds_since;
 // A deterministic textured RGB image (the encoder's cost does not depend on the content).
 std::vector<uint8_t> synthetic_image(int h, int w) {
   std::vector<uint8_t> img(size_t(h) * w * 3);

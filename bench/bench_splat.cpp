@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "bench_timer.h"
 #include "cli/args.h"
 #include "core/error.h"
 #include "splat/rasterize_cpu.h"
@@ -18,15 +19,9 @@
 namespace cls {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-// CPU time of the process: on a shared machine, CPU ms / threads estimates the wall time the
-// threads would take on idle cores.
-double cpu_ms() {
-  timespec t;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return 1e3 * t.tv_sec + 1e-6 * t.tv_nsec;
-}
+using bench::Clock;
+// Process CPU time: on a shared machine, CPU ms / threads estimates the idle-core wall time.
+double cpu_ms() { return 1e3 * bench::cpu_seconds(); }
 
 struct Scene {
   SplatCamera<float> cam;
