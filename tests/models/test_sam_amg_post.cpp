@@ -6,6 +6,7 @@
 #include <random>
 
 #include "core/atomic_file.h"
+#include "core/npy.h"
 #include "models/sam_amg/langsplat_post.h"
 #include "models/sam_amg/records_json.h"
 #include "sam_amg_test_util.h"
@@ -36,14 +37,15 @@ void check_post_run(const std::string& run, MaskNmsMethod method) {
   }
 
   // Seg map: LangSplat's <image>_s.npy, identical pixel for pixel.
-  const auto npy = amg_test::read_npy_f32(amg_fixture(run + "_seg_map.npy"));
+  const cls::NpyArray npy = cls::read_npy(amg_fixture(run + "_seg_map.npy"));
   ASSERT_EQ(npy.shape.size(), 3u);
   const SegMap map = build_seg_map(result.levels, static_cast<int>(npy.shape[1]), static_cast<int>(npy.shape[2]));
+  const float* ref = npy.as<float>();
   EXPECT_EQ(std::vector<int>(map.level_lengths.begin(), map.level_lengths.end()),
             post["seg_map_level_lengths"].get<std::vector<int>>());
-  ASSERT_EQ(map.values.size(), npy.data.size());
+  ASSERT_EQ(static_cast<int64_t>(map.values.size()), npy.numel());
   size_t differing = 0;
-  for (size_t i = 0; i < npy.data.size(); ++i) differing += static_cast<float>(map.values[i]) != npy.data[i];
+  for (size_t i = 0; i < map.values.size(); ++i) differing += static_cast<float>(map.values[i]) != ref[i];
   EXPECT_EQ(differing, 0u);
 }
 
