@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 
 PACKAGES=(build-essential cmake ninja-build pkg-config
           libembree-dev libpugixml-dev nlohmann-json3-dev libopencv-dev libglu1-mesa-dev
-          libgtest-dev libtorch-dev libopenblas0-pthread)
+          libgtest-dev libtorch-dev libopenblas0-pthread libcurl4-openssl-dev)
 
 missing=()
 for p in "${PACKAGES[@]}"; do

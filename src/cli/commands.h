@@ -7,4 +7,5 @@ int cmd_align_check(int argc, char** argv); // sparse points vs city mesh
 int cmd_synth(int argc, char** argv);       // synthetic scenes
 int cmd_scene(int argc, char** argv);       // scene info | convert
 int cmd_run(int argc, char** argv);         // the whole pipeline
+int cmd_models(int argc, char** argv);      // models list | download | check
 }  // namespace cls

@@ -24,6 +24,7 @@ const Command kCommands[] = {
     {"align-check", cls::cmd_align_check, "check how well a scene's sparse points lie on the city model"},
     {"synth", cls::cmd_synth, "render a synthetic scene (images, COLMAP model, ground truth) of a city model"},
     {"scene", cls::cmd_scene, "inspect or convert a scene (COLMAP / Pix4D)"},
+    {"models", cls::cmd_models, "list, download and check CLIP/SAM weight files"},
 };
 
 void usage(FILE* out) {

@@ -37,6 +37,7 @@ MaskDecoderOutput MaskDecoderImpl::predict_masks(const torch::Tensor& image_embe
   output_tokens = output_tokens.unsqueeze(0).expand({sparse.size(0), -1, -1});
   const auto tokens = torch::cat({output_tokens, sparse}, 1);
   const int64_t n = tokens.size(0);
+  // One image embedding shared by all prompts (repeat_interleave); already per prompt if batch n.
   auto src = image_embeddings.size(0) == n ? image_embeddings : torch::repeat_interleave(image_embeddings, n, 0);
   src = src + dense;
   const auto pos_src = image_pe.size(0) == n ? image_pe : torch::repeat_interleave(image_pe, n, 0);

@@ -63,8 +63,7 @@ torch::Tensor PromptEncoderImpl::point_embedding(size_t i) const {
 torch::Tensor PromptEncoderImpl::embed_points(torch::Tensor points, torch::Tensor labels, bool pad) const {
   points = points + 0.5;  // shift to the pixel centre
   if (pad) {
-    // zeros are float32 in the reference; cat promotes to the points' dtype.
-    const auto padding_point = torch::zeros({points.size(0), 1, 2}, points.options().dtype(torch::kFloat)).to(points.dtype());
+    const auto padding_point = torch::zeros({points.size(0), 1, 2}, points.options());
     const auto padding_label = -torch::ones({labels.size(0), 1}, labels.options());
     points = torch::cat({points, padding_point}, 1);
     labels = torch::cat({labels, padding_label}, 1);
@@ -89,16 +88,14 @@ torch::Tensor PromptEncoderImpl::embed_boxes(const torch::Tensor& boxes) const {
   return torch::stack({corners.index({Slice(), 0, Slice()}) + tl, corners.index({Slice(), 1, Slice()}) + br}, 1);
 }
 
-torch::Tensor PromptEncoderImpl::embed_masks(const torch::Tensor& masks) const {
-  return const_cast<torch::nn::SequentialImpl&>(*mask_downscaling).forward(masks);
-}
+torch::Tensor PromptEncoderImpl::embed_masks(const torch::Tensor& masks) { return mask_downscaling->forward(masks); }
 
 torch::Tensor PromptEncoderImpl::get_dense_pe() const {
   return pe_layer->forward(image_embedding_size.first, image_embedding_size.second).unsqueeze(0);
 }
 
 PromptEmbeddings PromptEncoderImpl::forward(const torch::Tensor& point_coords, const torch::Tensor& point_labels,
-                                            const torch::Tensor& boxes, const torch::Tensor& masks) const {
+                                            const torch::Tensor& boxes, const torch::Tensor& masks) {
   int64_t bs = 1;
   if (point_coords.defined()) bs = point_coords.size(0);
   else if (boxes.defined()) bs = boxes.size(0);

@@ -35,10 +35,10 @@ struct PromptEncoderImpl : torch::nn::Module {
   // boxes [B,4] XYXY; masks [B,1,256,256] logits. Undefined tensors = prompt absent. A padding
   // point is appended to the points when there is no box (reference behaviour).
   PromptEmbeddings forward(const torch::Tensor& point_coords, const torch::Tensor& point_labels,
-                           const torch::Tensor& boxes, const torch::Tensor& masks) const;
+                           const torch::Tensor& boxes, const torch::Tensor& masks);
   torch::Tensor embed_points(torch::Tensor points, torch::Tensor labels, bool pad) const;
   torch::Tensor embed_boxes(const torch::Tensor& boxes) const;
-  torch::Tensor embed_masks(const torch::Tensor& masks) const;
+  torch::Tensor embed_masks(const torch::Tensor& masks);
   torch::Tensor get_dense_pe() const;  // [1, C, 64, 64]
   torch::Tensor point_embedding(size_t i) const;  // point_embeddings.i.weight [1, C]
 

@@ -1,6 +1,6 @@
 #include "models/sam/sam_model.h"
 
-#include <sstream>
+#include <algorithm>
 #include <vector>
 
 #include "core/error.h"
@@ -42,39 +42,32 @@ std::map<std::string, torch::Tensor> sam_state_names(SamImpl& model) {
   return names;
 }
 
-namespace {
-std::string shape_str(const torch::Tensor& t) {
-  std::ostringstream s;
-  s << t.sizes();
-  return s.str();
-}
-}  // namespace
-
-void load_sam_weights(SamImpl& model, const std::map<std::string, torch::Tensor>& weights, const std::string& source) {
+void load_sam_weights(SamImpl& model, const WeightFile& weights) {
   auto targets = sam_state_names(model);
   std::vector<std::string> problems;
   for (const auto& [name, target] : targets) {
-    const auto it = weights.find(name);
-    if (it == weights.end()) {
+    if (!weights.contains(name)) {
       problems.push_back("missing tensor " + name);
-    } else if (!it->second.defined() || !it->second.is_floating_point()) {
-      problems.push_back("tensor " + name + " is not floating point");
-    } else if (it->second.sizes() != target.sizes()) {
-      problems.push_back("tensor " + name + " has shape " + shape_str(it->second) + ", expected " + shape_str(target));
+      continue;
     }
+    const TensorInfo& info = weights.info(name);
+    if (!at::isFloatingType(info.dtype)) problems.push_back("tensor " + name + " is not floating point");
+    else if (info.shape != target.sizes().vec())
+      problems.push_back("tensor " + name + " has shape " + shape_string(info.shape) + ", expected " +
+                         shape_string(target.sizes().vec()));
   }
-  for (const auto& [name, t] : weights)
+  for (const auto& name : weights.names())
     if (!targets.count(name)) problems.push_back("unexpected tensor " + name);
   if (!problems.empty()) {
-    std::string msg = "SAM weights do not match the " + std::to_string(model.config.embed_dim) + "-wide, depth " +
-                      std::to_string(model.config.depth) + " model: ";
+    std::string msg = "SAM weights do not match the model (embed_dim " + std::to_string(model.config.embed_dim) +
+                      ", depth " + std::to_string(model.config.depth) + "): ";
     const size_t shown = std::min<size_t>(problems.size(), 12);
     for (size_t i = 0; i < shown; ++i) msg += (i ? "; " : "") + problems[i];
     if (shown < problems.size()) msg += "; and " + std::to_string(problems.size() - shown) + " more";
-    fail(source, msg);
+    fail(weights.source(), msg);
   }
   torch::NoGradGuard no_grad;
-  for (auto& [name, target] : targets) target.copy_(weights.at(name));
+  for (auto& [name, target] : targets) target.copy_(weights.get(name, target.scalar_type()));
 }
 
 }  // namespace cls::sam

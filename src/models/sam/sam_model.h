@@ -12,6 +12,7 @@
 #include "models/sam/mask_decoder.h"
 #include "models/sam/prompt_encoder.h"
 #include "models/sam/sam_config.h"
+#include "models/weights/weight_file.h"
 
 namespace cls::sam {
 
@@ -38,9 +39,9 @@ TORCH_MODULE(Sam);
 std::map<std::string, torch::Tensor> sam_state_names(SamImpl& model);
 
 // Copies `weights` (official names, e.g. "image_encoder.blocks.0.attn.qkv.weight") into the model.
-// All problems are collected first (missing keys, unexpected keys, shape mismatches, non-floating
-// dtypes) and reported in one cls::Error naming `source` and the tensors; nothing is copied then.
-// Floating tensors of other precisions (f16, bf16, f64) are converted to the model's dtype.
-void load_sam_weights(SamImpl& model, const std::map<std::string, torch::Tensor>& weights, const std::string& source);
+// All problems are collected from the header first (missing keys, unexpected keys, shape
+// mismatches, non-floating dtypes) and reported in one cls::Error naming the file and the tensors;
+// nothing is copied then. Floating tensors of other precisions (f16, bf16, f64) are converted.
+void load_sam_weights(SamImpl& model, const WeightFile& weights);
 
 }  // namespace cls::sam

@@ -60,7 +60,12 @@ SamPrediction SamPredictor::predict(const SamPrompt& prompt, bool multimask_outp
     transform_.apply_coords(b.data(), 2, original_hw_);
     box = torch::from_blob(b.data(), {1, 4}, torch::kDouble).to(f32);
   }
-  if (prompt.mask_input.defined()) mask = prompt.mask_input.to(f32).unsqueeze(0);
+  if (prompt.mask_input.defined()) {
+    const int64_t side = 4 * model_->config.embedding_size();
+    if (prompt.mask_input.sizes() != torch::IntArrayRef{1, side, side})
+      throw Error("SAM: mask_input must be 1 x " + std::to_string(side) + " x " + std::to_string(side) + " low-res logits");
+    mask = prompt.mask_input.to(f32).unsqueeze(0);
+  }
   auto out = predict_batch(coords, labels, box, mask, multimask_output, return_logits);
   return out;
 }

@@ -2,36 +2,80 @@
 
 #include <ATen/ATen.h>
 #include <caffe2/serialize/inline_container.h>
-#include <torch/csrc/jit/api/compilation_unit.h>
-#include <torch/csrc/jit/serialization/import_read.h>
+
+#include <cstring>
 
 #include "core/error.h"
+#include "models/weights/pickle_reader.h"
 
 namespace cls {
 namespace {
 
-// Walks the unpickled value and records every tensor under its dotted path.
-void collect_tensors(const c10::IValue& v, const std::string& prefix, WeightFile& out) {
+using Reader = caffe2::serialize::PyTorchStreamReader;
+
+std::string first_line(const std::string& what) {
+  const size_t nl = what.find('\n');
+  return nl == std::string::npos ? what : what.substr(0, nl);  // drop c10 backtraces
+}
+
+// The tensor a pickled view describes, read from its storage record; bounds are checked first.
+at::Tensor materialise(const std::shared_ptr<Reader>& reader, const PickledTensor& t, const std::string& path,
+                       const std::string& name) {
+  const std::string record = "data/" + t.storage_key;
+  const size_t item = c10::elementSize(t.dtype);
+  at::Tensor storage = at::empty({t.storage_numel}, at::TensorOptions().dtype(t.dtype));
+  try {
+    if (!reader->hasRecord(record)) fail(path, "tensor '" + name + "': storage record " + record + " is missing");
+    auto [data, size] = reader->getRecord(record);
+    if (size < static_cast<size_t>(t.storage_numel) * item)
+      fail(path, "tensor '" + name + "': storage record " + record + " has " + std::to_string(size) +
+                     " bytes, needs " + std::to_string(t.storage_numel * item));
+    if (t.storage_numel) std::memcpy(storage.data_ptr(), data.get(), static_cast<size_t>(t.storage_numel) * item);
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    fail(path, "tensor '" + name + "': cannot read " + record + ": " + first_line(e.what()));
+  }
+  return storage.as_strided(t.sizes, t.strides, t.offset).contiguous();
+}
+
+// The view must stay inside its storage (a corrupt pickle must not read out of bounds).
+void check_bounds(const PickledTensor& t, const std::string& path, const std::string& name) {
+  int64_t last = t.offset;
+  bool empty = false;
+  for (size_t d = 0; d < t.sizes.size(); ++d) {
+    if (t.sizes[d] < 0 || t.strides[d] < 0) fail(path, "tensor '" + name + "': negative size or stride");
+    if (t.sizes[d] == 0) empty = true;
+    else last += (t.sizes[d] - 1) * t.strides[d];
+  }
+  if (t.offset < 0 || (!empty && last >= t.storage_numel))
+    fail(path, "tensor '" + name + "': view exceeds its storage of " + std::to_string(t.storage_numel) + " elements");
+}
+
+void collect(const PyRef& v, const std::string& prefix, const std::shared_ptr<Reader>& reader, WeightFile& out) {
   auto join = [&](const std::string& key) { return prefix.empty() ? key : prefix + "." + key; };
-  if (v.isTensor()) {
-    if (prefix.empty()) fail(out.source(), "archive holds a single tensor, not a dict of named tensors");
-    out.add(prefix, v.toTensor());
-  } else if (v.isObject()) {
-    const auto obj = v.toObject();
-    const auto type = obj->type();
-    for (size_t i = 0; i < type->numAttributes(); ++i)
-      collect_tensors(obj->getSlot(i), join(type->getAttributeName(i)), out);
-  } else if (v.isGenericDict()) {
-    for (const auto& item : v.toGenericDict()) {
-      const c10::IValue& key = item.key();
-      if (key.isString()) collect_tensors(item.value(), join(key.toStringRef()), out);
-      else if (key.isInt()) collect_tensors(item.value(), join(std::to_string(key.toInt())), out);
+  switch (v->kind) {
+    case PyValue::Kind::Tensor: {
+      if (prefix.empty()) fail(out.source(), "archive holds a single tensor, not a dict of named tensors");
+      check_bounds(v->tensor, out.source(), prefix);
+      const PickledTensor t = v->tensor;
+      const std::string path = out.source(), name = prefix;
+      out.add(prefix, TensorInfo{t.dtype, t.sizes}, [reader, t, path, name] { return materialise(reader, t, path, name); });
+      break;
     }
-  } else if (v.isList() || v.isTuple()) {
-    // Lists of tensors (rare in checkpoints) are named by index.
-    const std::vector<c10::IValue> items =
-        v.isList() ? v.toListRef().vec() : v.toTupleRef().elements().vec();
-    for (size_t i = 0; i < items.size(); ++i) collect_tensors(items[i], join(std::to_string(i)), out);
+    case PyValue::Kind::Dict:
+    case PyValue::Kind::Object:  // scripted modules: attributes; other objects: their state
+      for (const auto& [key, value] : v->dict) {
+        if (key->kind == PyValue::Kind::String) collect(value, join(key->s), reader, out);
+        else if (key->kind == PyValue::Kind::Int) collect(value, join(std::to_string(key->i)), reader, out);
+      }
+      break;
+    case PyValue::Kind::List:
+    case PyValue::Kind::Tuple:
+      for (size_t i = 0; i < v->items.size(); ++i) collect(v->items[i], join(std::to_string(i)), reader, out);
+      break;
+    default:
+      break;
   }
 }
 
@@ -39,46 +83,19 @@ void collect_tensors(const c10::IValue& v, const std::string& prefix, WeightFile
 
 WeightFile read_torch_archive(const std::string& path) {
   WeightFile out(path);
-  c10::IValue root;
+  std::shared_ptr<Reader> reader;
+  std::string pickle;
   try {
-    caffe2::serialize::PyTorchStreamReader reader(path);
-    if (!reader.hasRecord("data.pkl"))
-      fail(path, "zip archive without data.pkl: not a PyTorch checkpoint");
-    auto cu = std::make_shared<torch::jit::CompilationUnit>();
-    // Scripted classes (TorchScript archives) resolve to empty class types; no code is loaded.
-    torch::jit::TypeResolver resolve = [cu](const c10::QualifiedName& name) {
-      c10::ClassTypePtr type = cu->get_class(name);
-      if (!type) {
-        type = c10::ClassType::create(name, cu);
-        cu->register_type(type);
-      }
-      return c10::StrongTypePtr(cu, type);
-    };
-    // Each object becomes a fresh attribute bag holding the pickled state (a dict of attributes
-    // for modules; anything else is kept as "__state__").
-    torch::jit::ObjLoader load_object = [cu](const c10::StrongTypePtr& type, c10::IValue state) {
-      auto bag = c10::ClassType::create(type.type_->expect<c10::ClassType>()->name(), cu);
-      std::vector<std::pair<std::string, c10::IValue>> attributes;
-      if (state.isGenericDict()) {
-        for (const auto& item : state.toGenericDict())
-          if (item.key().isString()) attributes.emplace_back(item.key().toStringRef(), item.value());
-      } else {
-        attributes.emplace_back("__state__", state);
-      }
-      for (const auto& [name, value] : attributes) bag->addAttribute(name, value.type());
-      auto obj = c10::ivalue::Object::create(c10::StrongTypePtr(cu, bag), attributes.size());
-      for (size_t i = 0; i < attributes.size(); ++i) obj->setSlot(i, attributes[i].second);
-      return obj;
-    };
-    root = torch::jit::readArchiveAndTensors("data", "", "data/", resolve, load_object, at::Device(at::kCPU), reader);
+    reader = std::make_shared<Reader>(path);
+    if (!reader->hasRecord("data.pkl")) fail(path, "zip archive without data.pkl: not a PyTorch checkpoint");
+    auto [data, size] = reader->getRecord("data.pkl");
+    pickle.assign(static_cast<const char*>(data.get()), size);
   } catch (const Error&) {
     throw;
   } catch (const std::exception& e) {
-    std::string what = e.what();
-    if (const size_t nl = what.find('\n'); nl != std::string::npos) what.resize(nl);  // drop c10 backtraces
-    fail(path, "cannot read PyTorch zip archive (corrupt or truncated?): " + what);
+    fail(path, "cannot read PyTorch zip archive (corrupt or truncated?): " + first_line(e.what()));
   }
-  collect_tensors(root, "", out);
+  collect(read_pickle(pickle, path), "", reader, out);
   if (out.size() == 0) fail(path, "PyTorch archive holds no tensors");
   return out;
 }

@@ -1,0 +1,197 @@
+// SAM building blocks against hand-computed cases and independent formulas: Pillow's bilinear
+// resize, ResizeLongestSide, window partition, relative-position tables, the dense positional
+// encoding, weight-loading errors and the official ViT-B/L/H state_dict layouts.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "models/sam/image_encoder.h"
+#include "models/sam/resize_longest_side.h"
+#include "sam_fixture.h"
+
+namespace cls::sam {
+namespace {
+
+using testing::sam_fixture;
+
+TEST(SamResize, PreprocessShapeRoundsLikeTheReference) {
+  EXPECT_EQ(preprocess_shape(302, 403, 1024), std::make_pair(767, 1024));  // 302 * 1024/403 = 767.37
+  EXPECT_EQ(preprocess_shape(750, 1000, 1024), std::make_pair(768, 1024));
+  EXPECT_EQ(preprocess_shape(1024, 10, 1024), std::make_pair(1024, 10));
+  EXPECT_EQ(preprocess_shape(2, 3, 1024), std::make_pair(683, 1024));  // 682.67 + 0.5 -> 683
+}
+
+TEST(SamResize, PillowBilinearUpscaleByHand) {
+  // 1 x 2 -> 1 x 4: centres 0.25, 0.75, 1.25, 1.75 give weights (1), (.75,.25), (.25,.75), (1).
+  const uint8_t a[2] = {0, 200};
+  EXPECT_EQ(resize_bilinear_pil(a, 1, 2, 1, 1, 4), (std::vector<uint8_t>{0, 50, 150, 200}));
+  // Fixed-point rounding: 0.25 -> 0, 0.75 -> 1.
+  const uint8_t b[2] = {0, 1};
+  EXPECT_EQ(resize_bilinear_pil(b, 1, 2, 1, 1, 4), (std::vector<uint8_t>{0, 0, 1, 1}));
+  // The same along the vertical axis, channels kept apart.
+  const uint8_t c[4] = {0, 10, 200, 30};  // 2 x 1 x 2
+  EXPECT_EQ(resize_bilinear_pil(c, 2, 1, 2, 4, 1), (std::vector<uint8_t>{0, 10, 50, 15, 150, 25, 200, 30}));
+}
+
+TEST(SamResize, PillowBilinearDownscaleAntiAliases) {
+  // 4 -> 2: scale 2, support 2. Output 0: centre 1, pixels 0..2 with weights .75, .75, .25 (sum
+  // 1.75); output 1: centre 3, pixels 1..3 with .25, .75, .75. So pixel 2 (70) contributes
+  // 70 * .25/1.75 = 10 and 70 * .75/1.75 = 30.
+  const uint8_t a[4] = {0, 0, 70, 0};
+  EXPECT_EQ(resize_bilinear_pil(a, 1, 4, 1, 1, 2), (std::vector<uint8_t>{10, 30}));
+}
+
+TEST(SamResize, ApplyCoordsMatchesPromptsJson) {
+  const auto prompts = nlohmann::json::parse(read_text_file(sam_fixture("prompts.json")));
+  ResizeLongestSide t;
+  const std::pair<int, int> hw{302, 403};
+  for (const auto& set : prompts.at("prompt_sets")) {
+    if (set.contains("point_coords")) {
+      for (size_t i = 0; i < set["point_coords"].size(); ++i) {
+        double xy[2] = {set["point_coords"][i][0].get<double>(), set["point_coords"][i][1].get<double>()};
+        t.apply_coords(xy, 1, hw);
+        EXPECT_DOUBLE_EQ(xy[0], set["point_coords_transformed"][i][0].get<double>());
+        EXPECT_DOUBLE_EQ(xy[1], set["point_coords_transformed"][i][1].get<double>());
+      }
+    }
+    if (set.contains("box")) {
+      auto box = set["box"].get<std::vector<double>>();
+      t.apply_coords(box.data(), 2, hw);
+      for (int k = 0; k < 4; ++k) EXPECT_DOUBLE_EQ(box[k], set["box_transformed"][0][k].get<double>());
+    }
+  }
+}
+
+TEST(SamImageEncoder, WindowPartitionPadsAndRoundTrips) {
+  const auto x = torch::arange(2 * 5 * 7 * 3, torch::kFloat).view({2, 5, 7, 3});
+  auto [windows, pad_hw] = window_partition(x, 4);
+  EXPECT_EQ(pad_hw.first, 8);
+  EXPECT_EQ(pad_hw.second, 8);
+  ASSERT_EQ(windows.sizes(), (std::vector<int64_t>{2 * 2 * 2, 4, 4, 3}));
+  // Window 1 of image 0 = rows 0..3, columns 4..7 (row-major windows); column 7 is padding.
+  EXPECT_TRUE(torch::equal(windows[1].index({torch::indexing::Slice(), torch::indexing::Slice(0, 3)}),
+                           x[0].index({torch::indexing::Slice(0, 4), torch::indexing::Slice(4, 7)})));
+  EXPECT_EQ(windows[1].index({0, 3}).abs().sum().item<float>(), 0.0f);
+  EXPECT_TRUE(torch::equal(window_unpartition(windows, 4, pad_hw, {5, 7}), x));
+}
+
+TEST(SamImageEncoder, RelPosTableByHand) {
+  // Equal sizes, no interpolation: R[i, j] = rel_pos[i - j + k - 1].
+  const auto rel = torch::arange(5, torch::kFloat).view({5, 1});
+  const auto r = get_rel_pos(3, 3, rel).squeeze(-1);
+  EXPECT_TRUE(torch::equal(r, torch::tensor({{2.f, 1.f, 0.f}, {3.f, 2.f, 1.f}, {4.f, 3.f, 2.f}})));
+  // q = 2, k = 4: q coords scaled by 2; index = 2i - j + 3; table length 7.
+  const auto rel7 = torch::arange(7, torch::kFloat).view({7, 1});
+  EXPECT_TRUE(torch::equal(get_rel_pos(2, 4, rel7).squeeze(-1), torch::tensor({{3.f, 2.f, 1.f, 0.f}, {5.f, 4.f, 3.f, 2.f}})));
+  // Interpolation 3 -> 5 (linear, align_corners=False): src = (i + 0.5) * 3/5 - 0.5, clamped at 0.
+  const auto r3 = torch::tensor({0.f, 10.f, 40.f}).view({3, 1});
+  const auto t = get_rel_pos(3, 3, r3).squeeze(-1);
+  // Resized table: positions 0.0(clamped from -0.2), 0.4, 1.0, 1.6, 2.2(clamped to 2) ->
+  // 0, 4, 10, 28, 40. R[i, 0] = table[i + 2].
+  EXPECT_NEAR(t[0][0].item<float>(), 10.0f, 1e-5);
+  EXPECT_NEAR(t[1][0].item<float>(), 28.0f, 1e-5);
+  EXPECT_NEAR(t[2][0].item<float>(), 40.0f, 1e-5);
+  EXPECT_NEAR(t[0][2].item<float>(), 0.0f, 1e-5);
+  EXPECT_NEAR(t[0][1].item<float>(), 4.0f, 1e-5);
+}
+
+TEST(SamPromptEncoder, DensePeMatchesTheFormulaInDouble) {
+  Sam model = testing::load_tiny_sam();
+  const auto pe = model->prompt_encoder->get_dense_pe();  // [1, 64, 64, 64]
+  const auto G = model->prompt_encoder->pe_layer->positional_encoding_gaussian_matrix.to(torch::kDouble);
+  ASSERT_EQ(pe.sizes(), (std::vector<int64_t>{1, 64, 64, 64}));
+  const int F = int(G.size(1));
+  double worst = 0;
+  for (int i = 0; i < 64; i += 7)
+    for (int j = 0; j < 64; j += 5) {
+      const double cx = 2 * ((j + 0.5) / 64) - 1, cy = 2 * ((i + 0.5) / 64) - 1;
+      for (int f = 0; f < F; ++f) {
+        const double a = 2 * M_PI * (cx * G[0][f].item<double>() + cy * G[1][f].item<double>());
+        worst = std::max(worst, std::abs(pe[0][f][i][j].item<double>() - std::sin(a)));
+        worst = std::max(worst, std::abs(pe[0][F + f][i][j].item<double>() - std::cos(a)));
+      }
+    }
+  EXPECT_LT(worst, 1e-5);  // reference fp32 vs fp64: 2.9e-6
+}
+
+WeightFile tiny_weights_copy(Sam& model) {
+  WeightFile w("synthetic.safetensors");
+  for (const auto& [name, t] : sam_state_names(*model)) w.add(name, t.detach().clone());
+  return w;
+}
+
+std::string load_error(Sam& model, const WeightFile& w) {
+  try {
+    load_sam_weights(*model, w);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SamWeights, LoadErrorsNameTheFileAndTensor) {
+  Sam model(sam_config_from_json_file(sam_fixture("config.json")));
+  {
+    auto w = tiny_weights_copy(model);
+    w.remove("mask_decoder.iou_token.weight");
+    const auto msg = load_error(model, w);
+    EXPECT_NE(msg.find("synthetic.safetensors"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("missing tensor mask_decoder.iou_token.weight"), std::string::npos) << msg;
+  }
+  {
+    auto w = tiny_weights_copy(model);
+    w.remove("image_encoder.blocks.1.attn.rel_pos_h");
+    w.add("image_encoder.blocks.1.attn.rel_pos_h", torch::zeros({27, 32}));
+    w.add("image_encoder.extra", torch::zeros({1}));
+    w.remove("prompt_encoder.no_mask_embed.weight");
+    w.add("prompt_encoder.no_mask_embed.weight", torch::zeros({1, 64}, torch::kInt));
+    const auto before = model->image_encoder->pos_embed.clone();
+    const auto msg = load_error(model, w);
+    EXPECT_NE(msg.find("image_encoder.blocks.1.attn.rel_pos_h has shape [27, 32], expected [127, 32]"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("unexpected tensor image_encoder.extra"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("prompt_encoder.no_mask_embed.weight is not floating point"), std::string::npos) << msg;
+    EXPECT_TRUE(torch::equal(before, model->image_encoder->pos_embed));  // nothing copied
+  }
+  {
+    // f16 weights are converted.
+    auto w = tiny_weights_copy(model);
+    w.remove("mask_decoder.iou_token.weight");
+    w.add("mask_decoder.iou_token.weight", torch::full({1, 64}, 0.5, torch::kHalf));
+    load_sam_weights(*model, w);
+    EXPECT_EQ(model->mask_decoder->iou_token->weight[0][3].item<float>(), 0.5f);
+  }
+}
+
+// The model's state_dict names and shapes equal the official architecture's (the real key lists).
+// ViT-L/H are built with their first blocks only (up to and including the first global block) to
+// keep the test light; the remaining blocks repeat those.
+void expect_real_layout(const std::string& file, SamConfig cfg, int blocks_built) {
+  const auto j = nlohmann::json::parse(read_text_file(sam_fixture(file)));
+  const int depth = cfg.depth;
+  cfg.depth = blocks_built;
+  Sam model(cfg);
+  auto names = sam_state_names(*model);
+  size_t checked = 0;
+  for (const auto& t : j.at("tensors")) {
+    const auto name = t.at("name").get<std::string>();
+    if (name.rfind("image_encoder.blocks.", 0) == 0 && std::stoi(name.substr(21)) >= blocks_built) continue;
+    const auto it = names.find(name);
+    ASSERT_NE(it, names.end()) << file << ": model lacks " << name;
+    EXPECT_EQ(it->second.sizes().vec(), t.at("shape").get<std::vector<int64_t>>()) << name;
+    ++checked;
+  }
+  EXPECT_EQ(checked, names.size()) << file << ": the model has tensors the official one does not";
+  EXPECT_EQ(j.at("encoder").at("depth").get<int>(), depth);
+}
+
+TEST(SamWeights, OfficialLayouts) {
+  expect_real_layout("real_vit_b_keys.json", sam_vit_b(), 3);
+  expect_real_layout("real_vit_l_keys.json", sam_vit_l(), 6);
+  expect_real_layout("real_vit_h_keys.json", sam_vit_h(), 8);
+}
+
+}  // namespace
+}  // namespace cls::sam

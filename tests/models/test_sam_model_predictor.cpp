@@ -1,0 +1,196 @@
+// SamPredictor on the tiny reference model against the reference outputs of tests/fixtures/sam/:
+// the preprocessed input (bit-exact), the image embedding, and for every prompt set the sparse and
+// dense prompt embeddings, IoU predictions, low-res logits and full-size mask logits with
+// multimask on and off. Tolerances: the fixture README's suggested checks for a float32 port
+// (embedding atol 1e-4; logits atol 1e-3 + rtol 1e-4; IoU atol 1e-5).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/hash.h"
+#include "models/sam/sam_predictor.h"
+#include "sam_fixture.h"
+
+namespace cls::sam {
+namespace {
+
+using testing::compare;
+using testing::load_npy_tensor;
+using testing::sam_fixture;
+using torch::indexing::None;
+using torch::indexing::Slice;
+
+constexpr double kLogitAtol = 1e-3, kLogitRtol = 1e-4, kIouAtol = 1e-5;
+
+cv::Mat test_image_rgb() {
+  cv::Mat bgr = cv::imread(sam_fixture("test_image.png"), cv::IMREAD_COLOR);
+  EXPECT_FALSE(bgr.empty());
+  cv::Mat rgb;
+  cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
+  return rgb;
+}
+
+// FNV-1a of input_image.npy's data block (float32 [1,3,1024,1024], 12.5 MB, not copied).
+constexpr const char* kInputImageHash = "f5519326bb1df8ad";
+
+TEST(SamPredictor, PreprocessedInputIsBitExact) {
+  SamPredictor predictor(testing::load_tiny_sam());
+  const cv::Mat rgb = test_image_rgb();
+  ASSERT_EQ(rgb.rows, 302);
+  ASSERT_EQ(rgb.cols, 403);
+  const auto input = predictor.transformed_input(rgb.data, rgb.rows, rgb.cols).contiguous();
+  ASSERT_EQ(input.sizes(), (std::vector<int64_t>{1, 3, 1024, 1024}));
+  // Spot values printed by the reference (first pixels of the red channel) and the zero padding.
+  EXPECT_FLOAT_EQ(input[0][0][0][0].item<float>(), -1.3130404949188232f);
+  EXPECT_FLOAT_EQ(input[0][0][0][3].item<float>(), -1.3472900390625f);
+  EXPECT_EQ(input.index({0, Slice(), Slice(767, None), Slice()}).abs().sum().item<float>(), 0.0f);
+  const std::string bytes(static_cast<const char*>(input.data_ptr()), size_t(input.numel()) * sizeof(float));
+  EXPECT_EQ(fnv1a64_hex(bytes), kInputImageHash);
+}
+
+TEST(SamPredictor, ImageEmbeddingMatchesReference) {
+  SamPredictor predictor(testing::load_tiny_sam());
+  const cv::Mat rgb = test_image_rgb();
+  predictor.set_image(rgb.data, rgb.rows, rgb.cols);
+  EXPECT_EQ(predictor.input_size(), std::make_pair(767, 1024));
+  EXPECT_EQ(predictor.original_size(), std::make_pair(302, 403));
+  const auto ref = load_npy_tensor("image_embedding.npy");
+  ASSERT_EQ(predictor.features().sizes(), ref.sizes());
+  const auto d = compare(predictor.features(), ref, 1e-4, 0);
+  EXPECT_LE(d.worst_excess, 0) << "max |diff| " << d.max_abs;
+}
+
+SamPrompt prompt_of(const nlohmann::json& set) {
+  SamPrompt p;
+  if (set.contains("point_coords")) {
+    for (const auto& xy : set["point_coords"]) p.points.push_back({xy[0].get<double>(), xy[1].get<double>()});
+    p.labels = set["point_labels"].get<std::vector<int>>();
+  }
+  if (set.contains("box")) {
+    const auto b = set["box"].get<std::vector<double>>();
+    p.box = std::array<double, 4>{b[0], b[1], b[2], b[3]};
+  }
+  if (set.contains("mask_input")) p.mask_input = load_npy_tensor(set["mask_input"].get<std::string>());
+  return p;
+}
+
+// The reference file if it was copied whole, else its [..., ::4, ::4] sample (<name>_stride4.npy);
+// `ours` is sampled the same way.
+void expect_logits(const std::string& file, const torch::Tensor& ours, const std::string& what) {
+  const std::string full = sam_fixture(file);
+  torch::Tensor ref, mine = ours;
+  if (std::filesystem::exists(full)) {
+    ref = load_npy_tensor(file);
+    // Binary masks: no sign flip where the reference logit is clearly away from 0.
+    const auto flips = ((mine > 0) != (ref > 0)) & (ref.abs() >= 1e-3);
+    EXPECT_EQ(flips.sum().item<int64_t>(), 0) << what;
+  } else {
+    ref = load_npy_tensor(file.substr(0, file.size() - 4) + "_stride4.npy");
+    mine = ours.index({"...", Slice(None, None, 4), Slice(None, None, 4)});
+  }
+  ASSERT_EQ(mine.sizes(), ref.sizes()) << what;
+  const auto d = compare(mine, ref, kLogitAtol, kLogitRtol);
+  EXPECT_LE(d.worst_excess, 0) << what << ": max |diff| " << d.max_abs;
+}
+
+TEST(SamPredictor, DecoderMatchesReferenceForEveryPromptSet) {
+  SamPredictor predictor(testing::load_tiny_sam());
+  // The decoder is checked on the reference embedding, independently of the encoder.
+  predictor.set_features(load_npy_tensor("image_embedding.npy"), {302, 403});
+  const auto prompts = nlohmann::json::parse(read_text_file(sam_fixture("prompts.json")));
+  int sets = 0;
+  for (const auto& set : prompts.at("prompt_sets")) {
+    const auto name = set["name"].get<std::string>();
+    SCOPED_TRACE(name);
+    const SamPrompt prompt = prompt_of(set);
+
+    // Prompt embeddings, with the tensors predict() builds (coords transformed in float64 -> float32).
+    {
+      torch::Tensor coords, labels, box, mask;
+      if (set.contains("point_coords_transformed")) {
+        std::vector<double> flat;
+        for (const auto& xy : set["point_coords_transformed"]) flat.push_back(xy[0]), flat.push_back(xy[1]);
+        coords = torch::tensor(flat, torch::kDouble).view({1, -1, 2}).to(torch::kFloat);
+        labels = torch::tensor(set["point_labels"].get<std::vector<int>>(), torch::kInt).view({1, -1});
+      }
+      if (set.contains("box_transformed"))
+        box = torch::tensor(set["box_transformed"][0].get<std::vector<double>>(), torch::kDouble).view({1, 4}).to(torch::kFloat);
+      if (prompt.mask_input.defined()) mask = prompt.mask_input.unsqueeze(0);
+      torch::NoGradGuard no_grad;
+      const auto emb = predictor.model()->prompt_encoder->forward(coords, labels, box, mask);
+      const auto ref_sparse = load_npy_tensor(set["sparse_embeddings"].get<std::string>());
+      ASSERT_EQ(emb.sparse.sizes(), ref_sparse.sizes());
+      EXPECT_LE(compare(emb.sparse, ref_sparse, 1e-5, 0).worst_excess, 0) << "sparse embeddings";
+      if (set.contains("dense_embeddings")) {
+        const auto ref_dense = load_npy_tensor(set["dense_embeddings"].get<std::string>());
+        ASSERT_EQ(emb.dense.sizes(), ref_dense.sizes());
+        EXPECT_LE(compare(emb.dense, ref_dense, 1e-4, 0).worst_excess, 0) << "dense embeddings";
+      }
+    }
+
+    for (const bool multimask : {false, true}) {
+      const auto& files = set["files"][multimask ? "mm1" : "mm0"];
+      const std::string what = name + (multimask ? " mm1" : " mm0");
+      const auto out = predictor.predict(prompt, multimask, /*return_logits=*/true);
+      const auto ref_iou = load_npy_tensor(files["iou_predictions"].get<std::string>());
+      ASSERT_EQ(out.iou_predictions.sizes(), ref_iou.sizes()) << what;
+      const auto di = compare(out.iou_predictions, ref_iou, kIouAtol, 0);
+      EXPECT_LE(di.worst_excess, 0) << what << " iou: max |diff| " << di.max_abs;
+      expect_logits(files["low_res_logits"].get<std::string>(), out.low_res_logits, what + " low-res logits");
+      if (files.contains("masks_logits")) {
+        ASSERT_EQ(out.masks.sizes(), (std::vector<int64_t>{1, multimask ? 3 : 1, 302, 403})) << what;
+        expect_logits(files["masks_logits"].get<std::string>(), out.masks, what + " mask logits");
+      }
+    }
+    ++sets;
+  }
+  EXPECT_EQ(sets, 6);
+}
+
+TEST(SamPredictor, BatchedFloat64PointsAsTheAmgPassesThem) {
+  SamPredictor predictor(testing::load_tiny_sam());
+  predictor.set_features(load_npy_tensor("image_embedding.npy"), {302, 403});
+  // Two single-point prompts in one batch, float64 coordinates in the 1024 frame: the first is
+  // p0_point's point, so its row must reproduce p0_point's multimask outputs.
+  const auto coords = torch::tensor({429.4193548387097, 421.59602649006627, 767.36476426799, 231.1158940397351}, torch::kDouble)
+                          .view({2, 1, 2});
+  const auto labels = torch::ones({2, 1}, torch::kInt);
+  const auto out = predictor.predict_batch(coords, labels, {}, {}, /*multimask_output=*/true, /*return_logits=*/true);
+  ASSERT_EQ(out.masks.sizes(), (std::vector<int64_t>{2, 3, 302, 403}));
+  ASSERT_EQ(out.low_res_logits.sizes(), (std::vector<int64_t>{2, 3, 256, 256}));
+  ASSERT_EQ(out.iou_predictions.sizes(), (std::vector<int64_t>{2, 3}));
+  EXPECT_LE(compare(out.iou_predictions.slice(0, 0, 1), load_npy_tensor("decoder/p0_point_mm1_iou_predictions.npy"), kIouAtol, 0)
+                .worst_excess,
+            0);
+  expect_logits("decoder/p0_point_mm1_low_res_logits.npy", out.low_res_logits.slice(0, 0, 1), "batched low-res");
+  expect_logits("decoder/p0_point_mm1_masks_logits.npy", out.masks.slice(0, 0, 1), "batched masks");
+  // The second prompt is not the first one again.
+  EXPECT_GT((out.low_res_logits[1] - out.low_res_logits[0]).abs().max().item<float>(), 1.0f);
+  // Binary output = logits > mask_threshold.
+  const auto bin = predictor.predict_batch(coords, labels, {}, {}, true, /*return_logits=*/false);
+  EXPECT_EQ(bin.masks.scalar_type(), torch::kBool);
+  EXPECT_TRUE(torch::equal(bin.masks, out.masks > 0.0));
+}
+
+TEST(SamPredictor, BadCallsAreErrors) {
+  SamPredictor predictor(testing::load_tiny_sam());
+  SamPrompt p;
+  p.points = {{1.0, 2.0}};
+  p.labels = {1};
+  EXPECT_THROW(predictor.predict(p), Error);
+  predictor.set_features(torch::zeros({1, 64, 64, 64}), {10, 10});
+  p.labels.clear();
+  EXPECT_THROW(predictor.predict(p), Error);
+  EXPECT_THROW(predictor.set_features(torch::zeros({1, 32, 64, 64}), {10, 10}), Error);
+  p.points.clear();
+  p.mask_input = torch::zeros({1, 128, 128});  // must be 1 x 256 x 256
+  EXPECT_THROW(predictor.predict(p), Error);
+}
+
+}  // namespace
+}  // namespace cls::sam
