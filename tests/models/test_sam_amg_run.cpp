@@ -14,27 +14,18 @@
 #include "models/sam_amg/langsplat_post.h"
 #include "models/sam_amg/records_json.h"
 #include "models/sam_amg/sam_amg_model.h"
-#include "models/weights/weight_file.h"
 #include "sam_amg_test_util.h"
+#include "sam_fixture.h"
 
 using namespace cls::amg;
 using amg_test::amg_fixture;
 
 namespace {
 
-std::string sam_fixture(const std::string& name) { return std::string(CLS_TEST_FIXTURES) + "/sam/" + name; }
+using cls::sam::testing::sam_fixture;
 
 cls::sam::SamPredictor& tiny_predictor() {
-  static cls::sam::SamPredictor* predictor = [] {
-    const auto cfg = cls::sam::sam_config_from_json_file(sam_fixture("config.json"));
-    cls::sam::Sam model(cfg);
-    const cls::WeightFile file = cls::load_weight_file(sam_fixture("weights.safetensors"));
-    std::map<std::string, torch::Tensor> weights;
-    for (const auto& name : file.names()) weights[name] = file.get(name);
-    cls::sam::load_sam_weights(*model, weights, file.source());
-    model->eval();
-    return new cls::sam::SamPredictor(model);
-  }();
+  static cls::sam::SamPredictor* predictor = new cls::sam::SamPredictor(cls::sam::testing::load_tiny_sam());
   return *predictor;
 }
 
