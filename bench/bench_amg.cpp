@@ -1,0 +1,203 @@
+// LangSplat mask NMS (bit-packed fast vs LibTorch matrix form vs the literal reference) for
+// M masks at 1000x750, and the whole LangSplat AMG on a 1000x750 image with a randomly initialised
+// SAM (ViT-B by default). Usage: bench_amg [--threads N] [--masks 200,400,...] [--model vit_b|none]
+// Figures go to docs/benchmarks.md.
+#include <omp.h>
+#include <torch/torch.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/args.h"
+#include "core/error.h"
+#include "models/sam/sam_config.h"
+#include "models/sam/sam_predictor.h"
+#include "models/sam_amg/automatic_mask_generator.h"
+#include "models/sam_amg/langsplat_post.h"
+#include "models/sam_amg/mask_nms.h"
+#include "models/sam_amg/sam_amg_model.h"
+
+namespace cls::amg {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// SAM-like masks: ellipses of many sizes, a third of them nested in or near-copies of earlier
+// ones, so that containment and IoU suppression both happen.
+std::vector<BinaryMask> synthetic_masks(int n, int h, int w, std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<BinaryMask> masks;
+  std::vector<std::array<double, 4>> ellipses;  // cx, cy, rx, ry
+  for (int k = 0; k < n; ++k) {
+    BinaryMask m(h, w);
+    double cx = u(rng) * w, cy = u(rng) * h, rx = 5 + std::pow(u(rng), 2) * w / 3, ry = 5 + std::pow(u(rng), 2) * h / 3;
+    if (k > 0 && u(rng) < 0.33) {  // related to an earlier mask: same centre, scaled down a little or a lot
+      const auto& e = ellipses[std::uniform_int_distribution<int>(0, k - 1)(rng)];
+      const double f = 0.4 + 0.55 * u(rng);
+      cx = e[0], cy = e[1], rx = e[2] * f, ry = e[3] * f;
+    }
+    ellipses.push_back({cx, cy, rx, ry});
+    const int y0 = std::max(0, int(cy - ry)), y1 = std::min(h, int(cy + ry) + 1);
+    const int x0 = std::max(0, int(cx - rx)), x1 = std::min(w, int(cx + rx) + 1);
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x)
+        m.pixels[size_t(y) * w + x] = ((x - cx) * (x - cx) / (rx * rx) + (y - cy) * (y - cy) / (ry * ry)) <= 1.0;
+    masks.push_back(std::move(m));
+  }
+  return masks;
+}
+
+void bench_mask_nms(const std::vector<int>& sizes, int threads, int reference_max) {
+  const int h = 750, w = 1000;
+  std::printf("LangSplat mask_nms at %dx%d, %d threads (fast = bit-packed + popcount; torch = matmul form on CPU)\n\n",
+              w, h, threads);
+  std::printf("| masks | kept | fast | fast, 1 thread | torch CPU | reference | fast vs reference |\n");
+  std::printf("|---|---|---|---|---|---|---|\n");
+  std::mt19937 rng(1);
+  for (int n : sizes) {
+    const auto masks = synthetic_masks(n, h, w, rng);
+    std::vector<double> scores(n);
+    std::uniform_real_distribution<double> u(0.5, 1.0);
+    for (auto& s : scores) s = u(rng);
+    auto t0 = Clock::now();
+    std::vector<PackedMask> packed(n);
+#pragma omp parallel for num_threads(threads)
+    for (int i = 0; i < n; ++i) packed[i] = pack_mask(masks[i]);
+    const double t_pack = seconds_since(t0);
+    t0 = Clock::now();
+    const auto fast = mask_nms_fast(packed, scores, {}, threads);
+    const double t_fast = seconds_since(t0) + t_pack;
+    t0 = Clock::now();
+    const auto fast1 = mask_nms_fast(packed, scores, {}, 1);
+    const double t_fast1 = seconds_since(t0) + t_pack;
+    t0 = Clock::now();
+    const auto tor = mask_nms_torch(masks, scores, {});
+    const double t_torch = seconds_since(t0);
+    std::string ref_cell = "-", ratio = "-";
+    bool same = fast == fast1 && fast == tor;
+    if (n <= reference_max) {
+      t0 = Clock::now();
+      const auto ref = mask_nms_reference(masks, scores, {});
+      const double t_ref = seconds_since(t0);
+      same = same && ref == fast;
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%.2f s", t_ref);
+      ref_cell = buf;
+      std::snprintf(buf, sizeof buf, "%.0fx", t_ref / t_fast);
+      ratio = buf;
+    }
+    std::printf("| %d | %zu | %.3f s | %.3f s | %.2f s | %s | %s |%s\n", n, fast.size(), t_fast, t_fast1, t_torch,
+                ref_cell.c_str(), ratio.c_str(), same ? "" : " **RESULTS DIFFER**");
+    std::fflush(stdout);
+  }
+}
+
+// Times the two model calls the generator makes.
+class TimedModel : public AmgModel {
+ public:
+  explicit TimedModel(AmgModel& inner) : inner_(inner) {}
+  void set_image(const uint8_t* rgb, int h, int w) override {
+    const auto t0 = Clock::now();
+    inner_.set_image(rgb, h, w);
+    encode_s += seconds_since(t0), ++crops;
+  }
+  void predict_points(const std::vector<Point2d>& pts, std::vector<float>& logits, std::vector<float>& ious) override {
+    const auto t0 = Clock::now();
+    inner_.predict_points(pts, logits, ious);
+    decode_s += seconds_since(t0), prompts += pts.size();
+  }
+  double encode_s = 0, decode_s = 0;
+  int crops = 0;
+  size_t prompts = 0;
+
+ private:
+  AmgModel& inner_;
+};
+
+void bench_amg(const std::string& model_name, int points_per_side, int threads) {
+  const int h = 750, w = 1000;
+  torch::manual_seed(0);
+  sam::Sam model(sam::sam_config_by_name(model_name));
+  model->eval();
+  sam::SamPredictor predictor(model);
+  // A smooth synthetic photo: gradients plus a few flat rectangles and discs.
+  std::vector<uint8_t> rgb(size_t(h) * w * 3);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      uint8_t* p = &rgb[(size_t(y) * w + x) * 3];
+      p[0] = uint8_t(x * 255 / w), p[1] = uint8_t(y * 255 / h), p[2] = uint8_t(((x / 125) + (y / 125)) % 2 ? 200 : 60);
+      if ((x - 600) * (x - 600) + (y - 300) * (y - 300) < 120 * 120) p[0] = 250, p[1] = 30, p[2] = 30;
+    }
+  AmgParams params;  // LangSplat's
+  params.points_per_side = points_per_side;
+  SamPredictorAmgModel sam_model(predictor);
+  TimedModel timed(sam_model);
+  torch::NoGradGuard no_grad;
+  auto t0 = Clock::now();
+  const MaskLevels levels = generate_masks(timed, rgb.data(), h, w, params, threads);
+  const double t_amg = seconds_since(t0);
+  t0 = Clock::now();
+  const auto updated = masks_update(levels, MaskNmsParams{}, MaskNmsMethod::Fast, threads);
+  const SegMap map = build_seg_map(updated.levels, h, w);
+  const double t_post = seconds_since(t0);
+  std::printf("\nAMG (LangSplat parameters, points_per_side %d, crop_n_layers 1) on %dx%d, SAM %s with random "
+              "weights, %d threads\n\n",
+              points_per_side, w, h, model_name.c_str(), threads);
+  std::printf("| crops | prompts | encoder (all crops) | decoder + postprocess_masks | AMG own work | AMG total "
+              "| masks default/s/m/l | masks_update + seg map |\n|---|---|---|---|---|---|---|---|\n");
+  std::printf("| %d | %zu | %.1f s | %.1f s | %.1f s | %.1f s | %zu/%zu/%zu/%zu | %.2f s |\n", timed.crops,
+              timed.prompts, timed.encode_s, timed.decode_s, t_amg - timed.encode_s - timed.decode_s, t_amg,
+              levels[0].size(), levels[1].size(), levels[2].size(), levels[3].size(), t_post);
+  (void)map;
+}
+
+std::vector<int> parse_sizes(const std::string& s) {
+  std::vector<int> v;
+  std::stringstream ss(s);
+  std::string tok;
+  while (std::getline(ss, tok, ','))
+    if (!tok.empty()) v.push_back(std::stoi(tok));
+  return v;
+}
+
+}  // namespace
+}  // namespace cls::amg
+
+int main(int argc, char** argv) {
+  cls::Args args("bench_amg",
+                 "LangSplat mask NMS (fast vs torch vs reference) at 1000x750 and the whole LangSplat AMG on a "
+                 "1000x750 image with a randomly initialised SAM. Prints Markdown rows for docs/benchmarks.md.",
+                 "");
+  args.option("threads", "2", "CPU threads (OpenMP and LibTorch)")
+      .option("masks", "200,400,600,800,1000", "mask counts for the NMS benchmark (empty: skip)")
+      .option("reference-max", "200", "largest mask count also timed with the slow reference")
+      .option("model", "vit_b", "SAM for the AMG benchmark: vit_b, vit_l, vit_h, or none to skip")
+      .option("points-per-side", "32", "AMG grid (LangSplat: 32)");
+  int threads = 0;
+  try {
+    if (!args.parse(argc, argv)) return 0;
+    threads = args.get_int("threads");
+    if (threads < 1) throw cls::UsageError("bench_amg: --threads must be positive");
+  } catch (const cls::UsageError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  }
+  omp_set_num_threads(threads);
+  at::set_num_threads(threads);
+  try {
+    const auto sizes = cls::amg::parse_sizes(args.get("masks"));
+    if (!sizes.empty()) cls::amg::bench_mask_nms(sizes, threads, args.get_int("reference-max"));
+    if (args.get("model") != "none") cls::amg::bench_amg(args.get("model"), args.get_int("points-per-side"), threads);
+  } catch (const cls::Error& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,21 @@
+#pragma once
+// Helpers shared by the AMG tests: fixture paths, mask comparison.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "models/sam_amg/binary_mask.h"
+
+namespace amg_test {
+
+inline std::string amg_fixture(const std::string& name) {
+  return std::string(CLS_TEST_FIXTURES) + "/sam/amg/" + name;
+}
+
+inline double mask_iou(const cls::amg::BinaryMask& a, const cls::amg::BinaryMask& b) {
+  int64_t inter = 0, uni = 0;
+  for (size_t i = 0; i < a.pixels.size(); ++i) inter += a.pixels[i] && b.pixels[i], uni += a.pixels[i] || b.pixels[i];
+  return uni == 0 ? 1.0 : static_cast<double>(inter) / uni;
+}
+
+}  // namespace amg_test
