@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_timer.h"
 #include "cli/args.h"
 #include "core/error.h"
 #include "models/sam/sam_config.h"
@@ -26,8 +27,8 @@
 namespace cls::amg {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+using bench::Clock;
+using bench::seconds_since;
 
 // SAM-like masks: ellipses of many sizes, a third of them nested in or near-copies of earlier
 // ones, so that containment and IoU suppression both happen.
