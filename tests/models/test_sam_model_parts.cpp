@@ -171,8 +171,8 @@ TEST(SamWeights, LoadErrorsNameTheFileAndTensor) {
 // keep the test light; the remaining blocks repeat those.
 void expect_real_layout(const std::string& file, SamConfig cfg, int blocks_built) {
   const auto j = nlohmann::json::parse(read_text_file(sam_fixture(file)));
-  const int depth = cfg.depth;
-  cfg.depth = blocks_built;
+  const int depth = cfg.encoder_depth;
+  cfg.encoder_depth = blocks_built;
   Sam model(cfg);
   auto names = sam_state_names(*model);
   size_t checked = 0;
@@ -212,9 +212,9 @@ TEST(SamWeights, LoadSamReadsOfficialAndHuggingFaceNames) {
 }
 
 TEST(SamWeights, OfficialLayouts) {
-  expect_real_layout("real_vit_b_keys.json", sam_vit_b(), 3);
-  expect_real_layout("real_vit_l_keys.json", sam_vit_l(), 6);
-  expect_real_layout("real_vit_h_keys.json", sam_vit_h(), 8);
+  expect_real_layout("real_vit_b_keys.json", sam_config_by_name("vit_b"), 3);
+  expect_real_layout("real_vit_l_keys.json", sam_config_by_name("vit_l"), 6);
+  expect_real_layout("real_vit_h_keys.json", sam_config_by_name("vit_h"), 8);
 }
 
 }  // namespace

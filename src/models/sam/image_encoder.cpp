@@ -92,12 +92,12 @@ torch::Tensor ViTAttentionImpl::forward(const torch::Tensor& x) {
 }
 
 ViTBlockImpl::ViTBlockImpl(const SamConfig& cfg, int64_t window_size_) : window_size(window_size_) {
-  const int64_t dim = cfg.embed_dim;
+  const int64_t dim = cfg.encoder_embed_dim;
   const auto ln = torch::nn::LayerNormOptions({dim}).eps(1e-6);
   norm1 = register_module("norm1", torch::nn::LayerNorm(ln));
-  const int64_t grid = cfg.embedding_size();
+  const int64_t grid = cfg.image_embedding_size();
   const auto input_size = window_size == 0 ? std::make_pair(grid, grid) : std::make_pair(window_size, window_size);
-  attn = register_module("attn", ViTAttention(dim, cfg.num_heads, cfg.qkv_bias, cfg.use_rel_pos, input_size));
+  attn = register_module("attn", ViTAttention(dim, cfg.encoder_num_heads, cfg.qkv_bias, cfg.use_rel_pos, input_size));
   norm2 = register_module("norm2", torch::nn::LayerNorm(ln));
   mlp = register_module("mlp", MLPBlock(dim, int64_t(dim * cfg.mlp_ratio), Activation::GELU));
 }
@@ -122,19 +122,19 @@ PatchEmbedImpl::PatchEmbedImpl(int64_t patch_size, int64_t in_chans, int64_t emb
 torch::Tensor PatchEmbedImpl::forward(const torch::Tensor& x) { return proj(x).permute({0, 2, 3, 1}); }
 
 ImageEncoderViTImpl::ImageEncoderViTImpl(const SamConfig& cfg) {
-  patch_embed = register_module("patch_embed", PatchEmbed(cfg.patch_size, cfg.in_chans, cfg.embed_dim));
-  const int64_t grid = cfg.embedding_size();
-  if (cfg.use_abs_pos) pos_embed = register_parameter("pos_embed", torch::zeros({1, grid, grid, int64_t(cfg.embed_dim)}));
-  for (int i = 0; i < cfg.depth; ++i) {
+  patch_embed = register_module("patch_embed", PatchEmbed(cfg.patch_size, cfg.in_chans, cfg.encoder_embed_dim));
+  const int64_t grid = cfg.image_embedding_size();
+  if (cfg.use_abs_pos) pos_embed = register_parameter("pos_embed", torch::zeros({1, grid, grid, int64_t(cfg.encoder_embed_dim)}));
+  for (int i = 0; i < cfg.encoder_depth; ++i) {
     const bool global = std::find(cfg.global_attn_indexes.begin(), cfg.global_attn_indexes.end(), i) != cfg.global_attn_indexes.end();
     blocks->push_back(ViTBlock(cfg, global ? 0 : cfg.window_size));
   }
   register_module("blocks", blocks);
   using torch::nn::Conv2dOptions;
-  neck->push_back(torch::nn::Conv2d(Conv2dOptions(cfg.embed_dim, cfg.out_chans, 1).bias(false)));
-  neck->push_back(LayerNorm2d(cfg.out_chans));
-  neck->push_back(torch::nn::Conv2d(Conv2dOptions(cfg.out_chans, cfg.out_chans, 3).padding(1).bias(false)));
-  neck->push_back(LayerNorm2d(cfg.out_chans));
+  neck->push_back(torch::nn::Conv2d(Conv2dOptions(cfg.encoder_embed_dim, cfg.prompt_embed_dim, 1).bias(false)));
+  neck->push_back(LayerNorm2d(cfg.prompt_embed_dim));
+  neck->push_back(torch::nn::Conv2d(Conv2dOptions(cfg.prompt_embed_dim, cfg.prompt_embed_dim, 3).padding(1).bias(false)));
+  neck->push_back(LayerNorm2d(cfg.prompt_embed_dim));
   register_module("neck", neck);
 }
 

@@ -6,7 +6,7 @@ using torch::indexing::Slice;
 
 MaskDecoderImpl::MaskDecoderImpl(const SamConfig& cfg) : num_mask_tokens(cfg.num_multimask_outputs + 1) {
   const int64_t dim = cfg.prompt_embed_dim;
-  transformer = register_module("transformer", TwoWayTransformer(cfg.decoder_transformer_depth, dim, cfg.decoder_num_heads,
+  transformer = register_module("transformer", TwoWayTransformer(cfg.decoder_depth, dim, cfg.decoder_num_heads,
                                                                  cfg.decoder_mlp_dim, cfg.attention_downsample_rate));
   iou_token = register_module("iou_token", torch::nn::Embedding(1, dim));
   mask_tokens = register_module("mask_tokens", torch::nn::Embedding(num_mask_tokens, dim));

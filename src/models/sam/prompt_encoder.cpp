@@ -37,8 +37,8 @@ torch::Tensor PositionEmbeddingRandomImpl::forward_with_coords(const torch::Tens
 
 PromptEncoderImpl::PromptEncoderImpl(const SamConfig& cfg)
     : embed_dim(cfg.prompt_embed_dim),
-      image_embedding_size(cfg.embedding_size(), cfg.embedding_size()),
-      input_image_size(cfg.img_size, cfg.img_size) {
+      image_embedding_size(cfg.image_embedding_size(), cfg.image_embedding_size()),
+      input_image_size(cfg.image_size, cfg.image_size) {
   pe_layer = register_module("pe_layer", PositionEmbeddingRandom(embed_dim / 2));
   for (int i = 0; i < 4; ++i) point_embeddings->push_back(torch::nn::Embedding(1, embed_dim));
   register_module("point_embeddings", point_embeddings);

@@ -7,26 +7,10 @@
 
 namespace cls::sam {
 
-namespace {
-SamConfig official(int embed_dim, int depth, int num_heads, std::vector<int> global_attn_indexes) {
-  SamConfig c;
-  c.embed_dim = embed_dim;
-  c.depth = depth;
-  c.num_heads = num_heads;
-  c.global_attn_indexes = std::move(global_attn_indexes);
-  return c;
-}
-}  // namespace
-
-SamConfig sam_vit_b() { return official(768, 12, 12, {2, 5, 8, 11}); }
-SamConfig sam_vit_l() { return official(1024, 24, 16, {5, 11, 17, 23}); }
-SamConfig sam_vit_h() { return official(1280, 32, 16, {7, 15, 23, 31}); }
-
 SamConfig sam_config_by_name(const std::string& name) {
-  if (name == "vit_b") return sam_vit_b();
-  if (name == "vit_l") return sam_vit_l();
-  if (name == "vit_h") return sam_vit_h();
-  throw Error("unknown SAM model '" + name + "' (expected vit_b, vit_l or vit_h)");
+  SamConfig c;
+  static_cast<SamArch&>(c) = sam_arch(name);
+  return c;
 }
 
 SamConfig sam_config_from_json_file(const std::string& path) {
@@ -38,20 +22,19 @@ SamConfig sam_config_from_json_file(const std::string& path) {
   }
   SamConfig c;
   try {
-    c.img_size = j.at("img_size").get<int>();
+    c.image_size = j.at("img_size").get<int>();
     c.patch_size = j.at("patch_size").get<int>();
-    c.embed_dim = j.at("embed_dim").get<int>();
-    c.depth = j.at("depth").get<int>();
-    c.num_heads = j.at("num_heads").get<int>();
+    c.encoder_embed_dim = j.at("embed_dim").get<int>();
+    c.encoder_depth = j.at("depth").get<int>();
+    c.encoder_num_heads = j.at("num_heads").get<int>();
     c.global_attn_indexes = j.at("global_attn_indexes").get<std::vector<int>>();
     c.window_size = j.at("window_size").get<int>();
     c.use_rel_pos = j.at("use_rel_pos").get<bool>();
-    c.mlp_ratio = j.at("mlp_ratio").get<double>();
+    c.mlp_ratio = j.at("mlp_ratio").get<float>();
     c.qkv_bias = j.at("qkv_bias").get<bool>();
-    c.out_chans = j.at("out_chans").get<int>();
     c.prompt_embed_dim = j.at("prompt_embed_dim").get<int>();
     c.mask_in_chans = j.at("mask_in_chans").get<int>();
-    c.decoder_transformer_depth = j.at("decoder_transformer_depth").get<int>();
+    c.decoder_depth = j.at("decoder_transformer_depth").get<int>();
     c.decoder_mlp_dim = j.at("decoder_mlp_dim").get<int>();
     c.decoder_num_heads = j.at("decoder_num_heads").get<int>();
     c.iou_head_depth = j.at("iou_head_depth").get<int>();
@@ -65,8 +48,11 @@ SamConfig sam_config_from_json_file(const std::string& path) {
   } catch (const nlohmann::json::exception& e) {
     fail(path, std::string("bad SAM config: ") + e.what());
   }
-  if (c.patch_size <= 0 || c.img_size % c.patch_size != 0 || c.embed_dim % c.num_heads != 0)
+  if (c.patch_size <= 0 || c.image_size % c.patch_size != 0 || c.encoder_embed_dim % c.encoder_num_heads != 0)
     fail(path, "inconsistent SAM config (img_size/patch_size/embed_dim/num_heads)");
+  // The neck's output is the prompt embedding: the official code builds both from one number.
+  if (j.contains("out_chans") && j["out_chans"] != c.prompt_embed_dim)
+    fail(path, "out_chans must equal prompt_embed_dim");
   return c;
 }
 

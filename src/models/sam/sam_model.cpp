@@ -23,14 +23,14 @@ torch::Tensor SamImpl::preprocess(const torch::Tensor& x) const {
   const auto dev = x.device();
   auto y = (x.to(torch::kFloat) - pixel_mean.to(dev)) / pixel_std.to(dev);
   const int64_t h = y.size(2), w = y.size(3);
-  const int64_t padh = config.img_size - h, padw = config.img_size - w;
+  const int64_t padh = config.image_size - h, padw = config.image_size - w;
   return F::pad(y, F::PadFuncOptions({0, padw, 0, padh}));
 }
 
 torch::Tensor SamImpl::postprocess_masks(const torch::Tensor& masks, std::pair<int64_t, int64_t> input_hw,
                                          std::pair<int64_t, int64_t> original_hw) const {
   auto opts = F::InterpolateFuncOptions().mode(torch::kBilinear).align_corners(false);
-  auto m = F::interpolate(masks, opts.size(std::vector<int64_t>{config.img_size, config.img_size}));
+  auto m = F::interpolate(masks, opts.size(std::vector<int64_t>{config.image_size, config.image_size}));
   m = m.index({"...", Slice(0, input_hw.first), Slice(0, input_hw.second)});
   return F::interpolate(m, opts.size(std::vector<int64_t>{original_hw.first, original_hw.second}));
 }
@@ -59,8 +59,8 @@ void load_sam_weights(SamImpl& model, const WeightFile& weights) {
   for (const auto& name : weights.names())
     if (!targets.count(name)) problems.push_back("unexpected tensor " + name);
   if (!problems.empty()) {
-    std::string msg = "SAM weights do not match the model (embed_dim " + std::to_string(model.config.embed_dim) +
-                      ", depth " + std::to_string(model.config.depth) + "): ";
+    std::string msg = "SAM weights do not match the model (embed_dim " + std::to_string(model.config.encoder_embed_dim) +
+                      ", depth " + std::to_string(model.config.encoder_depth) + "): ";
     const size_t shown = std::min<size_t>(problems.size(), 12);
     for (size_t i = 0; i < shown; ++i) msg += (i ? "; " : "") + problems[i];
     if (shown < problems.size()) msg += "; and " + std::to_string(problems.size() - shown) + " more";
@@ -70,33 +70,9 @@ void load_sam_weights(SamImpl& model, const WeightFile& weights) {
   for (auto& [name, target] : targets) target.copy_(weights.get(name, target.scalar_type()));
 }
 
-SamArch sam_arch_of(const SamConfig& cfg) {
-  if (cfg.out_chans != cfg.prompt_embed_dim) throw Error("SAM config: neck out_chans must equal prompt_embed_dim");
-  SamArch a;
-  a.name = "custom";
-  a.image_size = cfg.img_size;
-  a.patch_size = cfg.patch_size;
-  a.encoder_embed_dim = cfg.embed_dim;
-  a.encoder_depth = cfg.depth;
-  a.encoder_num_heads = cfg.num_heads;
-  a.global_attn_indexes = cfg.global_attn_indexes;
-  a.window_size = cfg.window_size;
-  a.mlp_ratio = float(cfg.mlp_ratio);
-  a.prompt_embed_dim = cfg.prompt_embed_dim;
-  a.mask_in_chans = cfg.mask_in_chans;
-  a.decoder_depth = cfg.decoder_transformer_depth;
-  a.decoder_num_heads = cfg.decoder_num_heads;
-  a.decoder_mlp_dim = cfg.decoder_mlp_dim;
-  a.attention_downsample_rate = cfg.attention_downsample_rate;
-  a.num_multimask_outputs = cfg.num_multimask_outputs;
-  a.iou_head_depth = cfg.iou_head_depth;
-  a.iou_head_hidden_dim = cfg.iou_head_hidden_dim;
-  return a;
-}
-
 Sam load_sam(const std::string& path, const SamConfig& cfg) {
   Sam model(cfg);
-  load_sam_weights(*model, load_sam_checkpoint(path, sam_arch_of(cfg)));
+  load_sam_weights(*model, load_sam_checkpoint(path, cfg));
   model->eval();
   return model;
 }

@@ -45,9 +45,6 @@ std::map<std::string, torch::Tensor> sam_state_names(SamImpl& model);
 // nothing is copied then. Floating tensors of other precisions (f16, bf16, f64) are converted.
 void load_sam_weights(SamImpl& model, const WeightFile& weights);
 
-// The weight-layout description (models/weights) of a model config.
-SamArch sam_arch_of(const SamConfig& cfg);
-
 // Builds the model of `cfg` and loads a checkpoint in any supported container and key layout
 // (official or Hugging Face names; load_sam_checkpoint), in eval mode.
 Sam load_sam(const std::string& path, const SamConfig& cfg);

@@ -5,7 +5,7 @@
 namespace cls::sam {
 
 SamPredictor::SamPredictor(Sam model) : model_(std::move(model)) {
-  transform_.target_length = model_->config.img_size;
+  transform_.target_length = model_->config.image_size;
   model_->eval();
 }
 
@@ -28,8 +28,8 @@ void SamPredictor::set_image(const uint8_t* rgb, int height, int width) {
 }
 
 void SamPredictor::set_features(const torch::Tensor& features, std::pair<int, int> original_hw) {
-  const int64_t side = model_->config.embedding_size();
-  if (features.dim() != 4 || features.size(0) != 1 || features.size(1) != model_->config.out_chans ||
+  const int64_t side = model_->config.image_embedding_size();
+  if (features.dim() != 4 || features.size(0) != 1 || features.size(1) != model_->config.prompt_embed_dim ||
       features.size(2) != side || features.size(3) != side)
     throw Error("SAM: image embedding has the wrong shape for this model");
   features_ = features.to(device(), torch::kFloat);
@@ -61,7 +61,7 @@ SamPrediction SamPredictor::predict(const SamPrompt& prompt, bool multimask_outp
     box = torch::from_blob(b.data(), {1, 4}, torch::kDouble).to(f32);
   }
   if (prompt.mask_input.defined()) {
-    const int64_t side = 4 * model_->config.embedding_size();
+    const int64_t side = 4 * model_->config.image_embedding_size();
     if (prompt.mask_input.sizes() != torch::IntArrayRef{1, side, side})
       throw Error("SAM: mask_input must be 1 x " + std::to_string(side) + " x " + std::to_string(side) + " low-res logits");
     mask = prompt.mask_input.to(f32).unsqueeze(0);
