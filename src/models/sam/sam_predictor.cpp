@@ -72,7 +72,7 @@ SamPrediction SamPredictor::predict(const SamPrompt& prompt, bool multimask_outp
 
 SamPrediction SamPredictor::predict_batch(const torch::Tensor& point_coords, const torch::Tensor& point_labels,
                                           const torch::Tensor& boxes, const torch::Tensor& mask_input,
-                                          bool multimask_output, bool return_logits) {
+                                          bool multimask_output, bool return_logits, bool upsample) {
   if (!is_image_set()) throw Error("SAM: set_image must be called before predict");
   if (point_coords.defined() != point_labels.defined()) throw Error("SAM: point coordinates need labels");
   torch::NoGradGuard no_grad;
@@ -86,6 +86,7 @@ SamPrediction SamPredictor::predict_batch(const torch::Tensor& point_coords, con
   SamPrediction out;
   out.low_res_logits = dec.low_res_masks;
   out.iou_predictions = dec.iou_predictions;
+  if (!upsample) return out;
   out.masks = model_->postprocess_masks(dec.low_res_masks, input_hw_, original_hw_);
   if (!return_logits) out.masks = out.masks > model_->config.mask_threshold;
   return out;

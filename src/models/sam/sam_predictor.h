@@ -25,7 +25,8 @@ struct SamPrompt {
 };
 
 struct SamPrediction {
-  torch::Tensor masks;            // [B, C, H, W] logits (return_logits) or bool (logit > mask_threshold)
+  torch::Tensor masks;            // [B, C, H, W] logits (return_logits) or bool (logit > mask_threshold);
+                                  // undefined when predict_batch did not upsample
   torch::Tensor iou_predictions;  // [B, C]
   torch::Tensor low_res_logits;   // [B, C, 256, 256]
 };
@@ -48,10 +49,11 @@ class SamPredictor {
 
   // predict_torch(): point_coords [B, N, 2] (1024 frame, float32 or float64 — arithmetic up to the
   // positional encoding happens in that dtype, as in the reference), point_labels [B, N] int,
-  // boxes [B, 4], mask_input [B, 1, 256, 256]; undefined tensors = absent.
+  // boxes [B, 4], mask_input [B, 1, 256, 256]; undefined tensors = absent. upsample = false leaves
+  // masks undefined (no postprocess_masks), for callers that upsample only the masks they keep.
   SamPrediction predict_batch(const torch::Tensor& point_coords, const torch::Tensor& point_labels,
                               const torch::Tensor& boxes, const torch::Tensor& mask_input, bool multimask_output = true,
-                              bool return_logits = false);
+                              bool return_logits = false, bool upsample = true);
 
   bool is_image_set() const { return features_.defined(); }
   const torch::Tensor& features() const { return features_; }

@@ -19,13 +19,11 @@ BoxF to_float(const BoxXyxy& b) {
   return {static_cast<float>(b.x0), static_cast<float>(b.y0), static_cast<float>(b.x1), static_cast<float>(b.y1)};
 }
 
-// _process_batch_data for one (point, output) mask: the filters, then the uncropped RLE.
-// Returns false when a filter drops the mask. The filters do not depend on the level, so each mask
-// is processed once and shared by `default` and its own level.
+// _process_batch_data for one (point, output) mask that passed the predicted-IoU filter: the other
+// filters, then the uncropped RLE. Returns false when a filter drops the mask. The filters do not
+// depend on the level, so each mask is processed once and shared by `default` and its own level.
 bool process_mask(const float* logits, int ch, int cw, float iou, const Point2d& point, const CropBox& crop,
                   int im_h, int im_w, const AmgParams& p, AmgCandidate& out) {
-  // Tensor-vs-Python-float comparisons happen in float32.
-  if (p.pred_iou_thresh > 0.0 && !(iou > static_cast<float>(p.pred_iou_thresh))) return false;
   const float stability = stability_score(logits, ch, cw, p.mask_threshold, static_cast<float>(p.stability_score_offset));
   if (p.stability_score_thresh > 0.0 && !(stability >= static_cast<float>(p.stability_score_thresh))) return false;
   BinaryMask full(im_h, im_w);  // uncrop_masks: zero padding around the crop
@@ -116,20 +114,34 @@ MaskLevels generate_masks(AmgModel& model, const uint8_t* rgb, int im_h, int im_
       const std::vector<Point2d> batch(points.begin() + b0, points.begin() + b1);
       std::vector<Point2d> transformed;
       for (const Point2d& q : batch) transformed.push_back(resize_coords(q, ch, cw));
-      model.predict_points(transformed, logits, ious);
+      model.predict_points(transformed, ious);
       const size_t nb = batch.size(), plane = static_cast<size_t>(ch) * cw;
-      if (logits.size() != nb * 3 * plane || ious.size() != nb * 3)
-        throw Error(cat("AMG: the model returned ", logits.size(), " logits and ", ious.size(),
-                        " IoU predictions for ", nb, " points at ", ch, "x", cw));
-      std::vector<AmgCandidate> cand(nb * 3);
-      std::vector<char> ok(nb * 3, 0);
+      if (ious.size() != nb * 3)
+        throw Error(cat("AMG: the model returned ", ious.size(), " IoU predictions for ", nb, " points"));
+      // The predicted-IoU filter comes first in _process_batch_data and is the same for every
+      // level, so masks it rejects are never needed: upsample only the others.
+      // Tensor-vs-Python-float comparisons happen in float32.
+      std::vector<int64_t> selected;
+      for (size_t m = 0; m < nb * 3; ++m)
+        if (!(p.pred_iou_thresh > 0.0) || ious[m] > static_cast<float>(p.pred_iou_thresh))
+          selected.push_back(static_cast<int64_t>(m));
+      if (selected.empty()) continue;
+      model.upsample_masks(selected, logits);
+      if (logits.size() != selected.size() * plane)
+        throw Error(cat("AMG: the model returned ", logits.size(), " mask logits for ", selected.size(),
+                        " masks at ", ch, "x", cw));
+      const size_t ns = selected.size();
+      std::vector<AmgCandidate> cand(ns);
+      std::vector<char> ok(ns, 0);
 #pragma omp parallel for num_threads(n_threads) schedule(dynamic)
-      for (size_t m = 0; m < nb * 3; ++m)
-        ok[m] = process_mask(logits.data() + m * plane, ch, cw, ious[m], batch[m / 3], crop, im_h, im_w, p, cand[m]);
-      for (size_t m = 0; m < nb * 3; ++m)  // default: point-major over the 3 outputs; s/m/l: output k
-        if (ok[m]) in_crop[kDefault].push_back(cand[m]);
-      for (size_t m = 0; m < nb * 3; ++m)
-        if (ok[m]) in_crop[1 + m % 3].push_back(std::move(cand[m]));
+      for (size_t i = 0; i < ns; ++i) {
+        const size_t m = static_cast<size_t>(selected[i]);
+        ok[i] = process_mask(logits.data() + i * plane, ch, cw, ious[m], batch[m / 3], crop, im_h, im_w, p, cand[i]);
+      }
+      for (size_t i = 0; i < ns; ++i)  // default: point-major over the 3 outputs; s/m/l: output k
+        if (ok[i]) in_crop[kDefault].push_back(cand[i]);
+      for (size_t i = 0; i < ns; ++i)
+        if (ok[i]) in_crop[1 + selected[i] % 3].push_back(std::move(cand[i]));
     }
     // _process_crop_data: NMS by predicted IoU within the crop, then back to the image frame.
     for (int l = 0; l < kNumLevels; ++l) {

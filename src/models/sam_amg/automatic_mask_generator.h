@@ -26,7 +26,9 @@ struct AmgParams {
   float mask_threshold = 0.0f;           // Sam.mask_threshold
 };
 
-// What the generator needs from SAM (SamPredictor).
+// What the generator needs from SAM (SamPredictor). Prediction and upsampling are split so that
+// only masks that pass the predicted-IoU filter (which needs no mask) are upsampled to the crop
+// size: that upsampling (Sam.postprocess_masks) is most of the AMG's time otherwise.
 class AmgModel {
  public:
   virtual ~AmgModel() = default;
@@ -34,10 +36,12 @@ class AmgModel {
   virtual void set_image(const uint8_t* rgb, int height, int width) = 0;
   // predict_torch(points[:, None, :], labels = 1, multimask_output=True, return_logits=True) for the
   // image last set: `points_1024` are already transformed to the model's 1024 frame (float64, as
-  // the AMG passes NumPy points). Fills mask_logits [B, 3, h, w] at the crop size and
-  // iou_predictions [B, 3], float32.
-  virtual void predict_points(const std::vector<Point2d>& points_1024, std::vector<float>& mask_logits,
-                              std::vector<float>& iou_predictions) = 0;
+  // the AMG passes NumPy points). Fills iou_predictions [B, 3], float32, and keeps the low-res
+  // mask logits of this batch for upsample_masks.
+  virtual void predict_points(const std::vector<Point2d>& points_1024, std::vector<float>& iou_predictions) = 0;
+  // The mask logits of the last predict_points at the crop size (postprocess_masks) for the masks
+  // `indices` into the flattened [B * 3] outputs: fills mask_logits [indices.size(), h, w], float32.
+  virtual void upsample_masks(const std::vector<int64_t>& indices, std::vector<float>& mask_logits) = 0;
 };
 
 // `rgb`: HWC uint8 image, contiguous. threads <= 0: OpenMP's default (for the per-mask work).
