@@ -1,4 +1,6 @@
 #include <gtest/gtest.h>
+
+#include "models/temp_dir.h"
 #include <unistd.h>
 
 #include <cstdlib>
@@ -17,18 +19,10 @@
 
 namespace fs = std::filesystem;
 using namespace cls;
+using test::TempDir;
+using test::write_bytes;
 
 namespace {
-
-struct TempDir {
-  fs::path path = fs::temp_directory_path() / ("cls_download_test_" + std::to_string(::getpid()));
-  TempDir() { fs::create_directories(path); }
-  ~TempDir() { fs::remove_all(path); }
-};
-
-void write_bytes(const fs::path& p, const std::string& bytes) {
-  std::ofstream(p, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
 
 std::string payload() {
   std::string s(300000, '\0');

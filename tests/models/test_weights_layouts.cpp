@@ -1,5 +1,7 @@
 #include <ATen/ATen.h>
 #include <gtest/gtest.h>
+
+#include "models/temp_dir.h"
 #include <unistd.h>
 
 #include <filesystem>
@@ -13,14 +15,9 @@
 
 namespace fs = std::filesystem;
 using namespace cls;
+using test::TempDir;
 
 namespace {
-
-struct TempDir {
-  fs::path path = fs::temp_directory_path() / ("cls_layout_test_" + std::to_string(::getpid()));
-  TempDir() { fs::create_directories(path); }
-  ~TempDir() { fs::remove_all(path); }
-};
 
 std::vector<ExpectedTensor> real_sam_keys(const std::string& model) {
   const auto j = nlohmann::json::parse(read_text_file(fs::path(CLS_TEST_FIXTURES) / ("sam/real_" + model + "_keys.json")));

@@ -1,5 +1,7 @@
 #include <ATen/ATen.h>
 #include <gtest/gtest.h>
+
+#include "models/temp_dir.h"
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -17,20 +19,12 @@
 
 namespace fs = std::filesystem;
 using namespace cls;
+using test::TempDir;
+using test::write_bytes;
 
 namespace {
 
 const fs::path kClip = fs::path(CLS_TEST_FIXTURES) / "clip/models/tiny_quickgelu";
-
-struct TempDir {
-  fs::path path = fs::temp_directory_path() / ("cls_weights_test_" + std::to_string(::getpid()));
-  TempDir() { fs::create_directories(path); }
-  ~TempDir() { fs::remove_all(path); }
-};
-
-void write_bytes(const fs::path& p, const std::string& bytes) {
-  std::ofstream(p, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
 
 // A safetensors file from a raw header string and data bytes (no padding applied).
 std::string safetensors_bytes(const std::string& header, const std::string& data) {

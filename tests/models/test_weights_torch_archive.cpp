@@ -1,4 +1,6 @@
 #include <gtest/gtest.h>
+
+#include "models/temp_dir.h"
 #include <torch/csrc/jit/serialization/pickle.h>
 #include <torch/script.h>
 #include <caffe2/serialize/inline_container.h>
@@ -14,18 +16,10 @@
 
 namespace fs = std::filesystem;
 using namespace cls;
+using test::TempDir;
+using test::write_bytes;
 
 namespace {
-
-struct TempDir {
-  fs::path path = fs::temp_directory_path() / ("cls_archive_test_" + std::to_string(::getpid()));
-  TempDir() { fs::create_directories(path); }
-  ~TempDir() { fs::remove_all(path); }
-};
-
-void write_bytes(const fs::path& p, const std::vector<char>& bytes) {
-  std::ofstream(p, std::ios::binary).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
 
 }  // namespace
 
