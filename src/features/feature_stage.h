@@ -1,0 +1,29 @@
+#pragma once
+// The features stage (`citylangsplat features`): for every view, the SAM branch and the CityGML
+// branch (view_features.h), cached per image: a view whose files are complete and whose stamp
+// matches is skipped, so a killed run resumes where it stopped. OUT/features.json records the
+// provider spec, alpha, region mode, taxonomy and the list of views.
+#include <filesystem>
+#include <string>
+
+#include "citymodel/taxonomy.h"
+#include "features/feature_provider.h"
+#include "scene/scene.h"
+
+namespace cls {
+
+enum class RegionMode { Class, Instance };  // paper: one region per class and view / one per object
+
+struct FeatureStageOptions {
+  std::filesystem::path labels_dir;  // the label maps (raycast / run OUT/labels)
+  std::filesystem::path out_dir;
+  double alpha = 0.5;                // text-guidance weight (paper eq. f^{gml+txt})
+  RegionMode region_mode = RegionMode::Class;
+  bool overwrite = false;            // recompute cached views
+};
+
+// Returns the number of views computed (0 when every view was cached).
+int run_feature_stage(const Scene& scene, FeatureProvider& provider, const Taxonomy& taxonomy,
+                      const FeatureStageOptions& options);
+
+}  // namespace cls

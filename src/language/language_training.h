@@ -1,0 +1,36 @@
+#pragma once
+// Language training (paper 3.3): geometry frozen, one latent per Gaussian and level, trained under
+//   L = sum (1 - M) |Z^ - Z_SAM|_1 + lambda_sam sum M |Z^ - Z_SAM|_1 + lambda_citygml sum M |Z^ - Z_GML|_1
+// (SAM terms only where a SAM segment exists, the CityGML term only where C^l is valid).
+// `baseline` = LangSplat's objective (the CityGML term dropped: |Z^ - Z_SAM|_1 everywhere).
+#include <string>
+
+#include "language/autoencoder.h"
+#include "scene/scene.h"
+
+namespace cls {
+
+struct LanguageTrainOptions {
+  std::string geometry_ply;     // photometric model (train-rgb output or any 3DGS PLY)
+  std::string features_dir;     // features stage output
+  std::string autoencoder_path;
+  std::string out_dir;          // language_model.h layout, checkpoints under out_dir/checkpoints
+  int iterations = 30000;       // per level
+  double lr = 0.0025;           // LangSplat's language feature lr
+  double lambda_sam = 1.0, lambda_citygml = 0.5;
+  bool baseline = false;        // --baseline langsplat
+  int checkpoint_every = 1000;
+  bool resume = false;
+  uint64_t seed = 1;
+};
+
+struct LanguageTrainReport {
+  int iterations = 0;
+  double seconds = 0;
+  double final_loss[3] = {0, 0, 0};
+  bool interrupted = false;  // stopped by a signal after writing a checkpoint
+};
+
+LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOptions& options);
+
+}  // namespace cls
