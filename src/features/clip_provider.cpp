@@ -101,7 +101,7 @@ class ClipFeatureProvider : public FeatureProvider {
 ClipArch tiny_clip_arch() {
   ClipArch a;
   a.name = "custom";
-  a.embed_dim = 32;
+  a.embed_dim = 512;  // the real models' feature size, so later stages see the usual shapes
   a.image_resolution = 32;
   a.vision_layers = 1;
   a.vision_width = 64;

@@ -9,7 +9,7 @@
 // Two flavours:
 //   "clip": real weights (LangSplat: OpenCLIP ViT-B-16 laion2b_s34b_b88k, SAM ViT-H), given as
 //     paths in the spec or found through the model registry (models/model_registry.h);
-//   "clip-tiny": tiny random CLIP and SAM built in code from a seed, with AMG thresholds relaxed
+//   "clip-tiny": tiny random CLIP (512-d output, like ViT-B) and SAM built in code from a seed, with AMG thresholds relaxed
 //     and a 4 x 4 point grid, so that the real code path runs in seconds on a CPU. A smoke test:
 //     its features are meaningless.
 #include <memory>

@@ -178,6 +178,7 @@ TEST(ClipTinyProvider, RunsTheRealCodePath) {
   EXPECT_EQ(provider->name(), "clip-tiny");
   EXPECT_NE(provider->spec().dump().find("meaningless"), std::string::npos);
   const int d = provider->dim();
+  EXPECT_EQ(d, 512);  // the real models' width, so later stages see the usual shapes
   FeatureView v;
   v.name = "tiny.png";
   v.rgb = cv::Mat(40, 56, CV_8UC3);
