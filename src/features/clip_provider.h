@@ -22,8 +22,11 @@ namespace cls {
 //   clip: {"provider": "clip", "clip": PATH?, "sam": PATH?, "clip_model": known name
 //          (default "openclip-vit-b-16-laion2b"), "sam_model": known name (default "sam-vit-h"),
 //          "clip_activation": "gelu" | "quick_gelu" (default from the model: OpenAI's QuickGELU,
-//          OpenCLIP's GELU), "models_dir": DIR?, "points_per_side": 32, "batch_size": 32}
-//   clip-tiny: {"provider": "clip-tiny", "seed": 1}
+//          OpenCLIP's GELU), "models_dir": DIR?, "points_per_side": 32, "batch_size": 32,
+//          "device": "auto" | "cpu" | "cuda"}
+//   clip-tiny: {"provider": "clip-tiny", "seed": 1, "device": ...}
+// "auto" picks CUDA where LibTorch has it. The CUDA path (fp32) has not run yet: no GPU was
+// available when this was written.
 std::unique_ptr<FeatureProvider> make_clip_provider(const nlohmann::json& spec, const Taxonomy& taxonomy);
 
 }  // namespace cls
