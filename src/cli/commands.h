@@ -9,4 +9,5 @@ int cmd_scene(int argc, char** argv);       // scene info | convert
 int cmd_run(int argc, char** argv);         // the whole pipeline
 int cmd_models(int argc, char** argv);      // models list | download | check
 int cmd_features(int argc, char** argv);    // per-view SAM and CityGML features
+int cmd_autoencoder(int argc, char** argv); // train the shared autoencoder on SAM features
 }  // namespace cls

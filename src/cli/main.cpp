@@ -26,6 +26,7 @@ const Command kCommands[] = {
     {"scene", cls::cmd_scene, "inspect or convert a scene (COLMAP / Pix4D)"},
     {"models", cls::cmd_models, "list, download and check CLIP/SAM weight files"},
     {"features", cls::cmd_features, "per-view SAM and CityGML language features (LangSplat's layout)"},
+    {"autoencoder", cls::cmd_autoencoder, "train the shared autoencoder (512 -> 128) on SAM features"},
 };
 
 void usage(FILE* out) {
