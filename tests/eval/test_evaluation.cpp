@@ -38,6 +38,15 @@ struct Fixture {
   LabelledPoints gt;
 };
 
+// Removes the fixture's directory at exit.
+struct DirRemover {
+  fs::path dir;
+  ~DirRemover() {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+};
+
 Fixture& fixture() {
   static Fixture f = [] {
     Fixture x;
@@ -77,6 +86,7 @@ Fixture& fixture() {
     x.class_table = at::cat(table, 0);
     return x;
   }();
+  static const DirRemover remover{f.dir};
   return f;
 }
 
