@@ -3,7 +3,9 @@
 // decoder latent -> ... -> D (128 -> 256 -> 512), trained on SAM features only with
 // L_rec = ||f - f^||^2 + lambda_cos (1 - cos(f, f^)) per sample, then applied to both sources.
 #include <ATen/core/Tensor.h>
+#include <c10/core/Device.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,7 +16,14 @@ struct AutoencoderConfig {
   int input_dim = 512;
   std::vector<int> encoder_dims{256, 128};  // the last one is the latent size
   std::vector<int> decoder_dims{256, 512};  // the last one must equal input_dim
+  // LangSplat's autoencoder L2-normalises the latent (so latents of both sources share one scale) and
+  // the output; we keep the latent normalisation and leave the output unnormalised by default, so
+  // the paper's Euclidean term can preserve the features' scale (docs/autoencoder.md).
+  bool normalize_latent = true;
+  bool normalize_output = false;
   int latent_dim() const { return encoder_dims.back(); }
+  // Throws cls::Error when a size is not positive, a list is empty or decoder_dims.back() != input_dim.
+  void validate() const;
 };
 
 struct AutoencoderTrainOptions {
@@ -24,11 +33,13 @@ struct AutoencoderTrainOptions {
   double lambda_cos = 1.0;
   double holdout_fraction = 0.1;  // held-out features for the reported cosine
   uint64_t seed = 1;
+  // Called after every epoch with the epoch (1-based) and its mean training loss (progress output).
+  std::function<void(int epoch, double train_loss)> on_epoch;
 };
 
 struct AutoencoderReport {
   double train_loss = 0;
-  double holdout_cosine = 0;  // mean cos(f, D(E(f))) on held-out features
+  double holdout_cosine = 0;  // mean cos(f, D(E(f))) on held-out features; NaN when none are held out
   int64_t train_samples = 0, holdout_samples = 0;
   double seconds = 0;
 };
@@ -43,7 +54,12 @@ class Autoencoder {
   const AutoencoderConfig& config() const;
   at::Tensor encode(const at::Tensor& features) const;  // B x D -> B x latent (no grad, eval mode)
   at::Tensor decode(const at::Tensor& latents) const;   // B x latent -> B x D
-  // Trains on `sam_features` (B x D float32).
+  // Moves the weights (encode/decode then take inputs on any device and answer on this one).
+  void to(const c10::Device& device);
+  c10::Device device() const;
+  // Trains on `sam_features` (B x D float32; any device, trained on device()). Deterministic for a
+  // seed on one machine and thread count. Throws cls::Error for a wrong shape, non-finite values,
+  // fewer than 2 training samples or invalid options.
   AutoencoderReport train(const at::Tensor& sam_features, const AutoencoderTrainOptions& options);
 
   // safetensors with the config in its metadata; load() gives a cls::Error naming the file on
