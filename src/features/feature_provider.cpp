@@ -1,0 +1,17 @@
+#include "features/feature_provider.h"
+
+#include "core/error.h"
+#include "features/synthetic_provider.h"
+
+namespace cls {
+
+std::unique_ptr<FeatureProvider> make_feature_provider(const nlohmann::json& spec, const Taxonomy& taxonomy) {
+  if (!spec.is_object() || !spec.contains("provider") || !spec.at("provider").is_string())
+    throw UsageError("feature provider spec: an object with \"provider\" (synthetic, clip or clip-tiny) is required");
+  const std::string name = spec.at("provider").get<std::string>();
+  if (name == "synthetic")
+    return std::make_unique<SyntheticFeatureProvider>(SyntheticFeatureProvider::params_from_spec(spec), taxonomy);
+  throw UsageError("unknown feature provider '" + name + "' (known: synthetic, clip, clip-tiny)");
+}
+
+}  // namespace cls
