@@ -8,5 +8,6 @@ int cmd_synth(int argc, char** argv);       // synthetic scenes
 int cmd_scene(int argc, char** argv);       // scene info | convert
 int cmd_run(int argc, char** argv);         // the whole pipeline
 int cmd_models(int argc, char** argv);      // models list | download | check
+int cmd_query(int argc, char** argv);       // open-vocabulary text queries on a language model
 int cmd_evaluate(int argc, char** argv);    // the paper's evaluation (section 4)
 }  // namespace cls

@@ -25,6 +25,7 @@ const Command kCommands[] = {
     {"synth", cls::cmd_synth, "render a synthetic scene (images, COLMAP model, ground truth) of a city model"},
     {"scene", cls::cmd_scene, "inspect or convert a scene (COLMAP / Pix4D)"},
     {"models", cls::cmd_models, "list, download and check CLIP/SAM weight files"},
+    {"query", cls::cmd_query, "query a language model with text: Gaussian scores, selections, relevance maps"},
     {"evaluate", cls::cmd_evaluate, "evaluate language models against a labelled point cloud (2D and 3D)"},
 };
 

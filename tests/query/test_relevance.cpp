@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "query/relevance.h"
 #include "splat/reference_render.h"
+#include "latent_scene.h"
 #include "splat/splat_scene.h"
 
 namespace cls {
@@ -82,36 +83,9 @@ TEST(CanonicalPhrases, AreLangSplats) {
   EXPECT_EQ(canonical_phrases(), (std::vector<std::string>{"object", "things", "stuff", "texture"}));
 }
 
-// A random feature scene as a GaussianModel + latents, with its camera.
-struct LatentScene {
-  test::RandomScene s;
-  GaussianModel g;
-  at::Tensor latents;
-  PinholeCamera camera;
-  Pose pose;
-};
-
-LatentScene latent_scene(int n, int w, int h, int L, unsigned seed) {
-  LatentScene t;
-  t.s = test::random_scene(n, w, h, L, /*use_sh=*/false, seed, 0.95);
-  t.g = make_gaussians(n, 0);
-  auto tensor = [](const std::vector<double>& v, std::vector<int64_t> shape) {
-    return torch::tensor(v, torch::kFloat64).reshape(shape);
-  };
-  t.g.means = tensor(t.s.means, {n, 3}).to(torch::kFloat32);
-  t.g.log_scales = tensor(t.s.scales, {n, 3}).log().to(torch::kFloat32);
-  t.g.quats = tensor(t.s.quats, {n, 4}).to(torch::kFloat32);
-  t.g.opacity_logits = tensor(t.s.opacities, {n, 1}).logit().to(torch::kFloat32);
-  t.latents = tensor(t.s.features, {n, L}).to(torch::kFloat32);
-  t.camera = PinholeCamera{t.s.cam.fx, t.s.cam.fy, t.s.cam.cx, t.s.cam.cy, w, h};
-  t.pose.R = t.s.cam.R;
-  t.pose.t = t.s.cam.t;
-  return t;
-}
-
 TEST(RenderDecoded, MatchesPerPixelReference) {
   const int W = 37, H = 29, L = 8, D = 12;
-  LatentScene t = latent_scene(80, W, H, L, 7);
+  test::LatentScene t = test::latent_scene(80, W, H, L, 7);
   // The decoder: a fixed affine map followed by tanh (stands in for the autoencoder's MLP).
   torch::manual_seed(5);
   const at::Tensor A = torch::randn({L, D}, torch::kFloat64), bias = torch::randn({D}, torch::kFloat64);
@@ -151,7 +125,7 @@ TEST(RenderDecoded, MatchesPerPixelReference) {
 
 TEST(RelevanceMaps, EqualMapsOfTheWholeDecodedField) {
   const int W = 31, H = 23, L = 6, D = 10;
-  LatentScene t = latent_scene(60, W, H, L, 11);
+  test::LatentScene t = test::latent_scene(60, W, H, L, 11);
   torch::manual_seed(9);
   const at::Tensor A = torch::randn({L, D});
   const LatentDecoder decode = [&](const at::Tensor& z) { return z.matmul(A); };
