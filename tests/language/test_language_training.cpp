@@ -5,8 +5,11 @@
 // baseline ignores the CityGML targets, and that a resumed run equals an uninterrupted one.
 #include <ATen/ATen.h>
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -116,6 +119,18 @@ struct TinyScene {
     options.lr = 0.02;
     options.checkpoint_every = 0;
     options.device = "cpu";
+  }
+  // The same cameras as a COLMAP text model (scene/sparse/0), for the CLI.
+  fs::path write_colmap() const {
+    const fs::path root = dir.path / "scene";
+    fs::create_directories(root / "sparse" / "0");
+    std::ofstream(root / "sparse" / "0" / "cameras.txt") << "1 PINHOLE " << kW << " " << kH << " " << kF << " " << kF
+                                                           << " " << kW / 2.0 << " " << kH / 2.0 << "\n";
+    std::ofstream images(root / "sparse" / "0" / "images.txt");
+    for (int v = 0; v < 3; ++v)
+      images << v + 1 << " 1 0 0 0 " << -kCentres[v] << " 0 0 1 view" << v << ".png\n\n";
+    std::ofstream(root / "sparse" / "0" / "points3D.txt") << "1 0 0 5 128 128 128 0.5\n";
+    return root;
   }
   void write_features() {
     for (int v = 0; v < 3; ++v)
@@ -244,6 +259,57 @@ TEST(LanguageTraining, MismatchedFeatureSizeIsAnError) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("view1_s.npy"), std::string::npos) << e.what();
   }
+}
+
+// Runs a shell script; returns the exit status and the combined output.
+int run_shell(const std::string& script, std::string* output) {
+  const std::string cmd = "(" + script + ") 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return -1;
+  char buf[4096];
+  output->clear();
+  while (size_t n = fread(buf, 1, sizeof buf, pipe)) output->append(buf, n);
+  const int status = pclose(pipe);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+int run_cli(const std::string& arguments, std::string* output) {
+  return run_shell(std::string(CLS_BINARY) + " " + arguments, output);
+}
+
+TEST(LanguageTraining, CommandLineTrainsAndStopsOnSigint) {
+  TinyScene t;
+  const fs::path scene = t.write_colmap();
+  const std::string common = "train-language --scene " + scene.string() + " --model " + t.options.geometry_ply +
+                             " --features " + t.options.features_dir + " --autoencoder " + t.options.autoencoder_path +
+                             " --device cpu --lr 0.02";
+  std::string out;
+  // The reference: 20 iterations per level in one go.
+  ASSERT_EQ(run_cli(common + " --iterations 20 --out " + (t.dir.path / "cli_full").string(), &out), 0) << out;
+  const LanguageModel full = load_language_model((t.dir.path / "cli_full").string());
+  EXPECT_EQ(full.info["method"], "citylangsplat");
+
+  // SIGINT after the first checkpoint of a long run: exit 130, a checkpoint and a hint how to resume.
+  const std::string long_out = (t.dir.path / "cli_long").string();
+  const std::string checkpoint = long_out + "/checkpoints/language.safetensors";
+  ASSERT_EQ(run_shell(std::string(CLS_BINARY) + " " + common + " --iterations 100000000 --checkpoint-every 1 --out " +
+                          long_out + " & pid=$!; i=0; " + "while [ ! -e " + checkpoint +
+                          " ] && [ $i -lt 1200 ]; do sleep 0.05; i=$((i+1)); done; kill -INT $pid; wait $pid",
+                      &out),
+            130)
+      << out;
+  EXPECT_NE(out.find("--resume"), std::string::npos) << out;
+  EXPECT_TRUE(fs::exists(checkpoint));
+  EXPECT_FALSE(fs::exists(long_out + "/model.json"));
+  // Resuming it with another lambda is refused, naming the checkpoint.
+  EXPECT_EQ(run_cli(common + " --iterations 100000000 --lambda-citygml 0.3 --resume --out " + long_out, &out), 1) << out;
+  EXPECT_NE(out.find("language.safetensors"), std::string::npos) << out;
+
+  // Baseline and bad usage.
+  ASSERT_EQ(run_cli(common + " --iterations 2 --baseline langsplat --out " + (t.dir.path / "cli_base").string(), &out), 0)
+      << out;
+  EXPECT_EQ(load_language_model((t.dir.path / "cli_base").string()).info["method"], "langsplat");
+  EXPECT_EQ(run_cli(common + " --baseline other --out " + (t.dir.path / "x").string(), &out), 2) << out;
+  EXPECT_EQ(run_cli("train-language --scene " + scene.string(), &out), 2) << out;
 }
 
 }  // namespace
