@@ -25,6 +25,7 @@ const Command kCommands[] = {
     {"synth", cls::cmd_synth, "render a synthetic scene (images, COLMAP model, ground truth) of a city model"},
     {"scene", cls::cmd_scene, "inspect or convert a scene (COLMAP / Pix4D)"},
     {"models", cls::cmd_models, "list, download and check CLIP/SAM weight files"},
+    {"features", cls::cmd_features, "per-view SAM and CityGML language features (LangSplat's layout)"},
     {"train-language", cls::cmd_train_language, "train the language field on a frozen photometric model (paper 3.3)"},
 };
 
