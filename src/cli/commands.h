@@ -10,4 +10,5 @@ int cmd_run(int argc, char** argv);         // the whole pipeline
 int cmd_models(int argc, char** argv);      // models list | download | check
 int cmd_features(int argc, char** argv);    // per-view SAM and CityGML features
 int cmd_train_language(int argc, char** argv);  // language field training (paper 3.3)
+int cmd_autoencoder(int argc, char** argv); // train the shared autoencoder on SAM features
 }  // namespace cls

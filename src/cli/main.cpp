@@ -27,6 +27,7 @@ const Command kCommands[] = {
     {"models", cls::cmd_models, "list, download and check CLIP/SAM weight files"},
     {"features", cls::cmd_features, "per-view SAM and CityGML language features (LangSplat's layout)"},
     {"train-language", cls::cmd_train_language, "train the language field on a frozen photometric model (paper 3.3)"},
+    {"autoencoder", cls::cmd_autoencoder, "train the shared autoencoder (512 -> 128) on SAM features"},
 };
 
 void usage(FILE* out) {
