@@ -31,10 +31,11 @@ double footprint_radius(const LabelledPoints& points, const GtProjectionOptions&
 }
 
 cv::Mat project_gt_labels(const LabelledPoints& points, const PinholeCamera& camera, const Pose& pose,
-                          double radius, const GtProjectionOptions& options, cv::Mat* depth) {
+                          double radius, const GtProjectionOptions& options, cv::Mat* depth, cv::Mat* winner) {
   const int W = camera.width, H = camera.height;
   cv::Mat labels(H, W, CV_32SC1, cv::Scalar(-1));
   cv::Mat zbuf(H, W, CV_32FC1, cv::Scalar(std::numeric_limits<float>::infinity()));
+  cv::Mat index(H, W, CV_32SC1, cv::Scalar(-1));
   for (size_t i = 0; i < points.size(); ++i) {
     const Vec3d p = pose.R * points.positions[i] + pose.t;
     if (!(p.z > options.near)) continue;
@@ -51,12 +52,14 @@ cv::Mat project_gt_labels(const LabelledPoints& points, const PinholeCamera& cam
       const double dy = y + 0.5 - v;
       float* zrow = zbuf.ptr<float>(y);
       int32_t* lrow = labels.ptr<int32_t>(y);
+      int32_t* irow = index.ptr<int32_t>(y);
       for (int x = x0; x <= x1; ++x) {
         const double dx = x + 0.5 - u;
         if (dx * dx + dy * dy > r2) continue;
         if (z < zrow[x]) {  // nearest wins; equal depth: the earlier point stays
           zrow[x] = z;
           lrow[x] = points.labels[i] < 0 ? -1 : points.labels[i];
+          irow[x] = int32_t(i);
         }
       }
     }
@@ -66,6 +69,7 @@ cv::Mat project_gt_labels(const LabelledPoints& points, const PinholeCamera& cam
     d.setTo(0, zbuf == std::numeric_limits<float>::infinity());
     *depth = d;
   }
+  if (winner) *winner = index;
   return labels;
 }
 

@@ -31,8 +31,10 @@ double footprint_radius(const LabelledPoints& points, const GtProjectionOptions&
 // Label image CV_32SC1 (class id of the nearest point whose footprint covers the pixel centre; -1 where
 // none does or the nearest point is unlabelled). Pixel (i, j)'s centre is (i + 0.5, j + 0.5); a point at
 // camera coordinates (x, y, z) projects to (fx x / z + cx, fy y / z + cy) and covers the pixel centres
-// within r = clamp(fx * radius / z) of it. `depth` (optional) receives the winning z (CV_32FC1, 0 = none).
+// within r = clamp(fx * radius / z) of it. `depth` (optional) receives the winning z (CV_32FC1, 0 = none),
+// `winner` (optional) the winning point's index (CV_32SC1, -1 = none).
 cv::Mat project_gt_labels(const LabelledPoints& points, const PinholeCamera& camera, const Pose& pose,
-                          double radius, const GtProjectionOptions& options, cv::Mat* depth = nullptr);
+                          double radius, const GtProjectionOptions& options, cv::Mat* depth = nullptr,
+                          cv::Mat* winner = nullptr);
 
 }  // namespace cls

@@ -158,6 +158,10 @@ TEST(Evaluation, ACorrectFieldScoresHighAndWritesViews) {
   EXPECT_GT(r["3d"]["miou"].get<double>(), 0.9);
   EXPECT_GT(r["3d"]["coverage"].get<double>(), 0.99);  // every GT point has a centre within 0.2
   EXPECT_LT(r["3d"]["mean_distance"].get<double>(), 0.05);
+  // Visible GT points: a strict, non-empty subset (no view sees the building's ground surface).
+  EXPECT_GT(r["3d_visible"]["gt_points"].get<int64_t>(), 1000);
+  EXPECT_LT(r["3d_visible"]["gt_points"].get<int64_t>(), r["3d"]["gt_points"].get<int64_t>());
+  EXPECT_GT(r["3d_visible"]["miou"].get<double>(), 0.8);  // measured 0.876: few visible ground points
   // Evaluated classes: exactly those labelled in the GT.
   std::set<std::string> in_gt;
   for (int32_t l : fixture().gt.labels)

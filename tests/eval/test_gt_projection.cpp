@@ -44,9 +44,11 @@ TEST(GtProjection, NearPointHidesFarPointWhateverTheOrder) {
     const Vec3d near{0.05 * 2, 0.05 * 2, 2}, far{0.05 * 6, 0.05 * 6, 6};
     pts.positions = near_first ? std::vector<Vec3d>{near, far} : std::vector<Vec3d>{far, near};
     pts.labels = near_first ? std::vector<int32_t>{3, 7} : std::vector<int32_t>{7, 3};
-    cv::Mat depth;
-    const cv::Mat l = project_gt_labels(pts, small_camera(), Pose{}, 0.0, fixed(0.5, 0.5), &depth);
+    cv::Mat depth, winner;
+    const cv::Mat l = project_gt_labels(pts, small_camera(), Pose{}, 0.0, fixed(0.5, 0.5), &depth, &winner);
     EXPECT_EQ(l.at<int32_t>(5, 10), 3);
+    EXPECT_EQ(winner.at<int32_t>(5, 10), near_first ? 0 : 1);
+    EXPECT_EQ(winner.at<int32_t>(0, 0), -1);
     EXPECT_FLOAT_EQ(depth.at<float>(5, 10), 2.0f);
     // A 0.5 px disk centred on a pixel centre covers only that pixel.
     EXPECT_EQ(count_label(l, 3), 1);
