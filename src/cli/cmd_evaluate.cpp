@@ -76,6 +76,7 @@ int cmd_evaluate(int argc, char** argv) {
             "paper's Tables 1-3, methods side by side) and OUT/<NAME>/views/<stem>_{gt,pred}.png.");
   args.option("scene", "", "scene directory (COLMAP / Pix4D)")
       .option("gt", "", "labelled point cloud PLY (x y z + int class = taxonomy id, -1 = none) (default: SCENE/gt/points.ply)")
+      .option("gt-class-property", "class", "the GT PLY's integer vertex property with the taxonomy class id")
       .option("model", "", "NAME=DIR of a language model directory; repeat for several methods")
       .option("out", "", "output directory")
       .option("threshold", "0.3", "2D: pixels whose best normalised relevance is below are ignored")
@@ -103,6 +104,7 @@ int cmd_evaluate(int argc, char** argv) {
   const Scene scene = load_scene(args.get("scene"), scene_options);
   EvaluationOptions options;
   options.gt_points = args.has("gt") ? args.get("gt") : (fs::path(args.get("scene")) / "gt" / "points.ply").string();
+  options.gt_class_property = args.get("gt-class-property");
   options.classes = split_commas(args.get("classes"));
   options.threshold_2d = args.get_double("threshold");
   options.match_radius = args.get_double("radius");

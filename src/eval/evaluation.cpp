@@ -167,7 +167,7 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
   if (options.level_rule != "fallback" && options.level_rule != "langsplat")
     throw UsageError("evaluate: level rule must be 'fallback' or 'langsplat', got '" + options.level_rule + "'");
   at::NoGradGuard no_grad;
-  const LabelledPoints gt = read_labelled_points(options.gt_points);
+  const LabelledPoints gt = read_labelled_points(options.gt_points, options.gt_class_property);
   const std::vector<int> classes = evaluated_classes(taxonomy, gt, options);
   const int K = int(classes.size());
   std::vector<int> eval_of(taxonomy.classes.size(), -1);

@@ -16,6 +16,7 @@ namespace cls {
 
 struct EvaluationOptions {
   std::string gt_points;          // labelled PLY (x y z + int "class" = taxonomy id, -1 = unlabelled)
+  std::string gt_class_property = "class";  // the PLY's vertex property holding the class id
   std::vector<std::string> classes;  // evaluated class names; empty = every class present in the GT
   double threshold_2d = 0.3;      // pixels whose best normalised relevance is below are ignored
   double match_radius = 0.2;      // 3D nearest-neighbour radius (scene units)
