@@ -3,6 +3,7 @@
 //   L = sum (1 - M) |Z^ - Z_SAM|_1 + lambda_sam sum M |Z^ - Z_SAM|_1 + lambda_citygml sum M |Z^ - Z_GML|_1
 // (SAM terms only where a SAM segment exists, the CityGML term only where C^l is valid).
 // `baseline` = LangSplat's objective (the CityGML term dropped: |Z^ - Z_SAM|_1 everywhere).
+#include <cstdint>
 #include <string>
 
 #include "language/autoencoder.h"
@@ -22,6 +23,10 @@ struct LanguageTrainOptions {
   int checkpoint_every = 1000;
   bool resume = false;
   uint64_t seed = 1;
+  std::string device = "auto";  // "auto" (CUDA when the build and machine have it), "cpu", "cuda"
+  // Stop as if interrupted (checkpoint, report.interrupted) once this many iterations have run in
+  // total over all levels, counting those before a resume; 0 = never. For tests and time budgets.
+  int64_t stop_after = 0;
 };
 
 struct LanguageTrainReport {

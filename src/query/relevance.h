@@ -3,6 +3,7 @@
 // Querying"; LangSplat's relevancy).
 #include <ATen/core/Tensor.h>
 
+#include <functional>
 #include <vector>
 
 #include "language/language_model.h"
@@ -30,5 +31,45 @@ at::Tensor langsplat_relevancy(const at::Tensor& features, const at::Tensor& que
 
 // LangSplat's canonical phrases.
 const std::vector<std::string>& canonical_phrases();  // "object", "things", "stuff", "texture"
+
+// ---- the building blocks of the above, usable without a whole LanguageModel --------------------
+
+// Latent -> feature map of the decoder (B x L -> B x D), e.g. Autoencoder::decode.
+using LatentDecoder = std::function<at::Tensor(const at::Tensor&)>;
+
+// Pixels decoded per call of the decoder (bounds the MLP's intermediate memory).
+constexpr int64_t kDecodeChunkPixels = 1 << 16;
+
+// rasterize_features of `latents` (N x L, one row per Gaussian of `gaussians`) for a camera and pose
+// on a zero background, no gradients: image H x W x L, alpha H x W.
+struct RenderedLatents {
+  at::Tensor latents;  // H x W x L
+  at::Tensor alpha;    // H x W
+};
+RenderedLatents render_latents(const GaussianModel& gaussians, const at::Tensor& latents,
+                               const PinholeCamera& camera, const Pose& pose);
+
+// render_latents followed by `decode` per chunk of pixels: features H x W x D (float32), alpha.
+DecodedView render_decoded(const GaussianModel& gaussians, const at::Tensor& latents, const LatentDecoder& decode,
+                           const PinholeCamera& camera, const Pose& pose, int64_t chunk_pixels = kDecodeChunkPixels);
+
+// LangSplat's relevancy from cosines: query_cos (...), canonical_cos (..., M) -> (...):
+// min_c softmax(10 * [query_cos, canonical_cos_c])[0] (OpenCLIPNetwork.get_relevancy).
+at::Tensor relevancy_from_cosines(const at::Tensor& query_cos, const at::Tensor& canonical_cos);
+
+// Both maps of K queries for one view, computed chunk by chunk so that the H x W x D decoded field
+// never exists as a whole (what `query` uses; equal to cosine_maps / langsplat_relevancy of
+// render_decoded): queries K x D, canonical M x D (feature space) -> cosine and relevancy K x H x W.
+struct RelevanceMaps {
+  at::Tensor cosine;     // K x H x W
+  at::Tensor relevancy;  // K x H x W
+  at::Tensor alpha;      // H x W, the rendered alpha
+};
+RelevanceMaps relevance_maps(const GaussianModel& gaussians, const at::Tensor& latents, const LatentDecoder& decode,
+                             const PinholeCamera& camera, const Pose& pose, const at::Tensor& queries,
+                             const at::Tensor& canonical, int64_t chunk_pixels = kDecodeChunkPixels);
+// The same for a language model's level (1..3) and a scene view.
+RelevanceMaps relevance_maps(const LanguageModel& model, int level, const SceneView& view, const at::Tensor& queries,
+                             const at::Tensor& canonical);
 
 }  // namespace cls

@@ -1,0 +1,92 @@
+#include "language/language_model.h"
+
+#include <ATen/ATen.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "models/weights/safetensors.h"
+#include "splat/ply_gaussians.h"
+
+namespace cls {
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* const kLevelNames[3] = {"level1", "level2", "level3"};
+
+std::string file_in(const std::string& dir, const char* name) { return (fs::path(dir) / name).string(); }
+
+}  // namespace
+
+void save_language_model(const std::string& dir, const LanguageModel& model) {
+  const int64_t n = model.gaussians.size();
+  const int latent = model.autoencoder.config().latent_dim();
+  const std::string latents_path = file_in(dir, "latents.safetensors");
+  std::vector<SafetensorsEntry> entries;
+  for (int l = 0; l < 3; ++l) {
+    const at::Tensor& t = model.latents[l];
+    if (!t.defined() || t.dim() != 2 || t.size(0) != n || t.size(1) != latent)
+      fail(latents_path, std::string("latents of ") + kLevelNames[l] + " must be " + std::to_string(n) + " x " +
+                             std::to_string(latent) + " (Gaussians x autoencoder latent)");
+    const at::Tensor data = t.detach().to(at::kCPU, at::kFloat).contiguous();
+    entries.push_back({kLevelNames[l], at::kFloat, {n, int64_t(latent)}, data});
+  }
+  fs::create_directories(dir);
+  // Geometry first and model.json last: a model.json marks a complete directory.
+  GaussianModel geometry = model.gaussians;
+  geometry.features = at::Tensor();  // the latents live in latents.safetensors
+  write_gaussians_ply(file_in(dir, "point_cloud.ply"), geometry);
+  write_safetensors(latents_path, entries, {{"format", "citylangsplat-latents"}});
+  model.autoencoder.save(file_in(dir, "autoencoder.safetensors"));
+  nlohmann::json info = model.info.is_object() ? model.info : nlohmann::json::object();
+  info["levels"] = {1, 2, 3};
+  info["gaussians"] = n;
+  info["latent_dim"] = latent;
+  write_text_atomic(fs::path(dir) / "model.json", info.dump(2) + "\n");
+}
+
+LanguageModel load_language_model(const std::string& dir) {
+  const std::string json_path = file_in(dir, "model.json");
+  if (!fs::exists(json_path)) fail(json_path, "missing (not a language model directory, or an unfinished one)");
+  nlohmann::json info;
+  try {
+    info = nlohmann::json::parse(read_text_file(json_path));
+  } catch (const nlohmann::json::exception& e) {
+    fail(json_path, std::string("not valid JSON: ") + e.what());
+  }
+  if (!info.is_object()) fail(json_path, "not a JSON object");
+
+  const std::string ply_path = file_in(dir, "point_cloud.ply");
+  if (!fs::exists(ply_path)) fail(ply_path, "missing");
+  GaussianModel gaussians = read_gaussians_ply(ply_path);
+  gaussians.features = at::Tensor();
+  const std::string ae_path = file_in(dir, "autoencoder.safetensors");
+  if (!fs::exists(ae_path)) fail(ae_path, "missing");
+  LanguageModel model{std::move(gaussians), {}, Autoencoder::load(ae_path), std::move(info)};
+
+  const std::string latents_path = file_in(dir, "latents.safetensors");
+  if (!fs::exists(latents_path)) fail(latents_path, "missing");
+  const WeightFile file = read_safetensors(latents_path);
+  const int64_t n = model.gaussians.size();
+  const int latent = model.autoencoder.config().latent_dim();
+  for (int l = 0; l < 3; ++l) {
+    if (!file.contains(kLevelNames[l])) fail(latents_path, std::string("no tensor '") + kLevelNames[l] + "'");
+    const TensorInfo& ti = file.info(kLevelNames[l]);
+    if (ti.shape != std::vector<int64_t>{n, int64_t(latent)})
+      fail(latents_path, std::string("tensor '") + kLevelNames[l] + "' has shape " + shape_string(ti.shape) +
+                             ", expected [" + std::to_string(n) + ", " + std::to_string(latent) +
+                             "] (Gaussians of point_cloud.ply x the autoencoder's latent)");
+    // A copy: the file's mapping is not kept alive by the model.
+    model.latents[l] = file.get(kLevelNames[l], at::kFloat).clone();
+  }
+  if (model.info.contains("gaussians") && model.info["gaussians"] != n)
+    fail(json_path, "records " + model.info["gaussians"].dump() + " Gaussians but point_cloud.ply has " +
+                        std::to_string(n));
+  return model;
+}
+
+}  // namespace cls

@@ -1,0 +1,344 @@
+// Language training (paper 3.3) on a frozen photometric model; see language_training.h.
+//
+// Choices beyond the paper, as LangSplat's train.py makes them unless said otherwise:
+//  - latents start at zero (LangSplat's language_feature init), one N x L tensor per level, trained
+//    one level after the other (LangSplat trains one model per feature level);
+//  - Adam (eps 1e-15 as 3DGS/LangSplat), constant lr;
+//  - views in a random order without replacement per epoch (LangSplat pops random cameras from a
+//    stack). The order of epoch e at level l is a pure function of (seed, l, e), so the "RNG state"
+//    of a resume is the (level, iteration) pair itself and a resumed run repeats the exact order;
+//  - the rendered background is zero;
+//  - M_t (the coverage) is taken from the CityGML seg maps: a pixel is covered when any level has a
+//    region there (docs/conventions.md: coverage is 255 where any level has a label, and the
+//    features stage writes -1 wherever M = 0).
+// Only the per-segment latents (the encoder applied once per view) and the seg maps are kept in
+// memory; dense H x W x L targets are gathered per iteration for the one view being trained.
+#include "language/language_training.h"
+
+#include <ATen/ATen.h>
+
+#include <array>
+#include <chrono>
+#include <map>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/interrupt.h"
+#include "core/log.h"
+#include "core/progress.h"
+#include "features/view_features.h"
+#include "language/language_loss.h"
+#include "language/language_model.h"
+#include "splat/adam.h"
+#include "splat/checkpoint.h"
+#include "splat/ply_gaussians.h"
+#include "splat/rasterize.h"
+
+namespace cls {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kLevels = 3;
+
+// What training needs of one view: the camera, the seg maps and the encoded segment latents.
+struct ViewTargets {
+  size_t view = 0;  // index into scene.views
+  std::string stem;
+  int height = 0, width = 0;
+  std::vector<int32_t> sam_seg;  // 4 x H x W
+  std::vector<int32_t> gml_seg;  // 3 x H x W
+  at::Tensor sam_latents;        // N x L (device)
+  at::Tensor gml_latents;        // R x L (device)
+  at::Tensor coverage;           // H x W float 0/1 (device)
+};
+
+at::Device pick_device(const std::string& name) {
+  if (name == "cpu") return at::kCPU;
+  if (name == "cuda" || name == "auto") {
+#ifdef CLS_WITH_CUDA
+    if (at::hasCUDA()) return at::Device(at::kCUDA, 0);
+#endif
+    if (name == "cuda") throw UsageError("--device cuda: this build or machine has no CUDA device");
+    return at::kCPU;
+  }
+  throw UsageError("unknown device '" + name + "' (auto, cpu or cuda)");
+}
+
+at::Tensor encode_rows(const Autoencoder& ae, const at::Tensor& features, at::Device device) {
+  if (!features.defined() || features.size(0) == 0) return at::zeros({0, ae.config().latent_dim()}, at::kFloat).to(device);
+  return ae.encode(features.to(at::kFloat)).detach().to(at::kCPU).contiguous().to(device);
+}
+
+std::vector<ViewTargets> load_targets(const Scene& scene, const LanguageTrainOptions& o, const Autoencoder& ae,
+                                      at::Device device) {
+  std::vector<ViewTargets> views;
+  Progress progress("language targets", scene.views.size(), "views");
+  for (size_t i = 0; i < scene.views.size(); ++i) {
+    const SceneView& sv = scene.views[i];
+    const std::string stem = fs::path(sv.name).stem().string();
+    progress.advance();
+    if (!view_features_complete(o.features_dir, stem)) {
+      log_warn(cat("language training: no features for view ", sv.name, " in ", o.features_dir, "; skipped"));
+      continue;
+    }
+    ViewFeatures f = read_view_features(o.features_dir, stem);
+    const std::string what = (fs::path(o.features_dir) / (stem + "_s.npy")).string();
+    f.validate(what);
+    if (f.height != sv.camera.height || f.width != sv.camera.width)
+      fail(what, cat("features are ", f.width, " x ", f.height, " but the scene loads view ", sv.name, " at ",
+                     sv.camera.width, " x ", sv.camera.height, " (match --resolution to the features stage)"));
+    if (f.sam_features.defined() && f.sam_features.size(0) > 0 && f.sam_features.size(1) != ae.config().input_dim)
+      fail(what, cat("SAM features have ", f.sam_features.size(1), " channels, the autoencoder takes ",
+                     ae.config().input_dim));
+    if (f.gml_features.defined() && f.gml_features.size(0) > 0 && f.gml_features.size(1) != ae.config().input_dim)
+      fail(what, cat("CityGML features have ", f.gml_features.size(1), " channels, the autoencoder takes ",
+                     ae.config().input_dim));
+    ViewTargets t;
+    t.view = i;
+    t.stem = stem;
+    t.height = f.height;
+    t.width = f.width;
+    t.sam_seg = std::move(f.sam_seg);
+    t.gml_seg = std::move(f.gml_seg);
+    t.sam_latents = encode_rows(ae, f.sam_features, device);
+    t.gml_latents = encode_rows(ae, f.gml_features, device);
+    const size_t hw = size_t(t.height) * t.width;
+    at::Tensor m = at::zeros({t.height, t.width}, at::kFloat);
+    float* mp = m.data_ptr<float>();
+    for (int l = 0; l < kLevels; ++l)
+      for (size_t p = 0; p < hw; ++p)
+        if (t.gml_seg[l * hw + p] >= 0) mp[p] = 1.f;
+    t.coverage = m.to(device);
+    views.push_back(std::move(t));
+  }
+  progress.finish();
+  if (views.empty()) fail(o.features_dir, "no view of the scene has complete features (run `citylangsplat features`)");
+  return views;
+}
+
+// Fisher-Yates with the raw engine (std::shuffle's distribution is implementation-defined).
+std::vector<int> epoch_order(uint64_t seed, int level, int64_t epoch, int n) {
+  std::mt19937_64 rng(seed * 0x9E3779B97F4A7C15ull + uint64_t(level) * 0x100000001B3ull + uint64_t(epoch));
+  std::vector<int> order(n);
+  for (int i = 0; i < n; ++i) order[i] = i;
+  for (int i = n - 1; i > 0; --i) std::swap(order[i], order[rng() % uint64_t(i + 1)]);
+  return order;
+}
+
+std::string adam_name(int level) { return "latents_l" + std::to_string(level); }
+
+// Everything that must agree between a checkpoint and the run that resumes it.
+nlohmann::json run_config(const LanguageTrainOptions& o, int64_t n, int latent, size_t views) {
+  return {{"seed", o.seed},           {"baseline", o.baseline}, {"lambda_sam", o.lambda_sam},
+          {"lambda_citygml", o.lambda_citygml}, {"lr", o.lr}, {"gaussians", n},
+          {"latent_dim", latent},     {"views", views}};
+}
+
+struct TrainState {
+  int level = 1;          // 1..3
+  int64_t iteration = 0;  // iterations done at `level`
+  int64_t total = 0;      // iterations done over all levels
+  double ema_loss = 0;
+  std::array<double, 3> final_loss{0, 0, 0};
+  std::array<at::Tensor, 3> latents;  // finished levels and the current one
+};
+
+void save_checkpoint(const std::string& path, const TrainState& s, const Adam& adam, const nlohmann::json& config) {
+  Checkpoint c;
+  for (int l = 0; l < kLevels; ++l)
+    if (s.latents[l].defined()) c.tensors["latents.level" + std::to_string(l + 1)] = s.latents[l].detach().cpu().contiguous();
+  for (const auto& [name, t] : adam.state_tensors()) c.tensors[name] = t.detach().cpu().contiguous();
+  c.info = {{"kind", "language"},
+            {"level", s.level},
+            {"iteration", s.iteration},
+            {"total", s.total},
+            {"ema_loss", s.ema_loss},
+            {"final_loss", s.final_loss},
+            {"adam", adam.state_scalars()},
+            {"config", config}};
+  fs::create_directories(fs::path(path).parent_path());
+  write_checkpoint(path, c);
+}
+
+}  // namespace
+
+LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  if (o.iterations < 1) throw UsageError("--iterations must be at least 1");
+  if (o.lr <= 0) throw UsageError("--lr must be positive");
+  const at::Device device = pick_device(o.device);
+  install_interrupt_handlers();
+
+  // Frozen geometry: activated parameters without gradients.
+  const GaussianModel geometry = read_gaussians_ply(o.geometry_ply);
+  geometry.validate(o.geometry_ply);
+  const int64_t n = geometry.size();
+  if (n == 0) fail(o.geometry_ply, "has no Gaussians");
+  const at::Tensor means = geometry.means.detach().to(device, at::kFloat).contiguous();
+  const at::Tensor scales = geometry.scales().detach().to(device, at::kFloat).contiguous();
+  const at::Tensor quats = geometry.quats.detach().to(device, at::kFloat).contiguous();
+  const at::Tensor opacities = geometry.opacities().detach().to(device, at::kFloat).contiguous();
+
+  Autoencoder autoencoder = Autoencoder::load(o.autoencoder_path);
+  const int latent = autoencoder.config().latent_dim();
+
+  nlohmann::json provider = nullptr;
+  const fs::path features_json = fs::path(o.features_dir) / "features.json";
+  if (fs::exists(features_json)) {
+    try {
+      const nlohmann::json fj = nlohmann::json::parse(read_text_file(features_json));
+      if (fj.contains("provider")) provider = fj["provider"];
+      else if (fj.contains("spec")) provider = fj["spec"];
+    } catch (const nlohmann::json::exception& e) {
+      fail(features_json.string(), std::string("not valid JSON: ") + e.what());
+    }
+  } else {
+    log_warn(cat("language training: ", features_json.string(), " missing; the provider is not recorded"));
+  }
+
+  const std::vector<ViewTargets> views = load_targets(scene, o, autoencoder, device);
+  const int nviews = int(views.size());
+  const nlohmann::json config = run_config(o, n, latent, views.size());
+  const std::string checkpoint_path = (fs::path(o.out_dir) / "checkpoints" / "language.safetensors").string();
+
+  TrainState s;
+  Adam adam(0.9, 0.999, 1e-15);
+  bool restored = false;
+  Checkpoint resume_from;
+  if (o.resume && fs::exists(checkpoint_path)) {
+    resume_from = read_checkpoint(checkpoint_path);
+    const nlohmann::json& info = resume_from.info;
+    if (info.value("kind", "") != "language") fail(checkpoint_path, "not a language-training checkpoint");
+    if (info.value("config", nlohmann::json()) != config)
+      fail(checkpoint_path, "was written with other settings or inputs: " + info.value("config", nlohmann::json()).dump() +
+                                " vs now " + config.dump() + " (start without --resume, or restore those settings)");
+    s.level = info.at("level").get<int>();
+    s.iteration = info.at("iteration").get<int64_t>();
+    s.total = info.at("total").get<int64_t>();
+    s.ema_loss = info.at("ema_loss").get<double>();
+    s.final_loss = info.at("final_loss").get<std::array<double, 3>>();
+    for (int l = 0; l < kLevels; ++l) {
+      const auto it = resume_from.tensors.find("latents.level" + std::to_string(l + 1));
+      if (it == resume_from.tensors.end()) continue;
+      if (it->second.dim() != 2 || it->second.size(0) != n || it->second.size(1) != latent)
+        fail(checkpoint_path, "tensor 'latents.level" + std::to_string(l + 1) + "' has the wrong shape");
+      s.latents[l] = it->second.to(device, at::kFloat).clone();
+    }
+    if (s.level < 1 || s.level > kLevels || !s.latents[s.level - 1].defined())
+      fail(checkpoint_path, "inconsistent level / latents");
+    restored = true;
+    log_info(cat("language training: resuming at level ", s.level, ", iteration ", s.iteration));
+  } else if (o.resume) {
+    log_info(cat("language training: no checkpoint at ", checkpoint_path, "; starting from scratch"));
+  }
+
+  LanguageTrainReport report;
+  const LanguageLossWeights weights{o.lambda_sam, o.lambda_citygml, o.baseline};
+  for (int level = s.level; level <= kLevels; ++level) {
+    if (level != s.level) {  // a new level
+      s.level = level;
+      s.iteration = 0;
+      s.ema_loss = 0;
+    }
+    at::Tensor& latents = s.latents[level - 1];
+    if (!latents.defined()) latents = at::zeros({n, int64_t(latent)}, at::TensorOptions(device).dtype(at::kFloat));
+    latents = latents.detach().requires_grad_(true);
+    adam = Adam(0.9, 0.999, 1e-15);
+    adam.add(adam_name(level), latents, o.lr);
+    if (restored) {
+      std::map<std::string, at::Tensor> tensors;
+      for (const auto& [name, t] : resume_from.tensors)
+        if (name.rfind("adam.", 0) == 0) tensors[name] = t.to(device);
+      std::map<std::string, double> scalars = resume_from.info.at("adam").get<std::map<std::string, double>>();
+      adam.restore(tensors, scalars, checkpoint_path);
+      restored = false;
+    }
+
+    Progress progress(cat("language level ", level), uint64_t(std::max<int64_t>(0, o.iterations - s.iteration)), "it");
+    const int64_t log_every = std::max<int64_t>(1, o.iterations / 20);
+    std::vector<int> order;
+    int64_t order_epoch = -1;
+    while (s.iteration < o.iterations) {
+      const int64_t epoch = s.iteration / nviews;
+      if (epoch != order_epoch) order = epoch_order(o.seed, level, epoch, nviews), order_epoch = epoch;
+      const ViewTargets& v = views[order[s.iteration % nviews]];
+      const SceneView& sv = scene.views[v.view];
+
+      RasterizeSettings settings;
+      settings.camera = sv.camera;
+      settings.pose = sv.pose;
+      const at::Tensor rendered =
+          rasterize_features(means, scales, quats, opacities, adam.group(adam_name(level)).param, at::Tensor(), settings).image;
+      const size_t hw = size_t(v.height) * v.width;
+      LanguageLossInputs in;
+      in.rendered = rendered;
+      in.sam = gather_latent_target(v.sam_seg.data() + level * hw, v.height, v.width, v.sam_latents, "SAM seg map");
+      if (!o.baseline)
+        in.gml = gather_latent_target(v.gml_seg.data() + (level - 1) * hw, v.height, v.width, v.gml_latents,
+                                      "CityGML seg map");
+      in.coverage = v.coverage;
+      const LanguageLoss loss = language_loss(in, weights);
+      loss.total.backward();
+      adam.step();
+      adam.zero_grad();
+
+      const double value = loss.total.item<double>();
+      s.ema_loss = s.iteration == 0 ? value : 0.4 * value + 0.6 * s.ema_loss;  // 3DGS's ema_loss_for_log
+      ++s.iteration;
+      ++s.total;
+      ++report.iterations;
+      progress.advance();
+      if (s.iteration % log_every == 0 || s.iteration == o.iterations)
+        log_verbose(cat("language level ", level, " iteration ", s.iteration, "/", o.iterations, " loss ", s.ema_loss,
+                        " (SAM ", loss.sam.item<double>(), ", SAM-GML ", loss.sam_gml.item<double>(), ", CityGML ",
+                        loss.citygml.item<double>(), ")"));
+      latents = adam.group(adam_name(level)).param;
+
+      const bool stop = interrupt_requested() || (o.stop_after > 0 && s.total >= o.stop_after);
+      if (stop || (o.checkpoint_every > 0 && s.total % o.checkpoint_every == 0))
+        save_checkpoint(checkpoint_path, s, adam, config);
+      if (stop) {
+        progress.finish();
+        report.interrupted = true;
+        report.final_loss[level - 1] = s.ema_loss;
+        report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        log_info(cat("language training stopped at level ", level, ", iteration ", s.iteration,
+                     "; checkpoint written to ", checkpoint_path));
+        return report;
+      }
+    }
+    progress.finish();
+    s.final_loss[level - 1] = s.ema_loss;
+    latents = latents.detach();
+    log_info(cat("language level ", level, ": ", o.iterations, " iterations, loss ", s.ema_loss));
+  }
+  for (int l = 0; l < kLevels; ++l) report.final_loss[l] = s.final_loss[l];
+
+  nlohmann::json info = {{"method", o.baseline ? "langsplat" : "citylangsplat"},
+                         {"iterations", o.iterations},
+                         {"lr", o.lr},
+                         {"lambda_sam", o.lambda_sam},
+                         {"lambda_citygml", o.baseline ? 0.0 : o.lambda_citygml},
+                         {"features", fs::absolute(o.features_dir).string()},
+                         {"provider", provider},
+                         {"geometry_source", fs::absolute(o.geometry_ply).string()},
+                         {"autoencoder_source", fs::absolute(o.autoencoder_path).string()},
+                         {"views", nviews},
+                         {"seed", o.seed},
+                         {"final_loss", s.final_loss}};
+  GaussianModel frozen = geometry;
+  LanguageModel model{std::move(frozen), {}, std::move(autoencoder), std::move(info)};
+  for (int l = 0; l < kLevels; ++l) model.latents[l] = s.latents[l].detach().cpu().contiguous();
+  save_language_model(o.out_dir, model);
+  // A final checkpoint at the end, so a `--resume` of a finished run only rewrites the model.
+  save_checkpoint(checkpoint_path, s, adam, config);
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+}  // namespace cls

@@ -1,0 +1,243 @@
+#include "query/query_job.h"
+
+#include <ATen/core/grad_mode.h>
+#include <opencv2/imgcodecs.hpp>
+#include <torch/types.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+
+#include "citymodel/taxonomy.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "core/npy.h"
+#include "core/progress.h"
+#include "features/feature_provider.h"
+#include "language/language_model.h"
+#include "query/relevance.h"
+#include "query/relevance_image.h"
+#include "query/selection.h"
+#include "scene/scene.h"
+#include "splat/ply_gaussians.h"
+
+namespace cls {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+std::string trimmed(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
+}
+
+int parse_level(const std::string& level) {
+  if (level == "best") return 0;
+  if (level == "1" || level == "2" || level == "3") return level[0] - '0';
+  throw UsageError("query: --level must be 1, 2, 3 or best, got '" + level + "'");
+}
+
+// A view name as a file stem: sub-folders joined with '_', extension dropped.
+std::string view_stem(const std::string& name) {
+  std::string s = fs::path(name).replace_extension().string();
+  std::replace(s.begin(), s.end(), '/', '_');
+  return s;
+}
+
+std::vector<const SceneView*> pick_views(const Scene& scene, const std::vector<std::string>& names) {
+  std::vector<const SceneView*> out;
+  if (names.empty()) {
+    for (const auto& v : scene.views) out.push_back(&v);
+    return out;
+  }
+  for (const auto& n : names) {
+    const SceneView* found = nullptr;
+    for (const auto& v : scene.views)
+      if (v.name == n || fs::path(v.name).replace_extension().string() == n) found = &v;
+    if (!found) {
+      std::string known;
+      for (size_t i = 0; i < scene.views.size() && i < 5; ++i) known += (i ? ", " : "") + scene.views[i].name;
+      if (scene.views.size() > 5) known += ", ...";
+      throw UsageError("query: no view named '" + n + "' in " + scene.root + " (views: " + known + ")");
+    }
+    out.push_back(found);
+  }
+  return out;
+}
+
+Taxonomy taxonomy_for(const QueryOptions& o, const json& info, const std::string& model_json) {
+  if (!o.taxonomy_path.empty()) return Taxonomy::load(o.taxonomy_path);
+  if (info.contains("taxonomy") && info["taxonomy"].is_string()) {
+    const std::string path = info["taxonomy"].get<std::string>();
+    if (!path.empty()) {
+      if (!fs::exists(path)) fail(model_json, "records taxonomy " + path + ", which does not exist (pass --taxonomy)");
+      return Taxonomy::load(path);
+    }
+  }
+  return Taxonomy::builtin();
+}
+
+json stats_of(const at::Tensor& s) {
+  const at::Tensor d = s.to(torch::kFloat64);
+  if (d.numel() == 0) return json{{"count", 0}};
+  return json{{"count", d.numel()},
+              {"min", d.min().item<double>()},
+              {"max", d.max().item<double>()},
+              {"mean", d.mean().item<double>()},
+              {"std", d.numel() > 1 ? d.std().item<double>() : 0.0}};
+}
+
+void write_map(const fs::path& dir, const std::string& stem, const at::Tensor& map, const double range[2],
+               json& files, const fs::path& out_root) {
+  const at::Tensor m = map.to(torch::kCPU, torch::kFloat32).contiguous();
+  const std::vector<float> values(m.data_ptr<float>(), m.data_ptr<float>() + m.numel());
+  const fs::path npy = dir / (stem + ".npy"), png = dir / (stem + ".png");
+  write_npy(npy, make_npy<float>({m.size(0), m.size(1)}, values));
+  const cv::Mat img = colour_map(m, MapRange{range[0], range[1]});
+  write_atomic(png, [&](const fs::path& tmp) {
+    if (!cv::imwrite(tmp.string(), img)) fail(png.string(), "cannot write the PNG");
+  });
+  files.push_back(fs::relative(png, out_root).string());
+  files.push_back(fs::relative(npy, out_root).string());
+}
+
+}  // namespace
+
+json run_query(const QueryOptions& o) {
+  if (o.texts.empty()) throw UsageError("query: give at least one query text");
+  std::vector<std::string> texts;
+  for (const auto& t : o.texts) {
+    if (trimmed(t).empty()) throw UsageError("query: a query text is empty");
+    texts.push_back(trimmed(t));
+  }
+  const int fixed_level = parse_level(o.level);
+  if (o.use_top_k && o.top_k < 0) throw UsageError("query: --top-k must not be negative");
+  if (!fs::is_directory(o.model_dir)) fail(o.model_dir, "not a directory (expected a language model: model.json, point_cloud.ply, latents.safetensors, autoencoder.safetensors)");
+
+  at::NoGradGuard no_grad;
+  const LanguageModel model = load_language_model(o.model_dir);
+  const std::string model_json = (fs::path(o.model_dir) / "model.json").string();
+  const fs::path out = o.out_dir.empty() ? fs::path(o.model_dir) / "query" : fs::path(o.out_dir);
+  fs::create_directories(out);
+
+  // The text side: the model's own provider and encoder.
+  if (!model.info.contains("provider") || !model.info["provider"].is_object())
+    fail(model_json, "no \"provider\" spec recorded (the feature provider the model was trained with)");
+  const Taxonomy taxonomy = taxonomy_for(o, model.info, model_json);
+  const auto provider = make_feature_provider(model.info["provider"], taxonomy);
+  const int D = model.autoencoder.config().input_dim;
+  if (provider->dim() != D)
+    fail(model_json, "provider '" + provider->name() + "' gives " + std::to_string(provider->dim()) +
+                         "-d features, the autoencoder expects " + std::to_string(D));
+  const at::Tensor text_features = provider->text_features(texts).to(torch::kFloat32);  // K x D
+  const at::Tensor query_latents = model.autoencoder.encode(text_features);               // K x L
+  const std::vector<std::string> slugs = unique_slugs(texts);
+  const int64_t K = static_cast<int64_t>(texts.size());
+
+  // Per-Gaussian scores at every level; the chosen level per text.
+  GaussianModel scored = model.gaussians;
+  json queries = json::array();
+  std::vector<int> level_of(K);
+  std::vector<at::Tensor> score_of(K);
+  for (int64_t k = 0; k < K; ++k) {
+    std::array<at::Tensor, 3> per_level;
+    json level_max = json::object();
+    int best = 1;
+    double best_max = -2;
+    for (int l = 1; l <= 3; ++l) {
+      per_level[l - 1] = gaussian_scores(model.latents[l - 1], query_latents[k]);
+      const double mx = per_level[l - 1].numel() ? per_level[l - 1].max().item<double>() : -1.0;
+      level_max[std::to_string(l)] = mx;
+      if (mx > best_max) best_max = mx, best = l;  // ties keep the lower level
+    }
+    level_of[k] = fixed_level ? fixed_level : best;
+    score_of[k] = per_level[level_of[k] - 1];
+    scored.extras.push_back({"score_" + slugs[k], score_of[k]});
+
+    const at::Tensor sel = o.use_top_k ? select_top_k(score_of[k], o.top_k) : select_by_threshold(score_of[k], o.threshold);
+    GaussianModel subset = subset_gaussians(model.gaussians, sel);
+    subset.extras.push_back({"score_" + slugs[k], score_of[k].index_select(0, sel)});
+    const std::string sel_file = "selection_" + slugs[k] + ".ply";
+    write_gaussians_ply((out / sel_file).string(), subset);
+
+    json selection{{"mode", o.use_top_k ? "top-k" : "threshold"}, {"count", sel.numel()}, {"file", sel_file}};
+    if (o.use_top_k) selection["k"] = o.top_k;
+    else selection["threshold"] = o.threshold;
+    queries.push_back({{"text", texts[k]},
+                       {"slug", slugs[k]},
+                       {"level", level_of[k]},
+                       {"max_score_per_level", level_max},
+                       {"scores", stats_of(score_of[k])},
+                       {"score_property", "score_" + slugs[k]},
+                       {"selection", selection},
+                       {"maps", json::array()}});
+    log_info("query '" + texts[k] + "': level " + std::to_string(level_of[k]) + ", max score " +
+             std::to_string(stats_of(score_of[k]).value("max", 0.0)) + ", " + std::to_string(sel.numel()) +
+             " Gaussians selected");
+  }
+  write_gaussians_ply((out / "scores.ply").string(), scored);
+
+  // Relevance maps per view: one render + decode per (view, level) for all texts of that level.
+  json views_done = json::array();
+  if (o.maps) {
+    std::string scene_dir = o.scene_dir;
+    if (scene_dir.empty() && model.info.contains("scene") && model.info["scene"].is_string())
+      scene_dir = model.info["scene"].get<std::string>();
+    if (scene_dir.empty())
+      throw UsageError("query: relevance maps need the scene: pass --scene DIR (or --no-maps)");
+    SceneOptions scene_options;
+    scene_options.check_images = false;
+    const Scene scene = load_scene(scene_dir, scene_options);
+    const std::vector<const SceneView*> views = pick_views(scene, o.views);
+    const at::Tensor canonical = provider->text_features(canonical_phrases()).to(torch::kFloat32);
+    std::map<int, std::vector<int64_t>> texts_of_level;
+    for (int64_t k = 0; k < K; ++k) texts_of_level[level_of[k]].push_back(k);
+
+    const fs::path maps_dir = out / "maps";
+    fs::create_directories(maps_dir);
+    write_atomic(maps_dir / "legend_turbo.png", [&](const fs::path& tmp) {
+      if (!cv::imwrite(tmp.string(), colour_legend())) fail((maps_dir / "legend_turbo.png").string(), "cannot write");
+    });
+    for (int64_t k = 0; k < K; ++k) fs::create_directories(maps_dir / slugs[k]);
+    Progress progress("relevance maps", views.size() * texts_of_level.size(), "renders");
+    for (const SceneView* view : views) {
+      const std::string stem = view_stem(view->name);
+      for (const auto& [level, ks] : texts_of_level) {
+        const at::Tensor idx = torch::tensor(ks, torch::kInt64);
+        const RelevanceMaps m = relevance_maps(model, level, *view, text_features.index_select(0, idx), canonical);
+        for (size_t j = 0; j < ks.size(); ++j) {
+          const int64_t k = ks[j];
+          json& files = queries[k]["maps"];
+          write_map(maps_dir / slugs[k], stem + "_cosine", m.cosine[j], kCosineRange, files, out);
+          write_map(maps_dir / slugs[k], stem + "_relevancy", m.relevancy[j], kRelevancyRange, files, out);
+        }
+        progress.advance();
+      }
+      views_done.push_back({{"name", view->name}, {"width", view->camera.width}, {"height", view->camera.height}});
+    }
+    progress.finish();
+  }
+
+  json result{{"model", fs::absolute(o.model_dir).string()},
+              {"method", model.info.value("method", "")},
+              {"provider", provider->spec()},
+              {"level_requested", o.level},
+              {"gaussians", model.gaussians.size()},
+              {"queries", queries},
+              {"scores_file", "scores.ply"},
+              {"canonical_phrases", canonical_phrases()},
+              {"views", views_done}};
+  if (o.maps)
+    result["maps"] = {{"colormap", "turbo (OpenCV COLORMAP_TURBO): dark blue = range low, dark red = range high"},
+                      {"legend", "maps/legend_turbo.png"},
+                      {"cosine_range", {kCosineRange[0], kCosineRange[1]}},
+                      {"relevancy_range", {kRelevancyRange[0], kRelevancyRange[1]}},
+                      {"raw", "float32 H x W .npy beside each PNG"}};
+  write_text_atomic(out / "query.json", result.dump(2) + "\n");
+  return result;
+}
+
+}  // namespace cls

@@ -1,0 +1,38 @@
+#pragma once
+// `citylangsplat query`: open-vocabulary queries on a trained language field (paper 3.3).
+// text -> feature provider (the model's, re-created from model.json "provider") -> encoder -> query
+// latent q; per Gaussian s_i = cos(q, g_i) at the chosen level, written as `score_<slug>` properties
+// of OUT/scores.ply; a threshold or top-k selection per query as OUT/selection_<slug>.ply; per view
+// and query the rendered latents decoded to feature space, compared with the text feature: plain
+// cosine and LangSplat's relevancy, as turbo-coloured PNG and raw .npy (OUT/maps/<slug>/); and
+// OUT/query.json describing all of it. See docs/query.md.
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace cls {
+
+struct QueryOptions {
+  std::string model_dir;
+  std::vector<std::string> texts;
+  std::string out_dir;          // empty: MODEL/query
+  std::string level = "best";   // "1", "2", "3", or "best": per text the level with the highest max score
+  bool use_top_k = false;       // selection: top-k instead of threshold
+  double threshold = 0.5;       // s_i >= threshold
+  int64_t top_k = 0;
+  std::vector<std::string> views;  // view names (or names without extension); empty = all
+  std::string scene_dir;        // empty: model.json "scene"
+  std::string taxonomy_path;    // empty: model.json "taxonomy", else the built-in taxonomy
+  bool maps = true;             // relevance maps (needs the scene)
+};
+
+// Fixed colour ranges of the PNG maps (raw values are in the .npy files).
+constexpr double kCosineRange[2] = {0.0, 1.0};
+constexpr double kRelevancyRange[2] = {0.0, 1.0};
+
+// Runs the queries and returns what it wrote to OUT/query.json. cls::UsageError for bad options
+// (empty text, unknown level or view names), cls::Error naming the file for a broken model dir.
+nlohmann::json run_query(const QueryOptions& options);
+
+}  // namespace cls

@@ -1,0 +1,170 @@
+#include "query/relevance.h"
+
+#include <ATen/core/grad_mode.h>
+#include <torch/types.h>
+
+#include <string>
+
+#include "core/error.h"
+#include "splat/rasterize.h"
+
+namespace cls {
+namespace {
+
+std::string shape_of(const at::Tensor& t) { return t.defined() ? c10::str(t.sizes()) : "undefined"; }
+
+// Rows (last dimension) scaled to unit length; zero rows stay zero (their cosine with anything is 0).
+at::Tensor unit_rows(const at::Tensor& x) {
+  const at::Tensor n = x.norm(2, {-1}, /*keepdim=*/true);
+  return torch::where(n > 0, x / n, torch::zeros_like(x));
+}
+
+void check_features(const at::Tensor& features, const char* fn) {
+  if (!features.defined() || features.dim() != 3)
+    throw Error(std::string(fn) + ": features must be H x W x D, got " + shape_of(features));
+}
+
+void check_rows(const at::Tensor& rows, int64_t dim, const char* fn, const char* what) {
+  if (!rows.defined() || rows.dim() != 2 || rows.size(1) != dim)
+    throw Error(std::string(fn) + ": " + what + " must be K x " + std::to_string(dim) + ", got " + shape_of(rows));
+}
+
+}  // namespace
+
+at::Tensor gaussian_scores(const at::Tensor& latents, const at::Tensor& query_latent) {
+  if (!latents.defined() || latents.dim() != 2)
+    throw Error("gaussian_scores: latents must be N x L, got " + shape_of(latents));
+  if (!query_latent.defined() || query_latent.dim() != 1 || query_latent.size(0) != latents.size(1))
+    throw Error("gaussian_scores: query latent must have " + std::to_string(latents.size(1)) + " values, got " +
+                shape_of(query_latent));
+  at::NoGradGuard no_grad;
+  // s_i = <q, g_i> / (|q| |g_i|) (paper 3.3), in double so that the ranking of near-equal scores is stable.
+  const at::Tensor g = latents.to(torch::kFloat64), q = query_latent.to(latents.device(), torch::kFloat64);
+  const at::Tensor dot = g.matmul(q);
+  const at::Tensor denom = g.norm(2, {1}) * q.norm();
+  return torch::where(denom > 0, dot / denom, torch::zeros_like(dot)).to(torch::kFloat32);
+}
+
+at::Tensor cosine_maps(const at::Tensor& features, const at::Tensor& prototypes) {
+  check_features(features, "cosine_maps");
+  const int64_t H = features.size(0), W = features.size(1), D = features.size(2);
+  check_rows(prototypes, D, "cosine_maps", "prototypes");
+  at::NoGradGuard no_grad;
+  const at::Tensor f = unit_rows(features.reshape({H * W, D}).to(torch::kFloat32));
+  const at::Tensor p = unit_rows(prototypes.to(features.device(), torch::kFloat32));
+  return p.matmul(f.t()).reshape({prototypes.size(0), H, W});
+}
+
+at::Tensor relevancy_from_cosines(const at::Tensor& query_cos, const at::Tensor& canonical_cos) {
+  if (!query_cos.defined() || !canonical_cos.defined() || canonical_cos.dim() != query_cos.dim() + 1 ||
+      canonical_cos.sizes().slice(0, query_cos.dim()) != query_cos.sizes() || canonical_cos.size(-1) == 0)
+    throw Error("langsplat relevancy: canonical cosines must be (query shape) x M with M > 0, got " +
+                shape_of(canonical_cos) + " for " + shape_of(query_cos));
+  // OpenCLIPNetwork.get_relevancy: sims = stack(repeated positive, negatives) (... x M x 2),
+  // softmax(10 * sims) over the pair, keep the pair whose positive probability is smallest.
+  const at::Tensor pos = query_cos.unsqueeze(-1).expand_as(canonical_cos);
+  const at::Tensor sims = torch::stack({pos, canonical_cos}, -1);
+  const at::Tensor positive_prob = torch::softmax(10.0 * sims, -1).select(-1, 0);
+  return std::get<0>(positive_prob.min(-1));
+}
+
+at::Tensor langsplat_relevancy(const at::Tensor& features, const at::Tensor& query, const at::Tensor& canonical) {
+  check_features(features, "langsplat_relevancy");
+  const int64_t D = features.size(2);
+  if (!query.defined() || query.dim() != 1 || query.size(0) != D)
+    throw Error("langsplat_relevancy: query must have " + std::to_string(D) + " values, got " + shape_of(query));
+  check_rows(canonical, D, "langsplat_relevancy", "canonical phrases");
+  if (canonical.size(0) == 0) throw Error("langsplat_relevancy: no canonical phrases");
+  at::NoGradGuard no_grad;
+  const at::Tensor cos = cosine_maps(features, torch::cat({query.reshape({1, D}), canonical}, 0));  // (1+M) x H x W
+  return relevancy_from_cosines(cos[0], cos.slice(0, 1).permute({1, 2, 0}));
+}
+
+const std::vector<std::string>& canonical_phrases() {
+  static const std::vector<std::string> phrases{"object", "things", "stuff", "texture"};
+  return phrases;
+}
+
+RenderedLatents render_latents(const GaussianModel& gaussians, const at::Tensor& latents, const PinholeCamera& camera,
+                               const Pose& pose) {
+  if (!latents.defined() || latents.dim() != 2 || latents.size(0) != gaussians.size())
+    throw Error("render_latents: latents must be " + std::to_string(gaussians.size()) + " x L, got " +
+                shape_of(latents));
+  at::NoGradGuard no_grad;
+  const at::Tensor means = gaussians.means.contiguous();
+  RasterizeSettings settings;
+  settings.camera = camera;
+  settings.pose = pose;
+  const RasterizeOutput out =
+      rasterize_features(means, gaussians.scales().contiguous(), gaussians.quats.contiguous(),
+                         gaussians.opacities().contiguous(), latents.to(means.device(), means.scalar_type()).contiguous(),
+                         at::Tensor(), settings);
+  return {out.image, out.alpha};
+}
+
+namespace {
+
+// Calls `decode` on rows [begin, end) of `latents` (P x L) chunk by chunk and hands each decoded chunk
+// (B x D float32) to `sink(begin, decoded)`.
+template <class Sink>
+void decode_chunks(const at::Tensor& latents, const LatentDecoder& decode, int64_t chunk, Sink&& sink) {
+  if (chunk <= 0) throw Error("render_decoded: chunk size must be positive");
+  const int64_t P = latents.size(0);
+  for (int64_t b = 0; b < P; b += chunk) {
+    const int64_t e = std::min(P, b + chunk);
+    at::Tensor d = decode(latents.slice(0, b, e));
+    if (!d.defined() || d.dim() != 2 || d.size(0) != e - b)
+      throw Error("render_decoded: the decoder returned " + shape_of(d) + " for " + std::to_string(e - b) + " latents");
+    sink(b, d.to(torch::kFloat32));
+  }
+}
+
+}  // namespace
+
+DecodedView render_decoded(const GaussianModel& gaussians, const at::Tensor& latents, const LatentDecoder& decode,
+                           const PinholeCamera& camera, const Pose& pose, int64_t chunk_pixels) {
+  const RenderedLatents r = render_latents(gaussians, latents, camera, pose);
+  at::NoGradGuard no_grad;
+  const int64_t H = r.latents.size(0), W = r.latents.size(1), L = r.latents.size(2);
+  const at::Tensor flat = r.latents.reshape({H * W, L});
+  at::Tensor features;
+  decode_chunks(flat, decode, chunk_pixels, [&](int64_t b, const at::Tensor& d) {
+    if (!features.defined()) features = torch::empty({H * W, d.size(1)}, d.options());
+    if (d.size(1) != features.size(1)) throw Error("render_decoded: the decoder's output size changed between chunks");
+    features.slice(0, b, b + d.size(0)).copy_(d);
+  });
+  if (!features.defined()) features = torch::empty({0, 0}, flat.options().dtype(torch::kFloat32));
+  return {features.reshape({H, W, features.size(1)}), r.alpha.to(torch::kFloat32)};
+}
+
+RelevanceMaps relevance_maps(const GaussianModel& gaussians, const at::Tensor& latents, const LatentDecoder& decode,
+                             const PinholeCamera& camera, const Pose& pose, const at::Tensor& queries,
+                             const at::Tensor& canonical, int64_t chunk_pixels) {
+  if (!queries.defined() || queries.dim() != 2 || !canonical.defined() || canonical.dim() != 2 ||
+      canonical.size(0) == 0 || canonical.size(1) != queries.size(1))
+    throw Error("relevance_maps: queries K x D and canonical M x D (M > 0) expected, got " + shape_of(queries) +
+                " and " + shape_of(canonical));
+  const RenderedLatents r = render_latents(gaussians, latents, camera, pose);
+  at::NoGradGuard no_grad;
+  const int64_t H = r.latents.size(0), W = r.latents.size(1), L = r.latents.size(2);
+  const int64_t K = queries.size(0), D = queries.size(1);
+  const at::Tensor flat = r.latents.reshape({H * W, L});
+  const at::Tensor phrases = unit_rows(torch::cat({queries, canonical}, 0).to(flat.device(), torch::kFloat32));
+  at::Tensor cos = torch::empty({H * W, phrases.size(0)}, flat.options().dtype(torch::kFloat32));
+  decode_chunks(flat, decode, chunk_pixels, [&](int64_t b, const at::Tensor& d) {
+    if (d.size(1) != D)
+      throw Error("relevance_maps: the decoder gives " + std::to_string(d.size(1)) + "-d features, the queries are " +
+                  std::to_string(D) + "-d");
+    cos.slice(0, b, b + d.size(0)).copy_(unit_rows(d).matmul(phrases.t()));
+  });
+  const at::Tensor canonical_cos = cos.slice(1, K);  // P x M
+  std::vector<at::Tensor> relevancy;
+  for (int64_t k = 0; k < K; ++k) relevancy.push_back(relevancy_from_cosines(cos.select(1, k), canonical_cos));
+  RelevanceMaps out;
+  out.cosine = cos.slice(1, 0, K).t().reshape({K, H, W}).contiguous();
+  out.relevancy = K > 0 ? torch::stack(relevancy, 0).reshape({K, H, W}) : torch::empty({0, H, W}, cos.options());
+  out.alpha = r.alpha.to(torch::kFloat32);
+  return out;
+}
+
+}  // namespace cls

@@ -1,0 +1,147 @@
+// The dual-feature loss of paper 3.3 against hand-computed values (see the comments for the sums).
+#include <gtest/gtest.h>
+#include <torch/torch.h>
+
+#include <vector>
+
+#include "core/error.h"
+#include "language/language_loss.h"
+
+namespace cls {
+namespace {
+
+torch::Tensor t2(std::vector<float> v, int64_t h, int64_t w) { return torch::tensor(v).view({h, w}); }
+torch::Tensor t3(std::vector<float> v, int64_t h, int64_t w, int64_t l) { return torch::tensor(v).view({h, w, l}); }
+
+// 2 x 2 view, 2 channels. Rendered: p00 (1, 2), p01 (0, 0), p10 (3, -1), p11 (0.5, 0.5).
+// SAM ids [0, -1, 1, 0] with table (1, 0), (2, 2); CityGML ids [0, 0, -1, -1] with table (0, 1);
+// M = [1, 1, 0, 0].
+//   p00: |(1,2)-(1,0)| = 2 (SAM, M=1), |(1,2)-(0,1)| = 2 (GML)
+//   p01: no SAM segment; |(0,0)-(0,1)| = 1 (GML)
+//   p10: |(3,-1)-(2,2)| = 4 (SAM, M=0)
+//   p11: |(0.5,0.5)-(1,0)| = 1 (SAM, M=0)
+// Divided by H W L = 8: L_SAM = 5/8, L_SAM-GML = 2/8, L_CityGML = 3/8.
+struct Case2x2 {
+  std::vector<int32_t> sam_ids{0, -1, 1, 0}, gml_ids{0, 0, -1, -1};
+  torch::Tensor sam_table = torch::tensor({1.f, 0.f, 2.f, 2.f}).view({2, 2});
+  torch::Tensor gml_table = torch::tensor({0.f, 1.f}).view({1, 2});
+  torch::Tensor rendered = t3({1, 2, 0, 0, 3, -1, 0.5, 0.5}, 2, 2, 2);
+  torch::Tensor coverage = t2({1, 1, 0, 0}, 2, 2);
+
+  LanguageLossInputs inputs() const {
+    LanguageLossInputs in;
+    in.rendered = rendered;
+    in.sam = gather_latent_target(sam_ids.data(), 2, 2, sam_table);
+    in.gml = gather_latent_target(gml_ids.data(), 2, 2, gml_table);
+    in.coverage = coverage;
+    return in;
+  }
+};
+
+TEST(LanguageLoss, GatherBuildsDenseTargetAndValidity) {
+  Case2x2 c;
+  const LatentTarget t = gather_latent_target(c.sam_ids.data(), 2, 2, c.sam_table);
+  EXPECT_TRUE(torch::equal(t.latents, t3({1, 0, 0, 0, 2, 2, 1, 0}, 2, 2, 2)));
+  EXPECT_TRUE(torch::equal(t.valid, t2({1, 0, 1, 1}, 2, 2)));
+  std::vector<int32_t> bad{0, 2, -1, 0};
+  EXPECT_THROW(gather_latent_target(bad.data(), 2, 2, c.sam_table), Error);
+  bad[1] = -2;
+  EXPECT_THROW(gather_latent_target(bad.data(), 2, 2, c.sam_table), Error);
+  // No segments at all: an empty table is fine as long as every id is -1.
+  std::vector<int32_t> none(4, -1);
+  const LatentTarget e = gather_latent_target(none.data(), 2, 2, torch::zeros({0, 2}));
+  EXPECT_EQ(e.valid.sum().item<float>(), 0.f);
+  EXPECT_EQ(e.latents.sizes(), (std::vector<int64_t>{2, 2, 2}));
+}
+
+TEST(LanguageLoss, EachTermByHand) {
+  Case2x2 c;
+  const LanguageLoss l = language_loss(c.inputs(), {1.0, 0.5, false});
+  EXPECT_NEAR(l.sam.item<double>(), 5.0 / 8, 1e-6);
+  EXPECT_NEAR(l.sam_gml.item<double>(), 2.0 / 8, 1e-6);
+  EXPECT_NEAR(l.citygml.item<double>(), 3.0 / 8, 1e-6);
+  EXPECT_NEAR(l.total.item<double>(), 5.0 / 8 + 2.0 / 8 + 0.5 * 3.0 / 8, 1e-6);
+  // Other lambdas weight only their own terms.
+  const LanguageLoss l2 = language_loss(c.inputs(), {2.0, 0.25, false});
+  EXPECT_NEAR(l2.total.item<double>(), 5.0 / 8 + 2.0 * 2.0 / 8 + 0.25 * 3.0 / 8, 1e-6);
+}
+
+TEST(LanguageLoss, CoverageSplitsTheSamTerm) {
+  Case2x2 c;
+  // M = 0 everywhere: all SAM pixels go to L_SAM, CityGML contributes nothing.
+  c.coverage = torch::zeros({2, 2});
+  LanguageLoss l = language_loss(c.inputs(), {1.0, 0.5, false});
+  EXPECT_NEAR(l.sam.item<double>(), 7.0 / 8, 1e-6);
+  EXPECT_NEAR(l.sam_gml.item<double>(), 0.0, 1e-7);
+  EXPECT_NEAR(l.citygml.item<double>(), 0.0, 1e-7);
+  // M = 1 everywhere: all SAM pixels go to L_SAM-GML.
+  c.coverage = torch::ones({2, 2});
+  l = language_loss(c.inputs(), {1.0, 0.5, false});
+  EXPECT_NEAR(l.sam.item<double>(), 0.0, 1e-7);
+  EXPECT_NEAR(l.sam_gml.item<double>(), 7.0 / 8, 1e-6);
+  EXPECT_NEAR(l.citygml.item<double>(), 3.0 / 8, 1e-6);
+}
+
+// 3 x 1 view, 3 channels: rendered (0,0,0), (1,1,1), (0,2,0); SAM ids [1, 0, -1] with table
+// (1,1,1), (1,0,-1); CityGML ids [-1, 0, 0] with table (0,0,1); M = [1, 1, 0].
+//   p0: SAM |(0,0,0)-(1,0,-1)| = 2 inside coverage; no CityGML region
+//   p1: SAM 0; CityGML |(1,1,1)-(0,0,1)| = 2
+//   p2: no SAM segment; a CityGML id where M = 0 does not count
+// / 9: L_SAM = 0, L_SAM-GML = 2/9, L_CityGML = 2/9, total = 2/9 + 0.5 * 2/9 = 1/3.
+TEST(LanguageLoss, MasksOnThreeByOne) {
+  std::vector<int32_t> sam_ids{1, 0, -1}, gml_ids{-1, 0, 0};
+  LanguageLossInputs in;
+  in.rendered = t3({0, 0, 0, 1, 1, 1, 0, 2, 0}, 3, 1, 3);
+  in.sam = gather_latent_target(sam_ids.data(), 3, 1, torch::tensor({1.f, 1.f, 1.f, 1.f, 0.f, -1.f}).view({2, 3}));
+  in.gml = gather_latent_target(gml_ids.data(), 3, 1, torch::tensor({0.f, 0.f, 1.f}).view({1, 3}));
+  in.coverage = t2({1, 1, 0}, 3, 1);
+  const LanguageLoss l = language_loss(in, {1.0, 0.5, false});
+  EXPECT_NEAR(l.sam.item<double>(), 0.0, 1e-7);
+  EXPECT_NEAR(l.sam_gml.item<double>(), 2.0 / 9, 1e-6);
+  EXPECT_NEAR(l.citygml.item<double>(), 2.0 / 9, 1e-6);
+  EXPECT_NEAR(l.total.item<double>(), 1.0 / 3, 1e-6);
+}
+
+TEST(LanguageLoss, BaselineIsPlainL1OverSamPixels) {
+  Case2x2 c;
+  // LangSplat: mean over H W L of |Z^ - Z_SAM| on SAM-valid pixels = (2 + 4 + 1) / 8, whatever
+  // M and the lambdas; the CityGML targets are not even needed.
+  LanguageLossInputs in = c.inputs();
+  in.gml = LatentTarget{};
+  for (double ls : {1.0, 3.0}) {
+    const LanguageLoss l = language_loss(in, {ls, 0.5, true});
+    EXPECT_NEAR(l.total.item<double>(), 7.0 / 8, 1e-6);
+    EXPECT_NEAR(l.citygml.item<double>(), 0.0, 1e-7);
+  }
+  // The same as torch's l1_loss of the masked maps (LangSplat's train.py).
+  const torch::Tensor mask = in.sam.valid.unsqueeze(-1);
+  const double ref = torch::l1_loss(c.rendered * mask, in.sam.latents * mask).item<double>();
+  EXPECT_NEAR(language_loss(in, {1.0, 0.5, true}).total.item<double>(), ref, 1e-6);
+}
+
+TEST(LanguageLoss, GradientByHand) {
+  Case2x2 c;
+  LanguageLossInputs in = c.inputs();
+  in.rendered = c.rendered.clone().requires_grad_(true);
+  language_loss(in, {1.0, 0.5, false}).total.backward();
+  const torch::Tensor g = in.rendered.grad();
+  // p00 channel 1: z = 2 above the SAM target 0 (lambda_sam) and the GML target 1 (lambda_citygml).
+  EXPECT_NEAR(g[0][0][1].item<double>(), (1.0 + 0.5) / 8, 1e-6);
+  // p01 channel 1: no SAM segment; z = 0 below the GML target 1.
+  EXPECT_NEAR(g[0][1][1].item<double>(), -0.5 / 8, 1e-6);
+  // p10 channel 1: z = -1 below the SAM target 2, outside coverage (weight 1).
+  EXPECT_NEAR(g[1][0][1].item<double>(), -1.0 / 8, 1e-6);
+}
+
+TEST(LanguageLoss, ShapeMismatchIsAnError) {
+  Case2x2 c;
+  LanguageLossInputs in = c.inputs();
+  in.coverage = torch::ones({2, 3});
+  EXPECT_THROW(language_loss(in, {}), Error);
+  in = c.inputs();
+  in.gml = LatentTarget{};
+  EXPECT_THROW(language_loss(in, {1.0, 0.5, false}), Error);
+}
+
+}  // namespace
+}  // namespace cls

@@ -1,0 +1,231 @@
+// `citylangsplat query` on a tiny hand-made language model (random latents and autoencoder, the
+// synthetic feature provider) and a two-view COLMAP scene; results checked against independent
+// computations of the scores.
+#include <gtest/gtest.h>
+#include <torch/torch.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <numeric>
+#include <opencv2/imgcodecs.hpp>
+#include <set>
+
+#include "citymodel/taxonomy.h"
+#include "cli_runner.h"
+#include "core/atomic_file.h"
+#include "core/npy.h"
+#include "features/feature_provider.h"
+#include "language/language_model.h"
+#include "latent_scene.h"
+#include "query/relevance.h"
+#include "scene/colmap.h"
+#include "scene/scene.h"
+#include "splat/ply_gaussians.h"
+
+namespace cls {
+namespace {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+constexpr int kN = 250, kLatent = 8, kDim = 16;
+const char* const kWindow = "a window on a building facade";  // a taxonomy prompt
+const char* const kRoof = "Red roof!";                         // any other text
+
+struct Fixture {
+  fs::path root, model_dir, scene_dir;
+  json provider_spec{{"provider", "synthetic"}, {"seed", 3}, {"dim", kDim}};
+  std::vector<std::pair<std::string, std::pair<int, int>>> views;  // name, (width, height)
+
+  Fixture() {
+    root = fs::temp_directory_path() / ("cls_query_test_" + std::to_string(::getpid()));
+    fs::remove_all(root);
+    model_dir = root / "model";
+    scene_dir = root / "scene";
+    const test::LatentScene t = test::latent_scene(kN, 48, 36, kLatent, 21);
+    torch::manual_seed(4);
+    LanguageModel m{t.g, {}, Autoencoder(AutoencoderConfig{kDim, {12, kLatent}, {12, kDim}}, 7), {}};
+    for (int l = 0; l < 3; ++l) m.latents[l] = torch::randn({kN, kLatent});
+    m.info = {{"method", "citylangsplat"}, {"provider", provider_spec}, {"scene", scene_dir.string()}};
+    save_language_model(model_dir.string(), m);
+
+    // Two pinhole views of different sizes looking at the Gaussians.
+    ColmapModel cm;
+    cm.cameras[1] = Camera{1, CameraModel::Pinhole, 48, 36, {t.camera.fx, t.camera.fy, t.camera.cx, t.camera.cy}};
+    cm.cameras[2] = Camera{2, CameraModel::Pinhole, 40, 30,
+                           {t.camera.fx * 40 / 48, t.camera.fy * 40 / 48, t.camera.cx * 40 / 48, t.camera.cy * 40 / 48}};
+    for (uint32_t i = 1; i <= 2; ++i) {
+      ColmapImage im;
+      im.id = i;
+      im.camera_id = i;
+      im.qvec = rotation_to_qvec(t.pose.R);
+      im.tvec = {t.pose.t.x + 0.1 * (i - 1), t.pose.t.y, t.pose.t.z};
+      im.name = i == 1 ? "a/0001.png" : "0002.jpg";
+      cm.images[i] = im;
+    }
+    fs::create_directories(scene_dir / "sparse" / "0");
+    write_colmap_binary((scene_dir / "sparse" / "0").string(), cm);
+    views = {{"a/0001.png", {48, 36}}, {"0002.jpg", {40, 30}}};
+  }
+  ~Fixture() { fs::remove_all(root); }
+};
+
+Fixture& fixture() {
+  static Fixture f;
+  return f;
+}
+
+// Independent scores: the provider's text feature, the model's encoder, then cos per Gaussian in double.
+std::vector<double> independent_scores(const LanguageModel& m, const std::string& text, int level) {
+  const auto provider = make_feature_provider(fixture().provider_spec, Taxonomy::builtin());
+  const at::Tensor q = m.autoencoder.encode(provider->text_features({text})).to(torch::kFloat64)[0];
+  const at::Tensor g = m.latents[level - 1].to(torch::kFloat64);
+  std::vector<double> s(kN);
+  for (int i = 0; i < kN; ++i) {
+    double dot = 0, nq = 0, ng = 0;
+    for (int j = 0; j < kLatent; ++j) {
+      const double a = q[j].item<double>(), b = g[i][j].item<double>();
+      dot += a * b, nq += a * a, ng += b * b;
+    }
+    s[i] = dot / std::sqrt(nq * ng);
+  }
+  return s;
+}
+
+std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
+
+TEST(QueryCli, TopKScoresMapsAndJson) {
+  Fixture& f = fixture();
+  const fs::path out = f.root / "out_topk";
+  const int k = 7;
+  const auto r = test::run_cli("-q query " + q(f.model_dir) + " '" + kWindow + "' '" + kRoof +
+                               "' --top-k 7 --out " + q(out));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json j = json::parse(read_text_file(out / "query.json"));
+  const LanguageModel m = load_language_model(f.model_dir.string());
+  const GaussianModel scored = read_gaussians_ply((out / "scores.ply").string());
+  ASSERT_EQ(scored.size(), kN);
+  EXPECT_TRUE(torch::allclose(scored.means, m.gaussians.means));
+
+  const std::vector<std::string> texts{kWindow, "Red roof!"}, slugs{"a_window_on_a_building_facade", "red_roof"};
+  ASSERT_EQ(j["queries"].size(), 2u);
+  for (size_t t = 0; t < 2; ++t) {
+    const json& qj = j["queries"][t];
+    EXPECT_EQ(qj["slug"], slugs[t]);
+    // "best": the level whose max score is highest.
+    std::vector<double> max_of(3);
+    for (int l = 1; l <= 3; ++l) {
+      const auto s = independent_scores(m, texts[t], l);
+      max_of[l - 1] = *std::max_element(s.begin(), s.end());
+    }
+    const int best = int(std::max_element(max_of.begin(), max_of.end()) - max_of.begin()) + 1;
+    ASSERT_EQ(qj["level"], best);
+
+    // Scores in the PLY equal the independent ones.
+    const std::vector<double> s = independent_scores(m, texts[t], best);
+    const GaussianExtra* e = scored.extra("score_" + slugs[t]);
+    ASSERT_NE(e, nullptr);
+    for (int i = 0; i < kN; ++i) ASSERT_NEAR(e->values[i].item<float>(), s[i], 1e-5) << i;
+
+    // The selection: exactly the k Gaussians with the highest independent scores.
+    std::vector<int> order(kN);
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return s[a] > s[b]; });
+    std::set<int> expected(order.begin(), order.begin() + k);
+    const GaussianModel sel = read_gaussians_ply((out / ("selection_" + slugs[t] + ".ply")).string());
+    ASSERT_EQ(sel.size(), k);
+    EXPECT_EQ(qj["selection"]["count"], k);
+    std::set<int> got;
+    for (int r2 = 0; r2 < k; ++r2)
+      for (int i = 0; i < kN; ++i)
+        if (torch::equal(sel.means[r2], m.gaussians.means[i])) got.insert(i);
+    EXPECT_EQ(got, expected);
+
+    // Maps: one cosine and one relevancy map per view, PNG and .npy of the view's size.
+    for (const auto& [name, size] : f.views) {
+      std::string stem = fs::path(name).replace_extension().string();
+      std::replace(stem.begin(), stem.end(), '/', '_');
+      for (const char* kind : {"_cosine", "_relevancy"}) {
+        const fs::path base = out / "maps" / slugs[t] / (stem + kind);
+        const NpyArray a = read_npy(base.string() + ".npy");
+        EXPECT_EQ(a.dtype, "<f4");
+        EXPECT_EQ(a.shape, (std::vector<int64_t>{size.second, size.first})) << base;
+        const cv::Mat png = cv::imread(base.string() + ".png", cv::IMREAD_COLOR);
+        ASSERT_FALSE(png.empty()) << base;
+        EXPECT_EQ(png.cols, size.first);
+        EXPECT_EQ(png.rows, size.second);
+        const std::vector<float> v = a.to_float();
+        const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+        EXPECT_GE(*lo, std::string(kind) == "_cosine" ? -1.0001f : 0.0f);
+        EXPECT_LE(*hi, 1.0001f);
+        EXPECT_LT(*lo, *hi) << base << " is constant";
+      }
+    }
+  }
+  EXPECT_TRUE(fs::exists(out / "maps" / "legend_turbo.png"));
+  EXPECT_EQ(j["views"].size(), 2u);
+}
+
+TEST(QueryCli, CosineMapEqualsDecodedFieldOfTheView) {
+  // The job's chunked maps against cosine_maps of render_decoded of the loaded model.
+  Fixture& f = fixture();
+  const fs::path out = f.root / "out_level2";
+  const auto r = test::run_cli("-q query " + q(f.model_dir) + " wall --level 2 --views 0002 --out " + q(out));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const LanguageModel m = load_language_model(f.model_dir.string());
+  const Scene scene = load_scene(f.scene_dir.string(), SceneOptions{1, 0, false});
+  const SceneView& view = scene.views[0].name == "0002.jpg" ? scene.views[0] : scene.views[1];
+  const auto provider = make_feature_provider(f.provider_spec, Taxonomy::builtin());
+  const DecodedView d = render_decoded(m, 2, view);
+  const at::Tensor expected = cosine_maps(d.features, provider->text_features({"wall"}))[0];
+  const NpyArray a = read_npy(out / "maps" / "wall" / "0002_cosine.npy");
+  const at::Tensor got = torch::tensor(a.to_float()).reshape({a.shape[0], a.shape[1]});
+  EXPECT_LT((got - expected).abs().max().item<float>(), 1e-5);
+  EXPECT_FALSE(fs::exists(out / "maps" / "wall" / "a_0001_cosine.npy"));  // only the named view
+  EXPECT_EQ(json::parse(read_text_file(out / "query.json"))["queries"][0]["level"], 2);
+}
+
+TEST(QueryCli, ThresholdSelectsScoresAtOrAbove) {
+  Fixture& f = fixture();
+  const fs::path out = f.root / "out_threshold";
+  const auto r = test::run_cli("-q query " + q(f.model_dir) + " wall --level 3 --threshold 0.3 --no-maps --out " + q(out));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const LanguageModel m = load_language_model(f.model_dir.string());
+  const std::vector<double> s = independent_scores(m, "wall", 3);
+  const int64_t expected = std::count_if(s.begin(), s.end(), [](double v) { return v >= 0.3; });
+  ASSERT_GT(expected, 0);
+  ASSERT_LT(expected, kN);
+  EXPECT_EQ(read_gaussians_ply((out / "selection_wall.ply").string()).size(), expected);
+  EXPECT_FALSE(fs::exists(out / "maps"));
+}
+
+TEST(QueryCli, Errors) {
+  Fixture& f = fixture();
+  const std::string model = q(f.model_dir);
+  auto run = [&](const std::string& args) { return test::run_cli("query " + args + " --out " + q(f.root / "out_err")); };
+  auto r = run(model + " ''");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("empty"), std::string::npos) << r.err;
+  r = run(model + " wall --views 0002,nope");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("'nope'"), std::string::npos) << r.err;
+  r = run(model + " wall --level 4");
+  EXPECT_EQ(r.status, 2);
+  r = run(model + " wall --top-k 3 --threshold 0.2");
+  EXPECT_EQ(r.status, 2);
+  r = run(q(f.root / "no_such_model") + " wall");
+  EXPECT_EQ(r.status, 1);
+
+  // A model directory missing a part names the file.
+  const fs::path broken = f.root / "broken";
+  fs::create_directories(broken);
+  for (const char* file : {"model.json", "point_cloud.ply", "autoencoder.safetensors"})
+    fs::copy_file(f.model_dir / file, broken / file, fs::copy_options::overwrite_existing);
+  r = run(q(broken) + " wall");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("latents.safetensors"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace cls

@@ -1,0 +1,147 @@
+// Query scores and relevance maps against hand-computed values and a double-precision per-pixel reference.
+#include <gtest/gtest.h>
+#include <torch/torch.h>
+
+#include <cmath>
+
+#include "core/error.h"
+#include "query/relevance.h"
+#include "splat/reference_render.h"
+#include "latent_scene.h"
+#include "splat/splat_scene.h"
+
+namespace cls {
+namespace {
+
+at::Tensor rows(std::vector<std::vector<float>> v) {
+  std::vector<at::Tensor> r;
+  for (auto& x : v) r.push_back(torch::tensor(x));
+  return torch::stack(r);
+}
+
+TEST(GaussianScores, HandValues) {
+  const at::Tensor latents = rows({{1, 0}, {0, 2}, {1, 1}, {0, 0}, {-3, 0}});
+  const at::Tensor s = gaussian_scores(latents, torch::tensor({2.0f, 0.0f}));
+  ASSERT_EQ(s.sizes(), at::IntArrayRef({5}));
+  EXPECT_EQ(s.scalar_type(), torch::kFloat32);
+  const float expected[] = {1.0f, 0.0f, float(1 / std::sqrt(2.0)), 0.0f, -1.0f};
+  for (int i = 0; i < 5; ++i) EXPECT_NEAR(s[i].item<float>(), expected[i], 1e-6) << i;
+  // A zero query scores 0 everywhere (no NaN).
+  const at::Tensor z = gaussian_scores(latents, torch::zeros({2}));
+  EXPECT_EQ(z.abs().sum().item<float>(), 0.0f);
+}
+
+TEST(GaussianScores, ShapeMismatchIsAnError) {
+  EXPECT_THROW(gaussian_scores(torch::zeros({3, 4}), torch::zeros({3})), Error);
+  EXPECT_THROW(gaussian_scores(torch::zeros({3}), torch::zeros({3})), Error);
+}
+
+TEST(CosineMaps, HandValuesIncludingZeroVectors) {
+  // One row of three pixels: (3, 4), (0, 0), (-1, 0); prototypes (1, 0) and (0, 5).
+  const at::Tensor f = rows({{3, 4}, {0, 0}, {-1, 0}}).reshape({1, 3, 2});
+  const at::Tensor c = cosine_maps(f, rows({{1, 0}, {0, 5}}));
+  ASSERT_EQ(c.sizes(), at::IntArrayRef({2, 1, 3}));
+  const float expected[2][3] = {{0.6f, 0.0f, -1.0f}, {0.8f, 0.0f, 0.0f}};
+  for (int k = 0; k < 2; ++k)
+    for (int x = 0; x < 3; ++x) EXPECT_NEAR(c[k][0][x].item<float>(), expected[k][x], 1e-6) << k << "," << x;
+  // A zero prototype gives 0 too.
+  EXPECT_EQ(cosine_maps(f, torch::zeros({1, 2})).abs().sum().item<float>(), 0.0f);
+  EXPECT_THROW(cosine_maps(f, torch::zeros({1, 3})), Error);
+  EXPECT_THROW(cosine_maps(torch::zeros({3, 2}), torch::zeros({1, 2})), Error);
+}
+
+TEST(LangsplatRelevancy, OnePixelTwoCanonicalPhrases) {
+  // f = (2, 0, 0) (length does not matter), q = (0.6, 0.8, 0): cos 0.6.
+  // c1 = (0, 1, 0): cos 0    -> softmax(10 * [0.6, 0.0])[0] = 1 / (1 + e^-6) = 0.997527
+  // c2 = (0.8, 0, 0.6): 0.8  -> softmax(10 * [0.6, 0.8])[0] = 1 / (1 + e^2)  = 0.119203
+  // min over the phrases = 0.119203.
+  const at::Tensor f = torch::tensor({2.0f, 0.0f, 0.0f}).reshape({1, 1, 3});
+  const at::Tensor q = torch::tensor({0.6f, 0.8f, 0.0f});
+  const at::Tensor canonical = rows({{0, 1, 0}, {0.8f, 0, 0.6f}});
+  const at::Tensor r = langsplat_relevancy(f, q, canonical);
+  ASSERT_EQ(r.sizes(), at::IntArrayRef({1, 1}));
+  EXPECT_NEAR(r[0][0].item<float>(), 0.1192029, 1e-6);
+  // The phrase order does not matter; with only the weak phrase, the strong value remains.
+  EXPECT_NEAR(langsplat_relevancy(f, q, canonical.flip(0))[0][0].item<float>(), 0.1192029, 1e-6);
+  EXPECT_NEAR(langsplat_relevancy(f, q, canonical.slice(0, 0, 1))[0][0].item<float>(), 0.9975274, 1e-6);
+  // A zero feature has cosine 0 with everything: 0.5.
+  EXPECT_NEAR(langsplat_relevancy(torch::zeros({1, 1, 3}), q, canonical)[0][0].item<float>(), 0.5, 1e-6);
+}
+
+TEST(LangsplatRelevancy, EqualsClosedFormOnRandomCosines) {
+  // softmax(10 [a, b])[0] = sigmoid(10 (a - b)), so the min over phrases is sigmoid(10 (a - max_c b_c)).
+  torch::manual_seed(3);
+  const at::Tensor a = torch::rand({50}, torch::kFloat64) * 2 - 1;
+  const at::Tensor b = torch::rand({50, 4}, torch::kFloat64) * 2 - 1;
+  const at::Tensor expected = torch::sigmoid(10 * (a - std::get<0>(b.max(1))));
+  EXPECT_LT((relevancy_from_cosines(a, b) - expected).abs().max().item<double>(), 1e-12);
+  EXPECT_THROW(relevancy_from_cosines(a, torch::zeros({50, 0}, torch::kFloat64)), Error);
+  EXPECT_THROW(relevancy_from_cosines(a, torch::zeros({49, 4}, torch::kFloat64)), Error);
+}
+
+TEST(CanonicalPhrases, AreLangSplats) {
+  EXPECT_EQ(canonical_phrases(), (std::vector<std::string>{"object", "things", "stuff", "texture"}));
+}
+
+TEST(RenderDecoded, MatchesPerPixelReference) {
+  const int W = 37, H = 29, L = 8, D = 12;
+  test::LatentScene t = test::latent_scene(80, W, H, L, 7);
+  // The decoder: a fixed affine map followed by tanh (stands in for the autoencoder's MLP).
+  torch::manual_seed(5);
+  const at::Tensor A = torch::randn({L, D}, torch::kFloat64), bias = torch::randn({D}, torch::kFloat64);
+  int calls = 0;
+  const LatentDecoder decode = [&](const at::Tensor& z) {
+    ++calls;
+    return torch::tanh(z.to(torch::kFloat64).matmul(A) + bias).to(torch::kFloat32);
+  };
+  const DecodedView v = render_decoded(t.g, t.latents, decode, t.camera, t.pose, /*chunk_pixels=*/100);
+  ASSERT_EQ(v.features.sizes(), at::IntArrayRef({H, W, D}));
+  ASSERT_EQ(v.alpha.sizes(), at::IntArrayRef({H, W}));
+  EXPECT_EQ(calls, (W * H + 99) / 100);  // chunked, last chunk partial
+
+  // Reference: double-precision renderer for the latents (zero background), then the decoder per pixel.
+  const auto ad = test::scene_arrays<double>(t.s);
+  const ReferenceImage ref = reference_render(t.s.cam, ad.inputs(t.s, /*with_background=*/false));
+  double max_diff = 0, max_alpha_diff = 0, covered = 0;
+  auto Aa = A.accessor<double, 2>();
+  auto ba = bias.accessor<double, 1>();
+  auto fa = v.features.accessor<float, 3>();
+  auto aa = v.alpha.accessor<float, 2>();
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const size_t p = size_t(y) * W + x;
+      for (int d = 0; d < D; ++d) {
+        double acc = ba[d];
+        for (int l = 0; l < L; ++l) acc += ref.image[p * L + l] * Aa[l][d];
+        max_diff = std::max(max_diff, std::abs(std::tanh(acc) - fa[y][x][d]));
+      }
+      max_alpha_diff = std::max(max_alpha_diff, std::abs(ref.alpha[p] - aa[y][x]));
+      covered += ref.alpha[p] > 0.05;
+    }
+  EXPECT_LT(max_diff, 1e-4);
+  EXPECT_LT(max_alpha_diff, 1e-5);
+  EXPECT_GT(covered / (W * H), 0.5);  // the scene is not empty
+}
+
+TEST(RelevanceMaps, EqualMapsOfTheWholeDecodedField) {
+  const int W = 31, H = 23, L = 6, D = 10;
+  test::LatentScene t = test::latent_scene(60, W, H, L, 11);
+  torch::manual_seed(9);
+  const at::Tensor A = torch::randn({L, D});
+  const LatentDecoder decode = [&](const at::Tensor& z) { return z.matmul(A); };
+  const at::Tensor queries = torch::randn({3, D}), canonical = torch::randn({4, D});
+  const RelevanceMaps m = relevance_maps(t.g, t.latents, decode, t.camera, t.pose, queries, canonical, 77);
+  const DecodedView v = render_decoded(t.g, t.latents, decode, t.camera, t.pose);
+  ASSERT_EQ(m.cosine.sizes(), at::IntArrayRef({3, H, W}));
+  ASSERT_EQ(m.relevancy.sizes(), at::IntArrayRef({3, H, W}));
+  EXPECT_LT((m.cosine - cosine_maps(v.features, queries)).abs().max().item<float>(), 1e-5);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_LT((m.relevancy[k] - langsplat_relevancy(v.features, queries[k], canonical)).abs().max().item<float>(), 1e-5);
+  EXPECT_TRUE(torch::equal(m.alpha, v.alpha));
+  EXPECT_THROW(relevance_maps(t.g, t.latents, decode, t.camera, t.pose, queries, torch::zeros({0, D})), Error);
+  EXPECT_THROW(relevance_maps(t.g, t.latents, decode, t.camera, t.pose, torch::zeros({1, D + 1}), canonical), Error);
+  EXPECT_THROW(render_latents(t.g, t.latents.slice(0, 1), t.camera, t.pose), Error);
+}
+
+}  // namespace
+}  // namespace cls
