@@ -85,7 +85,7 @@ namespace {
 using torch::autograd::AutogradContext;
 using torch::autograd::variable_list;
 
-float sign_of(float d) { return d > 0 ? 1.f : (d < 0 ? -1.f : 0.f); }  // torch's abs backward: sgn(0) = 0
+inline float sign_of(float d) { return float(d > 0) - float(d < 0); }  // torch's abs backward: sgn(0) = 0
 
 void check_seg_target(const SegMapTarget& t, int64_t channels, const char* name) {
   if (!t.ids) return;
@@ -130,22 +130,31 @@ class SegLossFunction : public torch::autograd::Function<SegLossFunction> {
       // Per-pixel weights of sign(Z^ - Z_SAM) and sign(Z^ - Z_GML).
       const float ws = s < 0 ? 0.f : float((weights.baseline ? 1.0 : (1 - mv) + weights.lambda_sam * mv) * inv);
       const float wg = g < 0 ? 0.f : float(weights.lambda_citygml * mv * inv);
-      double abs_s = 0, abs_g = 0;
+      float abs_s = 0, abs_g = 0;
       const float* ts = s >= 0 ? sp + int64_t(s) * l : nullptr;
       const float* tg = g >= 0 ? gtp + int64_t(g) * l : nullptr;
-      for (int64_t c = 0; c < l; ++c) {
-        float gc = 0;
-        if (ts) {
-          const float d = zv[c] - ts[c];
-          abs_s += std::fabs(d);
-          gc += ws * sign_of(d);
+      // Branch-free inner loops per case, so that they vectorise.
+      if (ts && tg) {
+#pragma omp simd reduction(+ : abs_s, abs_g)
+        for (int64_t c = 0; c < l; ++c) {
+          const float ds = zv[c] - ts[c], dg = zv[c] - tg[c];
+          abs_s += std::fabs(ds);
+          abs_g += std::fabs(dg);
+          gv[c] = ws * sign_of(ds) + wg * sign_of(dg);
         }
-        if (tg) {
-          const float d = zv[c] - tg[c];
-          abs_g += std::fabs(d);
-          gc += wg * sign_of(d);
+      } else if (ts || tg) {
+        const float* t = ts ? ts : tg;
+        const float wt = ts ? ws : wg;
+        float a = 0;
+#pragma omp simd reduction(+ : a)
+        for (int64_t c = 0; c < l; ++c) {
+          const float d = zv[c] - t[c];
+          a += std::fabs(d);
+          gv[c] = wt * sign_of(d);
         }
-        gv[c] = gc;
+        (ts ? abs_s : abs_g) = a;
+      } else {
+        for (int64_t c = 0; c < l; ++c) gv[c] = 0.f;
       }
       sum_out += (1 - mv) * abs_s;
       sum_in += mv * abs_s;
@@ -162,7 +171,9 @@ class SegLossFunction : public torch::autograd::Function<SegLossFunction> {
 
   static variable_list backward(AutogradContext* ctx, variable_list grad_output) {
     const at::Tensor grad = ctx->get_saved_variables()[0];
-    return {grad * grad_output[0], at::Tensor(), at::Tensor(), at::Tensor(), at::Tensor(), at::Tensor()};
+    // The loss is the graph's root almost always: skip the 88 MB multiply by 1.
+    const at::Tensor g = grad_output[0].numel() == 1 && grad_output[0].item<double>() == 1.0 ? grad : grad * grad_output[0];
+    return {g, at::Tensor(), at::Tensor(), at::Tensor(), at::Tensor(), at::Tensor()};
   }
 };
 
