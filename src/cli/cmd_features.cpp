@@ -61,6 +61,7 @@ int cmd_features(int argc, char** argv) {
       .option("sam", "", "SAM weight file (default: found in the model directories)")
       .option("clip-model", "openclip-vit-b-16-laion2b", "which known CLIP model (see `models list`)")
       .option("sam-model", "sam-vit-h", "which known SAM model (see `models list`)")
+      .option("device", "auto", "clip / clip-tiny: auto (CUDA where available), cpu or cuda")
       .option("models-dir", "", "directory searched first for weights (then $CITYLANGSPLAT_MODELS, the XDG cache)")
       .flag("overwrite", "recompute every view, cached or not");
   if (!args.parse(argc, argv)) return 0;
@@ -85,8 +86,10 @@ int cmd_features(int argc, char** argv) {
   const std::string provider_name = args.get("provider");
   nlohmann::json spec = {{"provider", provider_name}};
   if (provider_name == "synthetic" || provider_name == "clip-tiny") {
-    spec["seed"] = static_cast<uint64_t>(std::stoull(args.get("seed")));
+    spec["seed"] = static_cast<uint64_t>(args.get_int("seed"));
+    if (provider_name == "clip-tiny") spec["device"] = args.get("device");
   } else if (provider_name == "clip") {
+    spec["device"] = args.get("device");
     if (args.has("clip")) spec["clip"] = args.get("clip");
     if (args.has("sam")) spec["sam"] = args.get("sam");
     spec["clip_model"] = args.get("clip-model");

@@ -96,12 +96,24 @@ class ClipFeatureProvider : public FeatureProvider {
   clip::Tokenizer tokenizer_;
 };
 
+// "cpu", "cuda" or "auto" (CUDA when this LibTorch build and the machine have it).
+c10::Device parse_device(const nlohmann::json& spec, std::string* name) {
+  *name = spec.value("device", std::string("auto"));
+  if (*name == "auto") *name = torch::cuda::is_available() ? "cuda" : "cpu";
+  if (*name == "cpu") return c10::Device(c10::kCPU);
+  if (*name == "cuda") {
+    if (!torch::cuda::is_available()) throw Error("clip provider: device cuda requested but CUDA is not available");
+    return c10::Device(c10::kCUDA);
+  }
+  throw Error("clip provider spec: device must be auto, cpu or cuda, not '" + *name + "'");
+}
+
 // ---- clip-tiny: random models built in code -------------------------------------------------
 
 ClipArch tiny_clip_arch() {
   ClipArch a;
   a.name = "custom";
-  a.embed_dim = 32;
+  a.embed_dim = 512;  // the real models' feature size, so later stages see the usual shapes
   a.image_resolution = 32;
   a.vision_layers = 1;
   a.vision_width = 64;
@@ -132,9 +144,11 @@ sam::SamConfig tiny_sam_config() {
 std::unique_ptr<FeatureProvider> make_tiny(const nlohmann::json& spec) {
   for (const auto& [k, v] : spec.items()) {
     (void)v;
-    if (k != "provider" && k != "seed" && k != "note") throw Error("clip-tiny provider spec: unknown key '" + k + "'");
+    if (k != "provider" && k != "seed" && k != "note" && k != "device") throw Error("clip-tiny provider spec: unknown key '" + k + "'");
   }
   const uint64_t seed = spec.value("seed", uint64_t(1));
+  std::string device_name;
+  const c10::Device device = parse_device(spec, &device_name);
   torch::manual_seed(seed);
   // CLIP: every tensor of the architecture drawn at random; LayerNorm scales near 1.
   const clip::ClipConfig config = clip::clip_config(tiny_clip_arch(), clip::Activation::Gelu);
@@ -146,10 +160,13 @@ std::unique_ptr<FeatureProvider> make_tiny(const nlohmann::json& spec) {
     if (t.name == "logit_scale") v = torch::full(t.shape, std::log(1 / 0.07));
     state[t.name] = v;
   }
-  clip::ClipModel clip(config, state, {}, "clip-tiny random weights");
-  // SAM: LibTorch's default initialisation under the seed.
+  clip::ClipOptions clip_options;
+  clip_options.device = device;
+  clip::ClipModel clip(config, state, clip_options, "clip-tiny random weights");
+  // SAM: LibTorch's default initialisation under the seed (drawn on the CPU, then moved).
   sam::Sam sam(tiny_sam_config());
   sam->eval();
+  sam->to(device);
 
   ClipProviderSetup setup;
   setup.name = "clip-tiny";
@@ -163,6 +180,7 @@ std::unique_ptr<FeatureProvider> make_tiny(const nlohmann::json& spec) {
   setup.nms.score_thr = 0.0;
   setup.spec = {{"provider", "clip-tiny"},
                 {"seed", seed},
+                {"device", device_name},
                 {"note", "tiny random models: results meaningless (a smoke test of the CLIP/SAM code path)"}};
   return std::make_unique<ClipFeatureProvider>(std::move(setup), std::move(clip), std::move(sam));
 }
@@ -193,7 +211,7 @@ std::string find_weights(const nlohmann::json& spec, const char* path_key, const
 std::unique_ptr<FeatureProvider> make_real(const nlohmann::json& spec) {
   static const std::set<std::string> known_keys = {"provider",  "clip",       "sam",    "clip_model",
                                                    "sam_model", "clip_activation", "models_dir", "points_per_side",
-                                                   "batch_size", "note"};
+                                                   "batch_size", "device", "note"};
   for (const auto& [k, v] : spec.items()) {
     (void)v;
     if (!known_keys.count(k)) throw Error("clip provider spec: unknown key '" + k + "'");
@@ -222,6 +240,8 @@ std::unique_ptr<FeatureProvider> make_real(const nlohmann::json& spec) {
       spec.value("clip_activation", clip_known->name.rfind("openai", 0) == 0 ? std::string("quick_gelu") : "gelu");
   const clip::Activation act = clip::parse_activation(act_name);
 
+  std::string device_name;
+  const c10::Device device = parse_device(spec, &device_name);
   ClipProviderSetup setup;
   setup.name = "clip";
   setup.amg.points_per_side = spec.value("points_per_side", setup.amg.points_per_side);
@@ -233,10 +253,15 @@ std::unique_ptr<FeatureProvider> make_real(const nlohmann::json& spec) {
                 {"sam", fs::absolute(sam_path).string()},
                 {"sam_model", sam_known->name},
                 {"points_per_side", setup.amg.points_per_side},
-                {"batch_size", setup.batch_size}};
+                {"batch_size", setup.batch_size},
+                {"device", device_name}};
   log_info("features: loading CLIP " + clip_path + " and SAM " + sam_path);
-  clip::ClipModel clip = clip::load_clip_model(clip_path, act, clip::clip_config(clip_arch(clip_known->arch), act));
+  clip::ClipOptions clip_options;
+  clip_options.device = device;
+  clip::ClipModel clip =
+      clip::load_clip_model(clip_path, act, clip::clip_config(clip_arch(clip_known->arch), act), clip_options);
   sam::Sam sam = sam::load_sam(sam_path, sam::sam_config_by_name(sam_known->arch));
+  sam->to(device);
   return std::make_unique<ClipFeatureProvider>(std::move(setup), std::move(clip), std::move(sam));
 }
 

@@ -9,7 +9,7 @@
 // Two flavours:
 //   "clip": real weights (LangSplat: OpenCLIP ViT-B-16 laion2b_s34b_b88k, SAM ViT-H), given as
 //     paths in the spec or found through the model registry (models/model_registry.h);
-//   "clip-tiny": tiny random CLIP and SAM built in code from a seed, with AMG thresholds relaxed
+//   "clip-tiny": tiny random CLIP (512-d output, like ViT-B) and SAM built in code from a seed, with AMG thresholds relaxed
 //     and a 4 x 4 point grid, so that the real code path runs in seconds on a CPU. A smoke test:
 //     its features are meaningless.
 #include <memory>
@@ -22,8 +22,11 @@ namespace cls {
 //   clip: {"provider": "clip", "clip": PATH?, "sam": PATH?, "clip_model": known name
 //          (default "openclip-vit-b-16-laion2b"), "sam_model": known name (default "sam-vit-h"),
 //          "clip_activation": "gelu" | "quick_gelu" (default from the model: OpenAI's QuickGELU,
-//          OpenCLIP's GELU), "models_dir": DIR?, "points_per_side": 32, "batch_size": 32}
-//   clip-tiny: {"provider": "clip-tiny", "seed": 1}
+//          OpenCLIP's GELU), "models_dir": DIR?, "points_per_side": 32, "batch_size": 32,
+//          "device": "auto" | "cpu" | "cuda"}
+//   clip-tiny: {"provider": "clip-tiny", "seed": 1, "device": ...}
+// "auto" picks CUDA where LibTorch has it. The CUDA path (fp32) has not run yet: no GPU was
+// available when this was written.
 std::unique_ptr<FeatureProvider> make_clip_provider(const nlohmann::json& spec, const Taxonomy& taxonomy);
 
 }  // namespace cls
