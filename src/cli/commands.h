@@ -8,4 +8,5 @@ int cmd_synth(int argc, char** argv);       // synthetic scenes
 int cmd_scene(int argc, char** argv);       // scene info | convert
 int cmd_run(int argc, char** argv);         // the whole pipeline
 int cmd_models(int argc, char** argv);      // models list | download | check
+int cmd_train_rgb(int argc, char** argv);   // photometric 3DGS training
 }  // namespace cls

@@ -25,6 +25,7 @@ const Command kCommands[] = {
     {"synth", cls::cmd_synth, "render a synthetic scene (images, COLMAP model, ground truth) of a city model"},
     {"scene", cls::cmd_scene, "inspect or convert a scene (COLMAP / Pix4D)"},
     {"models", cls::cmd_models, "list, download and check CLIP/SAM weight files"},
+    {"train-rgb", cls::cmd_train_rgb, "train 3D Gaussians photometrically (3DGS) on a scene"},
 };
 
 void usage(FILE* out) {
