@@ -296,6 +296,11 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
   }
 
   RgbTrainReport report;
+  struct {
+    double render = 0, loss = 0, backward = 0;
+    int iterations = 0;
+  } timing;
+  const auto loop_start = std::chrono::steady_clock::now();
   install_interrupt_handlers();
   const at::Tensor fixed_background = background_for(options);
   const int start_iteration = state.iteration;
@@ -341,11 +346,18 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
       at::Tensor loss_value, image;
       {
         torch::AutoGradMode grad_mode(true);
+        const auto t0 = std::chrono::steady_clock::now();
         image = render(g, state.active_sh_degree, *view.view, background, means2d, &radii);
+        const auto t1 = std::chrono::steady_clock::now();
         const at::Tensor l1 = (image - view.image).abs().mean();
         const at::Tensor loss = (1.0 - options.lambda_dssim) * l1 + options.lambda_dssim * dssim_loss(image, view.image);
+        const auto t2 = std::chrono::steady_clock::now();
         loss.backward();
+        const auto t3 = std::chrono::steady_clock::now();
         loss_value = loss.detach();
+        timing.render += std::chrono::duration<double>(t1 - t0).count();
+        timing.loss += std::chrono::duration<double>(t2 - t1).count();
+        timing.backward += std::chrono::duration<double>(t3 - t2).count();
       }
       const double loss_d = loss_value.item<double>();
       state.ema_loss = it == 1 ? loss_d : 0.4 * loss_d + 0.6 * state.ema_loss;
@@ -372,6 +384,7 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
       }
       if (it < options.iterations) adam.step();  // densified groups have no gradient: skipped
       adam.zero_grad();
+      timing.iterations += 1;
 
       char detail[160];
       std::snprintf(detail, sizeof detail, "it %d loss %.4f PSNR %.2f dB %lld Gaussians", it, state.ema_loss,
@@ -384,6 +397,17 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
         checkpoint_now(it);
     }
     if (options.iterations <= start_iteration) report.iterations = start_iteration;
+  }
+  const double loop_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_start).count();
+  const double ms_per_iteration = timing.iterations > 0 ? 1000.0 * loop_seconds / timing.iterations : 0.0;
+  if (timing.iterations > 0) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "train-rgb: %.1f ms/iteration (render %.1f, loss %.1f, backward %.1f, rest %.1f)",
+                  ms_per_iteration, 1000 * timing.render / timing.iterations, 1000 * timing.loss / timing.iterations,
+                  1000 * timing.backward / timing.iterations,
+                  ms_per_iteration - 1000 * (timing.render + timing.loss + timing.backward) / timing.iterations);
+    log_info(buf);
   }
   const double seconds = state.seconds + session_seconds();
   report.seconds = seconds;
@@ -421,6 +445,7 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
                                   {"test_views", report.test_views},
                                   {"evaluated_on", test.empty() ? "train" : "test"},
                                   {"seconds", report.seconds},
+                                  {"ms_per_iteration", ms_per_iteration},
                                   {"scene", scene.root},
                                   {"extent", extent},
                                   {"options", options_json(options)}};
