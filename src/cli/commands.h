@@ -11,4 +11,5 @@ int cmd_models(int argc, char** argv);      // models list | download | check
 int cmd_features(int argc, char** argv);    // per-view SAM and CityGML features
 int cmd_train_language(int argc, char** argv);  // language field training (paper 3.3)
 int cmd_autoencoder(int argc, char** argv); // train the shared autoencoder on SAM features
+int cmd_train_rgb(int argc, char** argv);   // photometric 3DGS training
 }  // namespace cls

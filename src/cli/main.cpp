@@ -28,6 +28,7 @@ const Command kCommands[] = {
     {"features", cls::cmd_features, "per-view SAM and CityGML language features (LangSplat's layout)"},
     {"train-language", cls::cmd_train_language, "train the language field on a frozen photometric model (paper 3.3)"},
     {"autoencoder", cls::cmd_autoencoder, "train the shared autoencoder (512 -> 128) on SAM features"},
+    {"train-rgb", cls::cmd_train_rgb, "train 3D Gaussians photometrically (3DGS) on a scene"},
 };
 
 void usage(FILE* out) {
