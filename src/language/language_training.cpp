@@ -20,6 +20,7 @@
 
 #include <array>
 #include <chrono>
+#include <cstdio>
 #include <map>
 #include <filesystem>
 #include <random>
@@ -299,6 +300,11 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
       ++s.iteration;
       ++s.total;
       ++report.iterations;
+      if (s.iteration % 10 == 0 || s.iteration == o.iterations) {
+        char detail[64];
+        std::snprintf(detail, sizeof detail, "loss %.4g", s.ema_loss);
+        progress.set_detail(detail);
+      }
       progress.advance();
       if (s.iteration % log_every == 0 || s.iteration == o.iterations)
         log_verbose(cat("language level ", level, " iteration ", s.iteration, "/", o.iterations, " loss ", s.ema_loss,
