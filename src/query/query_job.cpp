@@ -80,6 +80,22 @@ Taxonomy taxonomy_for(const QueryOptions& o, const json& info, const std::string
   return Taxonomy::builtin();
 }
 
+// The scene directory recorded with the model: model.json "scene", else the features stage's
+// features.json "scene" (model.json "features" names that directory); "" if neither.
+std::string recorded_scene(const json& info) {
+  if (info.contains("scene") && info["scene"].is_string()) return info["scene"].get<std::string>();
+  if (!info.contains("features") || !info["features"].is_string()) return "";
+  const fs::path features_json = fs::path(info["features"].get<std::string>()) / "features.json";
+  if (!fs::exists(features_json)) return "";
+  try {
+    const json fj = json::parse(read_text_file(features_json));
+    if (fj.contains("scene") && fj["scene"].is_string()) return fj["scene"].get<std::string>();
+  } catch (const json::exception& e) {
+    fail(features_json.string(), std::string("not valid JSON: ") + e.what());
+  }
+  return "";
+}
+
 json stats_of(const at::Tensor& s) {
   const at::Tensor d = s.to(torch::kFloat64);
   if (d.numel() == 0) return json{{"count", 0}};
@@ -183,9 +199,7 @@ json run_query(const QueryOptions& o) {
   // Relevance maps per view: one render + decode per (view, level) for all texts of that level.
   json views_done = json::array();
   if (o.maps) {
-    std::string scene_dir = o.scene_dir;
-    if (scene_dir.empty() && model.info.contains("scene") && model.info["scene"].is_string())
-      scene_dir = model.info["scene"].get<std::string>();
+    const std::string scene_dir = o.scene_dir.empty() ? recorded_scene(model.info) : o.scene_dir;
     if (scene_dir.empty())
       throw UsageError("query: relevance maps need the scene: pass --scene DIR (or --no-maps)");
     SceneOptions scene_options;

@@ -225,6 +225,19 @@ TEST(QueryCli, Errors) {
   r = run(q(broken) + " wall");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("latents.safetensors"), std::string::npos) << r.err;
+
+  // A model that records no scene: the maps need --scene.
+  const fs::path noscene = f.root / "noscene";
+  fs::create_directories(noscene);
+  for (const char* file : {"point_cloud.ply", "latents.safetensors", "autoencoder.safetensors"})
+    fs::copy_file(f.model_dir / file, noscene / file, fs::copy_options::overwrite_existing);
+  json info = json::parse(read_text_file(f.model_dir / "model.json"));
+  info.erase("scene");
+  write_text_atomic(noscene / "model.json", info.dump());
+  r = run(q(noscene) + " wall");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--scene"), std::string::npos) << r.err;
+  EXPECT_EQ(run(q(noscene) + " wall --views 0002 --scene " + q(f.scene_dir)).status, 0);
 }
 
 }  // namespace
