@@ -198,6 +198,12 @@ TEST(QueryCli, ThresholdSelectsScoresAtOrAbove) {
   ASSERT_LT(expected, kN);
   EXPECT_EQ(read_gaussians_ply((out / "selection_wall.ply").string()).size(), expected);
   EXPECT_FALSE(fs::exists(out / "maps"));
+
+  // Nothing reaches a threshold above 1: an empty selection is still a valid PLY.
+  const fs::path none = f.root / "out_none";
+  ASSERT_EQ(test::run_cli("-q query " + q(f.model_dir) + " wall --threshold 1.5 --no-maps --out " + q(none)).status, 0);
+  EXPECT_EQ(read_gaussians_ply((none / "selection_wall.ply").string()).size(), 0);
+  EXPECT_EQ(json::parse(read_text_file(none / "query.json"))["queries"][0]["selection"]["count"], 0);
 }
 
 TEST(QueryCli, Errors) {
