@@ -220,6 +220,13 @@ TEST(QueryCli, Errors) {
   EXPECT_EQ(r.status, 2);
   r = run(model + " wall --top-k 3 --threshold 0.2");
   EXPECT_EQ(r.status, 2);
+  r = run(model + " wall --device tpu");
+  EXPECT_EQ(r.status, 2) << r.err;
+  if (!at::hasCUDA()) {
+    r = run(model + " wall --device cuda");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("no CUDA"), std::string::npos) << r.err;
+  }
   r = run(q(f.root / "no_such_model") + " wall");
   EXPECT_EQ(r.status, 1);
 
