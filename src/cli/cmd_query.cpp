@@ -35,6 +35,7 @@ int cmd_query(int argc, char** argv) {
       .option("views", "all", "views for the relevance maps: all, or comma-separated image names")
       .option("scene", "", "scene directory for the maps (empty: the one recorded in model.json)")
       .option("taxonomy", "", "taxonomy JSON for the feature provider (empty: model.json's, else the built-in one)")
+      .option("device", "cpu", "where rendering, decoding and scoring run: cpu or cuda[:N] (needs a CUDA build)")
       .flag("no-maps", "skip the relevance maps (scores and selections only)");
   if (!args.parse(argc, argv)) return 0;
 
@@ -57,6 +58,7 @@ int cmd_query(int argc, char** argv) {
   o.scene_dir = args.get("scene");
   o.taxonomy_path = args.get("taxonomy");
   o.maps = !args.flag_set("no-maps");
+  o.device = args.get("device");
   run_query(o);
   return 0;
 }

@@ -1,10 +1,12 @@
 #include "query/query_job.h"
 
+#include <ATen/Context.h>
 #include <ATen/core/grad_mode.h>
 #include <opencv2/imgcodecs.hpp>
 #include <torch/types.h>
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <map>
 
@@ -80,6 +82,34 @@ Taxonomy taxonomy_for(const QueryOptions& o, const json& info, const std::string
   return Taxonomy::builtin();
 }
 
+// The scene directory recorded with the model: model.json "scene", else the features stage's
+// features.json "scene" (model.json "features" names that directory); "" if neither.
+std::string recorded_scene(const json& info) {
+  if (info.contains("scene") && info["scene"].is_string()) return info["scene"].get<std::string>();
+  if (!info.contains("features") || !info["features"].is_string()) return "";
+  const fs::path features_json = fs::path(info["features"].get<std::string>()) / "features.json";
+  if (!fs::exists(features_json)) return "";
+  try {
+    const json fj = json::parse(read_text_file(features_json));
+    if (fj.contains("scene") && fj["scene"].is_string()) return fj["scene"].get<std::string>();
+  } catch (const json::exception& e) {
+    fail(features_json.string(), std::string("not valid JSON: ") + e.what());
+  }
+  return "";
+}
+
+c10::Device parse_device(const std::string& name) {
+  try {
+    const c10::Device d(name);
+    if (d.is_cuda() && !at::hasCUDA())
+      throw UsageError("query: --device " + name + ": this build's LibTorch has no CUDA (use cpu)");
+    if (!d.is_cpu() && !d.is_cuda()) throw UsageError("query: --device must be cpu or cuda[:N], got '" + name + "'");
+    return d;
+  } catch (const c10::Error&) {
+    throw UsageError("query: --device must be cpu or cuda[:N], got '" + name + "'");
+  }
+}
+
 json stats_of(const at::Tensor& s) {
   const at::Tensor d = s.to(torch::kFloat64);
   if (d.numel() == 0) return json{{"count", 0}};
@@ -118,7 +148,16 @@ json run_query(const QueryOptions& o) {
   if (!fs::is_directory(o.model_dir)) fail(o.model_dir, "not a directory (expected a language model: model.json, point_cloud.ply, latents.safetensors, autoencoder.safetensors)");
 
   at::NoGradGuard no_grad;
-  const LanguageModel model = load_language_model(o.model_dir);
+  LanguageModel model = load_language_model(o.model_dir);
+  // Rendering, decoding and scoring run on `device`; the model's CPU tensors stay for writing PLYs.
+  const c10::Device device = parse_device(o.device);
+  model.autoencoder.to(device);
+  GaussianModel geometry_on_device = model.gaussians;
+  for (at::Tensor* t : {&geometry_on_device.means, &geometry_on_device.log_scales, &geometry_on_device.quats,
+                        &geometry_on_device.opacity_logits})
+    *t = t->to(device);
+  std::array<at::Tensor, 3> latents_on_device;
+  for (int l = 0; l < 3; ++l) latents_on_device[l] = model.latents[l].to(device);
   const std::string model_json = (fs::path(o.model_dir) / "model.json").string();
   const fs::path out = o.out_dir.empty() ? fs::path(o.model_dir) / "query" : fs::path(o.out_dir);
   fs::create_directories(out);
@@ -132,7 +171,7 @@ json run_query(const QueryOptions& o) {
   if (provider->dim() != D)
     fail(model_json, "provider '" + provider->name() + "' gives " + std::to_string(provider->dim()) +
                          "-d features, the autoencoder expects " + std::to_string(D));
-  const at::Tensor text_features = provider->text_features(texts).to(torch::kFloat32);  // K x D
+  const at::Tensor text_features = provider->text_features(texts).to(device, torch::kFloat32);  // K x D
   const at::Tensor query_latents = model.autoencoder.encode(text_features);               // K x L
   const std::vector<std::string> slugs = unique_slugs(texts);
   const int64_t K = static_cast<int64_t>(texts.size());
@@ -148,7 +187,7 @@ json run_query(const QueryOptions& o) {
     int best = 1;
     double best_max = -2;
     for (int l = 1; l <= 3; ++l) {
-      per_level[l - 1] = gaussian_scores(model.latents[l - 1], query_latents[k]);
+      per_level[l - 1] = gaussian_scores(latents_on_device[l - 1], query_latents[k]).cpu();
       const double mx = per_level[l - 1].numel() ? per_level[l - 1].max().item<double>() : -1.0;
       level_max[std::to_string(l)] = mx;
       if (mx > best_max) best_max = mx, best = l;  // ties keep the lower level
@@ -183,16 +222,15 @@ json run_query(const QueryOptions& o) {
   // Relevance maps per view: one render + decode per (view, level) for all texts of that level.
   json views_done = json::array();
   if (o.maps) {
-    std::string scene_dir = o.scene_dir;
-    if (scene_dir.empty() && model.info.contains("scene") && model.info["scene"].is_string())
-      scene_dir = model.info["scene"].get<std::string>();
+    const std::string scene_dir = o.scene_dir.empty() ? recorded_scene(model.info) : o.scene_dir;
     if (scene_dir.empty())
       throw UsageError("query: relevance maps need the scene: pass --scene DIR (or --no-maps)");
     SceneOptions scene_options;
     scene_options.check_images = false;
     const Scene scene = load_scene(scene_dir, scene_options);
     const std::vector<const SceneView*> views = pick_views(scene, o.views);
-    const at::Tensor canonical = provider->text_features(canonical_phrases()).to(torch::kFloat32);
+    const at::Tensor canonical = provider->text_features(canonical_phrases()).to(device, torch::kFloat32);
+    const LatentDecoder decode = [&model](const at::Tensor& z) { return model.autoencoder.decode(z); };
     std::map<int, std::vector<int64_t>> texts_of_level;
     for (int64_t k = 0; k < K; ++k) texts_of_level[level_of[k]].push_back(k);
 
@@ -206,8 +244,9 @@ json run_query(const QueryOptions& o) {
     for (const SceneView* view : views) {
       const std::string stem = view_stem(view->name);
       for (const auto& [level, ks] : texts_of_level) {
-        const at::Tensor idx = torch::tensor(ks, torch::kInt64);
-        const RelevanceMaps m = relevance_maps(model, level, *view, text_features.index_select(0, idx), canonical);
+        const at::Tensor idx = torch::tensor(ks, torch::kInt64).to(device);
+        const RelevanceMaps m = relevance_maps(geometry_on_device, latents_on_device[level - 1], decode, view->camera,
+                                               view->pose, text_features.index_select(0, idx), canonical);
         for (size_t j = 0; j < ks.size(); ++j) {
           const int64_t k = ks[j];
           json& files = queries[k]["maps"];
@@ -225,6 +264,7 @@ json run_query(const QueryOptions& o) {
               {"method", model.info.value("method", "")},
               {"provider", provider->spec()},
               {"level_requested", o.level},
+              {"device", device.str()},
               {"gaussians", model.gaussians.size()},
               {"queries", queries},
               {"scores_file", "scores.ply"},

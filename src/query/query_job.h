@@ -25,6 +25,7 @@ struct QueryOptions {
   std::string scene_dir;        // empty: model.json "scene"
   std::string taxonomy_path;    // empty: model.json "taxonomy", else the built-in taxonomy
   bool maps = true;             // relevance maps (needs the scene)
+  std::string device = "cpu";   // where rendering, decoding and scoring run: cpu or cuda[:N]
 };
 
 // Fixed colour ranges of the PNG maps (raw values are in the .npy files).

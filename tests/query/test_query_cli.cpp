@@ -198,6 +198,12 @@ TEST(QueryCli, ThresholdSelectsScoresAtOrAbove) {
   ASSERT_LT(expected, kN);
   EXPECT_EQ(read_gaussians_ply((out / "selection_wall.ply").string()).size(), expected);
   EXPECT_FALSE(fs::exists(out / "maps"));
+
+  // Nothing reaches a threshold above 1: an empty selection is still a valid PLY.
+  const fs::path none = f.root / "out_none";
+  ASSERT_EQ(test::run_cli("-q query " + q(f.model_dir) + " wall --threshold 1.5 --no-maps --out " + q(none)).status, 0);
+  EXPECT_EQ(read_gaussians_ply((none / "selection_wall.ply").string()).size(), 0);
+  EXPECT_EQ(json::parse(read_text_file(none / "query.json"))["queries"][0]["selection"]["count"], 0);
 }
 
 TEST(QueryCli, Errors) {
@@ -214,6 +220,13 @@ TEST(QueryCli, Errors) {
   EXPECT_EQ(r.status, 2);
   r = run(model + " wall --top-k 3 --threshold 0.2");
   EXPECT_EQ(r.status, 2);
+  r = run(model + " wall --device tpu");
+  EXPECT_EQ(r.status, 2) << r.err;
+  if (!at::hasCUDA()) {
+    r = run(model + " wall --device cuda");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("no CUDA"), std::string::npos) << r.err;
+  }
   r = run(q(f.root / "no_such_model") + " wall");
   EXPECT_EQ(r.status, 1);
 
@@ -225,6 +238,19 @@ TEST(QueryCli, Errors) {
   r = run(q(broken) + " wall");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("latents.safetensors"), std::string::npos) << r.err;
+
+  // A model that records no scene: the maps need --scene.
+  const fs::path noscene = f.root / "noscene";
+  fs::create_directories(noscene);
+  for (const char* file : {"point_cloud.ply", "latents.safetensors", "autoencoder.safetensors"})
+    fs::copy_file(f.model_dir / file, noscene / file, fs::copy_options::overwrite_existing);
+  json info = json::parse(read_text_file(f.model_dir / "model.json"));
+  info.erase("scene");
+  write_text_atomic(noscene / "model.json", info.dump());
+  r = run(q(noscene) + " wall");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--scene"), std::string::npos) << r.err;
+  EXPECT_EQ(run(q(noscene) + " wall --views 0002 --scene " + q(f.scene_dir)).status, 0);
 }
 
 }  // namespace

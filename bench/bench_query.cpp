@@ -1,0 +1,118 @@
+// Query speed: relevance maps (cosine + LangSplat relevancy of one text) per second for one view,
+// at the bundled example's resolution (480x360) and at 1080p, on the CPU. A relevance map = splat
+// the 128-d latents (rasterize_features), decode every pixel with the shared autoencoder's decoder
+// (default layout 128 -> 256 -> 512, random weights: the speed does not depend on them), cosine with
+// [text; 4 canonical phrases], relevancy (relevance_maps in src/query/relevance.h).
+// Usage: bench_query [--threads N] [--gaussians N] [--iters N] [--sizes 480x360,1920x1080]
+// Figures go to docs/benchmarks.md.
+#include <ATen/Parallel.h>
+#include <omp.h>
+#include <torch/torch.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <sstream>
+#include <vector>
+
+#include "bench_timer.h"
+#include "cli/args.h"
+#include "core/error.h"
+#include "query/relevance.h"
+
+namespace cls {
+namespace {
+
+using bench::Clock;
+
+// Gaussians spread over the view frustum (z in [3, 15]) of a camera with fx = 0.8 * width, screen
+// sigmas log-uniform in [0.5, 8] px at the reference width 800 (as bench_splat), opacities in [0.1, 0.9].
+GaussianModel make_model(int n, int latent) {
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<float> U(0, 1);
+  GaussianModel g = make_gaussians(n, 0);
+  auto means = g.means.accessor<float, 2>();
+  auto ls = g.log_scales.accessor<float, 2>();
+  auto q = g.quats.accessor<float, 2>();
+  auto op = g.opacity_logits.accessor<float, 2>();
+  const float aspect = 0.75f, f = 0.8f;  // fx / width
+  for (int i = 0; i < n; ++i) {
+    const float z = 3 + 12 * U(rng);
+    means[i][0] = (U(rng) - 0.5f) * z / f;
+    means[i][1] = (U(rng) - 0.5f) * z * aspect / f;
+    means[i][2] = z;
+    for (int k = 0; k < 3; ++k) ls[i][k] = std::log(z / (f * 800) * 0.5f * std::pow(16.0f, U(rng)));
+    float qn = 0, v[4];
+    for (float& x : v) x = U(rng) - 0.5f, qn += x * x;
+    for (int k = 0; k < 4; ++k) q[i][k] = v[k] / std::sqrt(qn);
+    const float o = 0.1f + 0.8f * U(rng);
+    op[i][0] = std::log(o / (1 - o));
+  }
+  (void)latent;
+  return g;
+}
+
+int bench_main(int argc, char** argv) {
+  Args args("bench_query", "relevance maps per second (render latents + decode + cosine/relevancy) on the CPU", "");
+  args.option("threads", "2", "threads (OpenMP rasterizer and LibTorch)")
+      .option("gaussians", "200000", "number of Gaussians")
+      .option("iters", "2", "timed views per size (after one warm-up)")
+      .option("sizes", "480x360,1920x1080", "view sizes WxH, comma-separated")
+      .option("chunk", std::to_string(kDecodeChunkPixels), "pixels decoded per decoder call");
+  if (!args.parse(argc, argv)) return 0;
+  const int threads = args.get_int("threads");
+  omp_set_num_threads(threads);
+  at::set_num_threads(threads);
+  torch::NoGradGuard no_grad;
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  const int latent = 128;
+  const GaussianModel g = make_model(args.get_int("gaussians"), latent);
+  torch::manual_seed(1);
+  const at::Tensor latents = torch::rand({g.size(), latent});
+  const Autoencoder ae(AutoencoderConfig{}, 1);
+  const LatentDecoder decode = [&](const at::Tensor& z) { return ae.decode(z); };
+  const at::Tensor queries = torch::randn({1, 512}), canonical = torch::randn({4, 512});
+  std::printf("%lld Gaussians, latent %d, decoder %d -> 256 -> 512, 1 text + 4 canonical phrases, %d threads\n",
+              static_cast<long long>(g.size()), latent, latent, threads);
+
+  std::stringstream sizes(args.get("sizes"));
+  for (std::string size; std::getline(sizes, size, ',');) {
+    int W = 0, H = 0;
+    if (std::sscanf(size.c_str(), "%dx%d", &W, &H) != 2 || W <= 0 || H <= 0) throw UsageError("--sizes: bad size " + size);
+    PinholeCamera cam{0.8 * W, 0.8 * W, 0.5 * W, 0.5 * H, W, H};
+    Pose pose;  // identity: the Gaussians were placed in this camera's frustum
+    const int iters = args.get_int("iters");
+    const int64_t chunk = args.get_int("chunk");
+    double render_s = 0, total_s = 0, map_cpu = 0;
+    for (int it = -1; it < iters; ++it) {
+      const auto t0 = Clock::now();
+      const RenderedLatents r = render_latents(g, latents, cam, pose);  // timed alone for the split
+      const double tr = bench::seconds_since(t0);
+      const double c1 = bench::cpu_seconds();
+      const auto t1 = Clock::now();
+      const RelevanceMaps m = relevance_maps(g, latents, decode, cam, pose, queries, canonical, chunk);
+      const double tm = bench::seconds_since(t1);
+      const double c2 = bench::cpu_seconds();
+      if (it >= 0) render_s += tr / iters, total_s += tm / iters, map_cpu += (c2 - c1) / iters;
+      if (it == 0) std::printf("  %dx%d: mean alpha %.2f\n", W, H, r.alpha.mean().item<double>());
+      (void)m;
+    }
+    std::printf("%5dx%-5d relevance map %8.1f ms wall (render latents %7.1f ms, decode + cosine + relevancy %7.1f ms)"
+                "  %.3f maps/s  CPU %8.1f ms  (~%.3f maps/s on %d idle cores)\n",
+                W, H, 1e3 * total_s, 1e3 * render_s, 1e3 * (total_s - render_s), 1 / total_s, 1e3 * map_cpu,
+                threads / map_cpu, threads);
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace cls
+
+int main(int argc, char** argv) {
+  try {
+    return cls::bench_main(argc, argv);
+  } catch (const cls::Error& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+}
