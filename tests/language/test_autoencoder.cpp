@@ -11,6 +11,7 @@
 #include <map>
 #include <string>
 
+#include "error_of.h"
 #include "core/error.h"
 #include "language/autoencoder.h"
 #include "language/autoencoder_test_util.h"
@@ -19,6 +20,8 @@
 
 namespace cls {
 namespace {
+
+using cls::test::error_of;
 
 namespace fs = std::filesystem;
 using test::TempDir;
@@ -30,15 +33,6 @@ AutoencoderConfig small_config() {
   c.encoder_dims = {32, 16};
   c.decoder_dims = {32, 64};
   return c;
-}
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no cls::Error)";
 }
 
 TEST(ReconstructionLoss, HandComputedValues) {

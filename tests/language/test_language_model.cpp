@@ -7,6 +7,7 @@
 #include <functional>
 #include <string>
 
+#include "error_of.h"
 #include "core/error.h"
 #include "language/language_model.h"
 #include "models/temp_dir.h"
@@ -14,6 +15,8 @@
 
 namespace cls {
 namespace {
+
+using cls::test::error_of;
 
 namespace fs = std::filesystem;
 using test::TempDir;
@@ -33,15 +36,6 @@ LanguageModel make_model(int64_t n) {
   LanguageModel m{std::move(g), {}, Autoencoder(tiny_config(), 3), {{"method", "citylangsplat"}, {"lambda_sam", 1.0}}};
   for (int l = 0; l < 3; ++l) m.latents[l] = at::randn({n, 4}) + l;
   return m;
-}
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no cls::Error)";
 }
 
 TEST(LanguageModel, SaveLoadRoundTrip) {

@@ -1,6 +1,7 @@
 #include <ATen/ATen.h>
 #include <gtest/gtest.h>
 
+#include "error_of.h"
 #include "models/temp_dir.h"
 #include <unistd.h>
 
@@ -19,6 +20,8 @@ using test::TempDir;
 
 namespace {
 
+using cls::test::error_of;
+
 std::vector<ExpectedTensor> real_sam_keys(const std::string& model) {
   const auto j = nlohmann::json::parse(read_text_file(fs::path(CLS_TEST_FIXTURES) / ("sam/real_" + model + "_keys.json")));
   std::vector<ExpectedTensor> out;
@@ -36,15 +39,6 @@ void write_sparse(const fs::path& p, const std::vector<std::pair<std::string, st
   std::vector<SafetensorsEntry> e;
   for (const auto& [name, shape] : entries) e.push_back({name, dtype, shape, {}});
   write_safetensors(p.string(), e);
-}
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
 }
 
 // Hugging Face CLIPModel names, written out independently of the loader's table (modeling_clip.py).
