@@ -1,6 +1,7 @@
 #pragma once
 // The paper's evaluation (section 4): 2D against ground-truth label images projected from a labelled
 // point cloud, 3D by nearest-neighbour matching of Gaussian centres; tables in the paper's format.
+#include <ATen/core/Tensor.h>
 #include <nlohmann/json.hpp>
 
 #include <string>
@@ -15,16 +16,28 @@ namespace cls {
 
 struct EvaluationOptions {
   std::string gt_points;          // labelled PLY (x y z + int "class" = taxonomy id, -1 = unlabelled)
+  std::string gt_class_property = "class";  // the PLY's vertex property holding the class id
   std::vector<std::string> classes;  // evaluated class names; empty = every class present in the GT
   double threshold_2d = 0.3;      // pixels whose best normalised relevance is below are ignored
   double match_radius = 0.2;      // 3D nearest-neighbour radius (scene units)
   std::string out_dir;            // eval.json, eval.md, per-view GT/prediction PNGs
+  // Which level's field answers a class (docs/evaluation.md): "fallback" = level 1 for taxonomy levels 1
+  // and 2 (level 1 carries part classes through the subpart fallback), level 3 for level-3 classes;
+  // "langsplat" = LangSplat's rule, the level whose raw cosine map (2D: per view; 3D: over all
+  // Gaussians) has the highest maximum.
+  std::string level_rule = "fallback";
+  double gt_point_radius = 0;     // GT projection footprint (scene units); 0 = from the cloud's spacing
+  bool write_view_images = true;  // OUT/views/<stem>_gt.png, <stem>_pred.png (when out_dir is set)
 };
 
 // One method's scores; the JSON has the paper's table fields (2D: miou, wiou, accuracy, coverage,
 // per_class {iou, precision, recall}; 3D: miou, wiou, coverage, mean_distance).
 nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, FeatureProvider& provider,
                               const Taxonomy& taxonomy, const EvaluationOptions& options);
+
+// The class prototypes (paper 4.3): per class the mean of the provider's text features of its phrase
+// set (the taxonomy's prompts), normalised: classes.size() x D.
+at::Tensor class_prototypes(FeatureProvider& provider, const Taxonomy& taxonomy, const std::vector<int>& classes);
 
 // The paper's Tables 1-3 side by side for several methods (name -> evaluate_model's JSON), Markdown.
 std::string evaluation_tables_markdown(const std::vector<std::pair<std::string, nlohmann::json>>& methods);

@@ -1,6 +1,7 @@
 #include "features/feature_provider.h"
 
 #include "core/error.h"
+#include "features/clip_provider.h"
 #include "features/synthetic_provider.h"
 
 namespace cls {
@@ -11,6 +12,7 @@ std::unique_ptr<FeatureProvider> make_feature_provider(const nlohmann::json& spe
   const std::string name = spec.at("provider").get<std::string>();
   if (name == "synthetic")
     return std::make_unique<SyntheticFeatureProvider>(SyntheticFeatureProvider::params_from_spec(spec), taxonomy);
+  if (name == "clip" || name == "clip-tiny") return make_clip_provider(spec, taxonomy);
   throw UsageError("unknown feature provider '" + name + "' (known: synthetic, clip, clip-tiny)");
 }
 

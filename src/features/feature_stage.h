@@ -20,6 +20,7 @@ struct FeatureStageOptions {
   double alpha = 0.5;                // text-guidance weight (paper eq. f^{gml+txt})
   RegionMode region_mode = RegionMode::Class;
   bool overwrite = false;            // recompute cached views
+  int min_region_pixels = 16;        // CityGML regions with fewer pixels are skipped (-1 in the seg map)
 };
 
 // Returns the number of views computed (0 when every view was cached).

@@ -70,6 +70,8 @@ SyntheticFeatureProvider::SyntheticFeatureProvider(const SyntheticProviderParams
     throw Error("synthetic provider: noise levels must be >= 0");
   for (size_t c = 0; c < taxonomy_.classes.size(); ++c)
     for (const std::string& p : taxonomy_.classes[c].prompts) prompt_class_.emplace(p, static_cast<int>(c));
+  // Class names count as prompts of their class too ("ground" as well as its listed prompts).
+  for (size_t c = 0; c < taxonomy_.classes.size(); ++c) prompt_class_.emplace(taxonomy_.classes[c].name, static_cast<int>(c));
 }
 
 SyntheticProviderParams SyntheticFeatureProvider::params_from_spec(const nlohmann::json& spec) {

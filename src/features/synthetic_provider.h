@@ -14,8 +14,8 @@
 //           fraction `sam_confusion` of covered segments takes another (random) class;
 //           feature of a tile = normalise(u_bg + sam_noise * u_segment);
 //   regions (CityGML branch) = normalise(u_class + gml_noise * u_region);
-//   text  = a prompt of a taxonomy class: normalise(u_class + text_noise * u_phrase); any other
-//           text: a random unit vector hashed from the text.
+//   text  = a prompt or the name of a taxonomy class: normalise(u_class + text_noise * u_phrase);
+//           any other text: a random unit vector hashed from the text.
 // u_segment / u_region / u_phrase are random unit vectors hashed from the seed and their identity
 // (view name, level, index / class / text), so results do not depend on call order.
 #include <cstdint>
@@ -57,7 +57,7 @@ class SyntheticFeatureProvider : public FeatureProvider {
  private:
   SyntheticProviderParams params_;
   Taxonomy taxonomy_;
-  std::map<std::string, int> prompt_class_;  // every taxonomy prompt -> its class
+  std::map<std::string, int> prompt_class_;  // every taxonomy prompt and class name -> its class
 };
 
 // A unit vector of `dim` standard-normal components drawn from a stream seeded by `key`

@@ -126,6 +126,7 @@ void write_view_features(const fs::path& dir, const std::string& stem, const Vie
                        {"class", r.class_id},
                        {"class_name", r.class_name},
                        {"instance", r.instance},
+                       {"building", r.building},
                        {"pixels", r.pixels}});
   nlohmann::json j = {{"height", f.height},
                       {"width", f.width},
@@ -150,6 +151,7 @@ ViewFeatures read_view_features(const fs::path& dir, const std::string& stem) {
       c.class_id = r.at("class").get<int>();
       c.class_name = r.at("class_name").get<std::string>();
       c.instance = r.at("instance").get<int64_t>();
+      c.building = r.value("building", int64_t(-1));
       c.pixels = r.at("pixels").get<int64_t>();
       f.regions.push_back(std::move(c));
     }

@@ -12,7 +12,7 @@
 //                     -1 where C^l is invalid or M = 0; values index the rows of <stem>_gml_f.npy
 //   <stem>_gml_f.npy  float32 R x D fused features (1 - alpha) f_gml + alpha f_txt, L2-normalised
 //   <stem>_gml.json   {"height", "width", "dim", "stamp", "regions": [per region: {"level", "class",
-//                     "class_name", "instance" (-1 in class mode), "pixels"}]}
+//                     "class_name", "instance" (-1 in class mode), "building", "pixels"}]}
 // The reader also accepts int32/int64 seg maps (other tools' variants).
 // Level l of the language field uses SAM seg map l (s, m, l) and CityGML map l - 1.
 #include <ATen/core/Tensor.h>
@@ -29,7 +29,9 @@ struct CityRegion {
   int level = 1;          // 1, 2, 3
   int class_id = -1;      // taxonomy class id
   std::string class_name;
-  int64_t instance = -1;  // object / building id in instance mode, -1 in class mode
+  int64_t instance = -1;  // instance mode: index of the connected component among the regions of the
+                          // same level, class and building in this view; -1 in class mode
+  int64_t building = -1;  // instance mode: building index (building.png - 1), -1 if none / class mode
   int64_t pixels = 0;
 };
 

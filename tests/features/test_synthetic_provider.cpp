@@ -115,6 +115,9 @@ TEST(SyntheticProvider, FeaturesPointAtTheirClass) {
   EXPECT_GT(cosine(t[1], wall), 0.99);
   EXPECT_FALSE(at::equal(t[0], t[1]));  // per-phrase noise
   EXPECT_LT(std::abs(cosine(t[2], wall)), 0.25);
+  // A class name that is not among its prompts still names the class.
+  const Taxonomy tax = Taxonomy::builtin();
+  EXPECT_GT(cosine(prov.text_features({"ground"})[0], prov.class_vector(tax.find("ground"))), 0.99);
 }
 
 TEST(SyntheticProvider, ConfusionGivesTheRightFractionOfWrongClasses) {

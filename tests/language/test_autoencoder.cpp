@@ -1,6 +1,7 @@
 // The shared autoencoder (paper 3.2): loss against hand-computed values, training on clustered unit
 // vectors, shapes, determinism, save/load round trip and broken files.
 #include <ATen/ATen.h>
+#include <ATen/CPUGeneratorImpl.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -128,6 +129,45 @@ TEST(Autoencoder, LearnsClusteredUnitVectors) {
   const double all_cos = at::cosine_similarity(features, rec, 1).mean().item<double>();
   EXPECT_GT(all_cos, 0.9);
   EXPECT_NEAR(all_cos, r.holdout_cosine, 0.05);
+}
+
+TEST(Autoencoder, TrainedOnSamFeaturesItCarriesOtherFeaturesOfTheSameClasses) {
+  // Paper 3.2: trained on SAM features only, applied to the CityGML features too. SAM-like features
+  // normalise(u_c + 0.5 n) and CityGML-like ones normalise(u_c + 0.25 n') (fresh noise, never seen in
+  // training) of the same 20 class directions u_c (the synthetic provider's structure).
+  const int64_t classes = 20, dim = 512;
+  at::Generator gen = at::detail::createCPUGenerator(77);
+  at::Tensor u = at::randn({classes, dim}, gen);
+  u = u / u.norm(2, {1}, true);
+  auto around = [&](int64_t n, double noise) {
+    const at::Tensor ids = at::arange(n, at::kLong).remainder(classes);
+    at::Tensor e = at::randn({n, dim}, gen);
+    e = e / e.norm(2, {1}, true);
+    const at::Tensor f = u.index_select(0, ids) + noise * e;
+    return std::make_pair(f / f.norm(2, {1}, true), ids);
+  };
+  const auto sam = around(1000, 0.5);
+  const auto gml = around(200, 0.25);
+  Autoencoder ae(AutoencoderConfig{}, 2);
+  AutoencoderTrainOptions o;
+  o.epochs = 12;
+  o.batch_size = 64;
+  ae.train(sam.first, o);
+
+  // Decoded CityGML features point to their class: nearest class direction is the right one.
+  const at::Tensor decoded = ae.decode(ae.encode(gml.first));
+  const at::Tensor cos_to_classes = (decoded / decoded.norm(2, {1}, true)).matmul(u.t());
+  const double correct = cos_to_classes.argmax(1).eq(gml.second).to(at::kDouble).mean().item<double>();
+  EXPECT_GT(correct, 0.98);
+  EXPECT_GT(cos_to_classes.gather(1, gml.second.unsqueeze(1)).mean().item<double>(), 0.9);
+  // In latent space a CityGML code lies nearest to the mean SAM code of its own class (the language
+  // loss mixes the two sources per pixel).
+  const at::Tensor z_sam = ae.encode(sam.first), z_gml = ae.encode(gml.first);
+  at::Tensor class_mean = at::zeros({classes, ae.config().latent_dim()});
+  class_mean.index_add_(0, sam.second, z_sam);
+  class_mean = class_mean / class_mean.norm(2, {1}, true);
+  const at::Tensor nearest = z_gml.matmul(class_mean.t()).argmax(1);
+  EXPECT_GT(nearest.eq(gml.second).to(at::kDouble).mean().item<double>(), 0.98);
 }
 
 TEST(Autoencoder, TrainingIsDeterministicForASeed) {

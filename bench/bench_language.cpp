@@ -1,0 +1,186 @@
+// Language-field costs (docs/benchmarks.md):
+// 1. training, ms per iteration with 128 channels: rasterize_features forward + L1 loss against a
+//    random target latent map + backward into the per-Gaussian latents (geometry frozen, paper 3.3);
+// 2. querying, relevance maps per second at 1080p: render 128 channels, decode every pixel with the
+//    shared autoencoder (128 -> 256 -> 512), cosine with one query feature.
+// Scenes are random (seeded) Gaussians spread over the view frustum, as bench_splat's.
+// Usage: bench_language [--threads N] [--train-scenes 200000@800x600,50000@480x360] [--repeats N] ...
+#include <ATen/ATen.h>
+#include <ATen/CPUGeneratorImpl.h>
+#include <ATen/Parallel.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bench_timer.h"
+#include "cli/args.h"
+#include "core/error.h"
+#include "language/autoencoder.h"
+#include "splat/rasterize.h"
+
+namespace cls {
+namespace {
+
+using bench::Clock;
+
+struct Scene {
+  at::Tensor means, scales, quats, opacities;  // activated parameters
+  RasterizeSettings settings;
+};
+
+// Gaussians between z = 3 and 15 inside the frustum, screen sigmas log-uniform in [0.5, 8] px,
+// opacities in [0.1, 0.9] (bench_splat's scene, as tensors).
+Scene make_scene(int64_t n, int width, int height, uint64_t seed) {
+  at::Generator gen = at::detail::createCPUGenerator(seed);
+  const double f = 0.8 * width;
+  Scene s;
+  s.settings.camera.fx = s.settings.camera.fy = f;
+  s.settings.camera.cx = 0.5 * width, s.settings.camera.cy = 0.5 * height;
+  s.settings.camera.width = width, s.settings.camera.height = height;
+  const at::Tensor z = 3 + 12 * at::rand({n}, gen);
+  const at::Tensor x = (at::rand({n}, gen) - 0.5) * z * (width / f);
+  const at::Tensor y = (at::rand({n}, gen) - 0.5) * z * (height / f);
+  s.means = at::stack({x, y, z}, 1).contiguous();
+  s.scales = ((z / f * 0.5).unsqueeze(1) * at::pow(16.0, at::rand({n, 3}, gen))).contiguous();
+  const at::Tensor q = at::rand({n, 4}, gen) - 0.5;
+  s.quats = (q / q.norm(2, {1}, true)).contiguous();
+  s.opacities = 0.1 + 0.8 * at::rand({n}, gen);
+  return s;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
+struct Timing {
+  double wall_ms = 0, cpu_ms = 0;  // medians per iteration
+};
+
+template <class F>
+Timing time_it(int repeats, const F& body) {
+  body();  // warm-up
+  std::vector<double> wall, cpu;
+  for (int r = 0; r < repeats; ++r) {
+    const double c0 = bench::cpu_seconds();
+    const auto t0 = Clock::now();
+    body();
+    wall.push_back(1e3 * bench::seconds_since(t0));
+    cpu.push_back(1e3 * (bench::cpu_seconds() - c0));
+  }
+  return {median(wall), median(cpu)};
+}
+
+struct SceneSpec {
+  int64_t gaussians;
+  int width, height;
+};
+
+std::vector<SceneSpec> parse_scenes(const std::string& text) {
+  std::vector<SceneSpec> specs;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    SceneSpec s{};
+    char at_sign = 0, x = 0;
+    std::stringstream is(item);
+    if (!(is >> s.gaussians >> at_sign >> s.width >> x >> s.height) || at_sign != '@' || x != 'x' ||
+        s.gaussians <= 0 || s.width <= 0 || s.height <= 0)
+      throw UsageError("bench_language: scenes are N@WxH, comma-separated, got '" + item + "'");
+    specs.push_back(s);
+  }
+  return specs;
+}
+
+// One language-training iteration's rasterizer work: forward, L1 against the target, backward.
+Timing bench_training(const SceneSpec& spec, int channels, int repeats) {
+  const Scene s = make_scene(spec.gaussians, spec.width, spec.height, 42);
+  at::Generator gen = at::detail::createCPUGenerator(7);
+  const at::Tensor latents = at::rand({spec.gaussians, channels}, gen).requires_grad_(true);
+  const at::Tensor target = at::rand({spec.height, spec.width, channels}, gen);
+  return time_it(repeats, [&] {
+    const RasterizeOutput out =
+        rasterize_features(s.means, s.scales, s.quats, s.opacities, latents, at::Tensor(), s.settings);
+    const at::Tensor loss = (out.image - target).abs().mean();
+    loss.backward();
+    latents.mutable_grad().zero_();
+  });
+}
+
+int bench_main(int argc, char** argv) {
+  Args args("bench_language", "Language-field training ms/iteration and 1080p relevance-map FPS on the CPU", "");
+  args.option("threads", "2", "OpenMP / ATen threads")
+      .option("channels", "128", "latent channels")
+      .option("train-scenes", "200000@800x600,50000@480x360", "training scenes, N@WxH comma-separated")
+      .option("query-scene", "200000@1920x1080", "the relevance-map scene, N@WxH")
+      .option("chunk", "65536", "pixels decoded per autoencoder call")
+      .option("repeats", "3", "timed repeats (after one warm-up); the median is reported");
+  if (!args.parse(argc, argv)) return 0;
+  const int threads = args.get_int("threads");
+  omp_set_num_threads(threads);
+  at::set_num_threads(threads);
+  const int channels = args.get_int("channels");
+  const int repeats = std::max(1, args.get_int("repeats"));
+
+  std::printf("threads %d, %d channels, median of %d repeats after one warm-up\n", threads, channels, repeats);
+  for (const SceneSpec& spec : parse_scenes(args.get("train-scenes"))) {
+    const Timing t = bench_training(spec, channels, repeats);
+    std::printf("training  %7lld Gaussians %4dx%-4d  %9.1f ms/iteration (wall)  CPU %9.1f ms  CPU/threads %9.1f ms\n",
+                static_cast<long long>(spec.gaussians), spec.width, spec.height, t.wall_ms, t.cpu_ms,
+                t.cpu_ms / threads);
+    std::fflush(stdout);
+  }
+
+  // Relevance map: render, decode per pixel (chunks), cosine with a query feature.
+  const SceneSpec q = parse_scenes(args.get("query-scene")).at(0);
+  const Scene s = make_scene(q.gaussians, q.width, q.height, 43);
+  at::Generator gen = at::detail::createCPUGenerator(8);
+  AutoencoderConfig config;
+  config.encoder_dims.back() = channels;
+  const Autoencoder ae(config, 1);
+  at::Tensor latents = at::rand({q.gaussians, channels}, gen);
+  latents = latents / latents.norm(2, {1}, true);
+  at::Tensor query = at::randn({config.input_dim}, gen);
+  query = query / query.norm();
+  const int64_t chunk = std::max(1, args.get_int("chunk"));
+  at::Tensor rendered, relevance;
+  const Timing render = time_it(repeats, [&] {
+    at::NoGradGuard no_grad;
+    rendered = rasterize_features(s.means, s.scales, s.quats, s.opacities, latents, at::Tensor(), s.settings).image;
+  });
+  const Timing decode = time_it(repeats, [&] {
+    const at::Tensor pixels = rendered.reshape({-1, channels});
+    relevance = at::empty({pixels.size(0)}, at::kFloat);
+    for (int64_t begin = 0; begin < pixels.size(0); begin += chunk) {
+      const int64_t end = std::min(pixels.size(0), begin + chunk);
+      const at::Tensor f = ae.decode(pixels.slice(0, begin, end));
+      relevance.slice(0, begin, end).copy_(f.matmul(query) / f.norm(2, {1}).clamp_min(1e-8));
+    }
+  });
+  const double total_wall = render.wall_ms + decode.wall_ms, total_cpu = render.cpu_ms + decode.cpu_ms;
+  std::printf("query     %7lld Gaussians %4dx%-4d  render %9.1f ms  decode+cosine %9.1f ms  (CPU %9.1f / %9.1f ms)\n",
+              static_cast<long long>(q.gaussians), q.width, q.height, render.wall_ms, decode.wall_ms, render.cpu_ms,
+              decode.cpu_ms);
+  std::printf("query     relevance maps: %.3f FPS (wall), %.3f FPS (CPU/threads estimate)\n", 1e3 / total_wall,
+              1e3 / (total_cpu / threads));
+  return 0;
+}
+
+}  // namespace
+}  // namespace cls
+
+int main(int argc, char** argv) {
+  try {
+    return cls::bench_main(argc, argv);
+  } catch (const cls::Error& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,97 @@
+// citylangsplat autoencoder: train the shared autoencoder (paper 3.2) on the SAM features of a
+// features directory.
+#include <cstdint>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/args.h"
+#include "cli/commands.h"
+#include "core/error.h"
+#include "language/autoencoder_stage.h"
+
+namespace cls {
+namespace {
+
+std::string join(const std::vector<int>& v) {
+  std::string s;
+  for (size_t i = 0; i < v.size(); ++i) s += (i ? "," : "") + std::to_string(v[i]);
+  return s;
+}
+
+std::vector<int> parse_dims(const std::string& option, const std::string& text) {
+  std::vector<int> dims;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    size_t used = 0;
+    int d = 0;
+    try {
+      d = std::stoi(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != item.size() || d <= 0)
+      throw UsageError("autoencoder: --" + option + " must be a comma-separated list of positive sizes, got '" +
+                       text + "'");
+    dims.push_back(d);
+  }
+  if (dims.empty()) throw UsageError("autoencoder: --" + option + " must not be empty");
+  return dims;
+}
+
+std::string to_string(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+int cmd_autoencoder(int argc, char** argv) {
+  const AutoencoderConfig dc;
+  const AutoencoderTrainOptions dt;
+  Args args("autoencoder",
+            "Train the shared autoencoder (paper 3.2) on the SAM CLIP features of a features directory: every "
+            "*_f.npy under DIR (N x 512; the CityGML *_gml_f.npy files are not used for training). Loss "
+            "||f - f^||^2 + lambda_cos (1 - cos(f, f^)) per feature; Adam on shuffled mini-batches. Writes the "
+            "model (safetensors, config in its metadata) and FILE.json (samples, loss, held-out cosine, seconds).");
+  args.option("features", "", "features directory (the features stage's output; required)")
+      .option("out", "", "the model file to write, e.g. OUT/autoencoder.safetensors (required)")
+      .option("epochs", std::to_string(dt.epochs), "training epochs")
+      .option("batch-size", std::to_string(dt.batch_size), "mini-batch size (>= 2)")
+      .option("lr", to_string(dt.lr), "Adam learning rate")
+      .option("lambda-cos", to_string(dt.lambda_cos), "weight of the cosine term")
+      .option("holdout", to_string(dt.holdout_fraction), "fraction of features held out for the reported cosine")
+      .option("encoder-dims", join(dc.encoder_dims), "encoder layer sizes after the input; the last is the latent")
+      .option("decoder-dims", join(dc.decoder_dims), "decoder layer sizes; the last must be the feature size")
+      .option("seed", std::to_string(dt.seed), "seed of initialisation, split and shuffling");
+  if (!args.parse(argc, argv)) return 0;
+  if (!args.has("features")) throw UsageError("autoencoder: --features is required (see --help)");
+  if (!args.has("out")) throw UsageError("autoencoder: --out is required (see --help)");
+
+  AutoencoderStageOptions o;
+  o.features_dir = args.get("features");
+  o.out = args.get("out");
+  o.config.encoder_dims = parse_dims("encoder-dims", args.get("encoder-dims"));
+  o.config.decoder_dims = parse_dims("decoder-dims", args.get("decoder-dims"));
+  o.config.input_dim = o.config.decoder_dims.back();
+  o.train.epochs = args.get_int("epochs");
+  o.train.batch_size = args.get_int("batch-size");
+  o.train.lr = args.get_double("lr");
+  o.train.lambda_cos = args.get_double("lambda-cos");
+  o.train.holdout_fraction = args.get_double("holdout");
+  const int seed = args.get_int("seed");
+  if (seed < 0) throw UsageError("autoencoder: --seed must be >= 0");
+  o.train.seed = static_cast<uint64_t>(seed);
+  if (o.train.epochs < 1) throw UsageError("autoencoder: --epochs must be >= 1");
+  if (o.train.batch_size < 2) throw UsageError("autoencoder: --batch-size must be >= 2");
+  if (!(o.train.lr > 0)) throw UsageError("autoencoder: --lr must be positive");
+  if (!(o.train.lambda_cos >= 0)) throw UsageError("autoencoder: --lambda-cos must be >= 0");
+  if (!(o.train.holdout_fraction >= 0 && o.train.holdout_fraction < 1))
+    throw UsageError("autoencoder: --holdout must lie in [0, 1)");
+  run_autoencoder_stage(o);
+  return 0;
+}
+
+}  // namespace cls

@@ -1,0 +1,470 @@
+// The paper's evaluation (section 4.1 / 4.3). Definitions of every number: docs/evaluation.md.
+#include "eval/evaluation.h"
+
+#include <ATen/core/grad_mode.h>
+#include <torch/types.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <opencv2/imgcodecs.hpp>
+#include <set>
+#include <sstream>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "core/progress.h"
+#include "eval/gt_projection.h"
+#include "eval/labelled_points.h"
+#include "eval/metrics_2d.h"
+#include "eval/metrics_3d.h"
+#include "query/relevance.h"
+
+namespace fs = std::filesystem;
+
+namespace cls {
+namespace {
+
+constexpr int64_t kDecodeChunk = 1 << 16;
+
+at::Tensor unit_rows(const at::Tensor& x) {
+  const at::Tensor n = x.norm(2, {-1}, /*keepdim=*/true);
+  return torch::where(n > 0, x / n, torch::zeros_like(x));
+}
+
+// The evaluated classes (taxonomy ids, ascending): the named ones, or every class in the GT.
+std::vector<int> evaluated_classes(const Taxonomy& taxonomy, const LabelledPoints& gt, const EvaluationOptions& o) {
+  std::vector<int> ids;
+  if (!o.classes.empty()) {
+    for (const std::string& name : o.classes) {
+      const int id = taxonomy.find(name);
+      if (id < 0) throw UsageError("evaluate: class '" + name + "' is not in the taxonomy");
+      ids.push_back(id);
+    }
+  } else {
+    std::set<int> present;
+    int64_t outside = 0;
+    for (int32_t l : gt.labels) {
+      if (l < 0) continue;
+      if (l >= int(taxonomy.classes.size())) {
+        ++outside;
+        continue;
+      }
+      present.insert(l);
+    }
+    if (outside > 0)
+      log_warn(cat("evaluate: ", outside, " GT points have a class id outside the taxonomy; they are not evaluated"));
+    ids.assign(present.begin(), present.end());
+  }
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  if (ids.empty()) fail(o.gt_points, "no evaluated class (the GT has no labelled point of the taxonomy)");
+  return ids;
+}
+
+// The paper's "fallback" level of a class: the subpart map carries parts (docs/conventions.md).
+int fallback_level(const SemanticClass& c) { return c.level == 3 ? 3 : 1; }
+
+std::vector<int> available_levels(const LanguageModel& model) {
+  std::vector<int> levels;
+  for (int l = 1; l <= 3; ++l)
+    if (model.latents[size_t(l - 1)].defined()) levels.push_back(l);
+  if (levels.empty()) throw Error("evaluate: the language model has no latents");
+  return levels;
+}
+
+// Taxonomy colour per evaluated index; black = no GT, dark grey = ignored prediction.
+cv::Mat colourise(const std::vector<int32_t>& labels, int H, int W, const std::vector<std::array<unsigned char, 3>>& colours,
+                  const cv::Vec3b& none) {
+  cv::Mat img(H, W, CV_8UC3);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const int32_t l = labels[size_t(y) * W + x];
+      img.at<cv::Vec3b>(y, x) = l < 0 ? none : cv::Vec3b(colours[l][2], colours[l][1], colours[l][0]);  // BGR
+    }
+  return img;
+}
+
+void write_png(const fs::path& path, const cv::Mat& img) {
+  write_atomic(path, [&](const fs::path& tmp) {
+    if (!cv::imwrite(tmp.string(), img)) fail(path.string(), "cannot write PNG");
+  });
+}
+
+nlohmann::json scores_json(const ClassScores& s) {
+  return {{"iou", s.iou}, {"precision", s.precision}, {"recall", s.recall}, {"gt", s.gt}, {"pred", s.pred}, {"tp", s.tp}};
+}
+
+nlohmann::json confusion_json(const ConfusionMatrix& m) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (int g = 0; g < m.num_classes(); ++g) {
+    nlohmann::json row = nlohmann::json::array();
+    for (int p = 0; p < m.num_classes(); ++p) row.push_back(m.at(g, p));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// Per-class relevance normalised to [0, 1] by its own min and max (no softmax, paper 4.3); a constant
+// map carries no information and becomes 0.
+at::Tensor minmax_normalise(const at::Tensor& map) {
+  const at::Tensor lo = map.min(), hi = map.max();
+  const double range = (hi - lo).item<double>();
+  if (!(range > 1e-12)) return torch::zeros_like(map);
+  return (map - lo) / range;
+}
+
+// Cosine of every Gaussian's decoded latent at `level` with the prototypes: N x K.
+at::Tensor gaussian_cosines(const LanguageModel& model, int level, const at::Tensor& prototypes) {
+  const at::Tensor& z = model.latents[size_t(level - 1)];
+  const int64_t N = z.size(0);
+  const at::Tensor p = unit_rows(prototypes.to(torch::kFloat32));
+  at::Tensor out = torch::empty({N, prototypes.size(0)}, torch::kFloat32);
+  for (int64_t b = 0; b < N; b += kDecodeChunk) {
+    const int64_t e = std::min(N, b + kDecodeChunk);
+    const at::Tensor d = model.autoencoder.decode(z.slice(0, b, e)).to(torch::kCPU, torch::kFloat32);
+    if (d.dim() != 2 || d.size(1) != p.size(1))
+      throw Error("evaluate: the autoencoder decodes to " + std::to_string(d.size(-1)) + "-d features, the prototypes are " +
+                  std::to_string(p.size(1)) + "-d (a different feature provider?)");
+    out.slice(0, b, e).copy_(unit_rows(d).matmul(p.t()));
+  }
+  return out;
+}
+
+std::string pct(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", 100.0 * v);
+  return buf;
+}
+
+std::string fixed2(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f", v);
+  return buf;
+}
+
+}  // namespace
+
+at::Tensor class_prototypes(FeatureProvider& provider, const Taxonomy& taxonomy, const std::vector<int>& classes) {
+  at::NoGradGuard no_grad;
+  std::vector<at::Tensor> rows;
+  for (int id : classes) {
+    if (id < 0 || id >= int(taxonomy.classes.size())) throw Error("class_prototypes: class id " + std::to_string(id) + " outside the taxonomy");
+    const SemanticClass& c = taxonomy.classes[size_t(id)];
+    if (c.prompts.empty()) throw Error("class_prototypes: class '" + c.name + "' has no prompts");
+    const at::Tensor t = provider.text_features(c.prompts).to(torch::kCPU, torch::kFloat32);
+    rows.push_back(unit_rows(unit_rows(t).mean(0)));
+  }
+  return torch::stack(rows, 0);
+}
+
+nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, FeatureProvider& provider,
+                              const Taxonomy& taxonomy, const EvaluationOptions& options) {
+  if (options.level_rule != "fallback" && options.level_rule != "langsplat")
+    throw UsageError("evaluate: level rule must be 'fallback' or 'langsplat', got '" + options.level_rule + "'");
+  at::NoGradGuard no_grad;
+  const LabelledPoints gt = read_labelled_points(options.gt_points, options.gt_class_property);
+  const std::vector<int> classes = evaluated_classes(taxonomy, gt, options);
+  const int K = int(classes.size());
+  std::vector<int> eval_of(taxonomy.classes.size(), -1);
+  for (int k = 0; k < K; ++k) eval_of[size_t(classes[k])] = k;
+  auto to_eval = [&](int32_t l) { return l >= 0 && l < int32_t(eval_of.size()) ? eval_of[size_t(l)] : -1; };
+
+  const at::Tensor prototypes = class_prototypes(provider, taxonomy, classes);
+  const std::vector<int> levels = available_levels(model);
+  const bool langsplat_rule = options.level_rule == "langsplat";
+  std::vector<int> class_level(K);
+  for (int k = 0; k < K; ++k) {
+    class_level[k] = fallback_level(taxonomy.classes[size_t(classes[k])]);
+    if (!langsplat_rule && !model.latents[size_t(class_level[k] - 1)].defined())
+      throw Error("evaluate: class '" + taxonomy.classes[size_t(classes[k])].name + "' is read at level " +
+                  std::to_string(class_level[k]) + ", which the language model does not have");
+  }
+  std::set<int> used_levels;
+  if (langsplat_rule) used_levels.insert(levels.begin(), levels.end());
+  else used_levels.insert(class_level.begin(), class_level.end());
+
+  std::vector<std::array<unsigned char, 3>> colours;
+  nlohmann::json class_names = nlohmann::json::array();
+  for (int id : classes) {
+    colours.push_back(taxonomy.classes[size_t(id)].color);
+    class_names.push_back(taxonomy.classes[size_t(id)].name);
+  }
+  const fs::path view_dir = options.out_dir.empty() ? fs::path() : fs::path(options.out_dir) / "views";
+  if (!view_dir.empty() && options.write_view_images) fs::create_directories(view_dir);
+
+  // ---- 2D: GT label images projected from the cloud; relevance argmax per pixel.
+  GtProjectionOptions popt;
+  popt.point_radius = options.gt_point_radius;
+  const double radius = footprint_radius(gt, popt);
+  ConfusionMatrix total(K);
+  PerImageClassAverages per_image(K);
+  int64_t pixels = 0, valid_gt = 0, scored = 0;
+  nlohmann::json views = nlohmann::json::array();
+  std::vector<uint8_t> visible(gt.size(), 0);  // GT points nearest at some pixel of some view
+  {
+    Progress progress("evaluate 2D", scene.views.size(), "views");
+    for (const SceneView& v : scene.views) {
+      const int H = v.camera.height, W = v.camera.width;
+      cv::Mat winner;
+      const cv::Mat proj = project_gt_labels(gt, v.camera, v.pose, radius, popt, nullptr, &winner);
+      for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x)
+          if (const int32_t w = winner.at<int32_t>(y, x); w >= 0) visible[size_t(w)] = 1;
+      std::vector<int32_t> gt_labels(size_t(H) * W);
+      for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) gt_labels[size_t(y) * W + x] = to_eval(proj.at<int32_t>(y, x));
+
+      std::map<int, at::Tensor> cos;  // level -> K x H x W raw cosine
+      for (int l : used_levels)
+        cos[l] = relevance_maps(model, l, v, prototypes, prototypes.slice(0, 0, 1)).cosine.to(torch::kCPU);
+      std::vector<at::Tensor> maps;
+      nlohmann::json chosen = nlohmann::json::array();
+      for (int k = 0; k < K; ++k) {
+        int level = class_level[k];
+        if (langsplat_rule) {
+          double best = -1e300;
+          for (int l : levels) {
+            const double m = cos[l][k].max().item<double>();
+            if (m > best) {
+              best = m;
+              level = l;
+            }
+          }
+        }
+        chosen.push_back(level);
+        maps.push_back(minmax_normalise(cos[level][k]));
+      }
+      const auto [best, arg] = torch::stack(maps, 0).max(0);
+      const at::Tensor pred_t = torch::where(best >= options.threshold_2d, arg, torch::full_like(arg, -1))
+                                    .to(torch::kInt32).contiguous();
+      const int32_t* pp = pred_t.data_ptr<int32_t>();
+      const std::vector<int32_t> pred(pp, pp + size_t(H) * W);
+
+      const ImageScoring s = score_labels(gt_labels, pred, K);
+      total.add(s.confusion);
+      per_image.add_image(s.confusion);
+      pixels += s.pixels;
+      valid_gt += s.valid_gt;
+      scored += s.scored;
+      const SegmentationScores vs = segmentation_scores(s.confusion);
+      views.push_back({{"name", v.name},
+                       {"gt_coverage", s.pixels ? double(s.valid_gt) / double(s.pixels) : 0.0},
+                       {"coverage", s.valid_gt ? double(s.scored) / double(s.valid_gt) : 0.0},
+                       {"miou", vs.miou},
+                       {"wiou", vs.wiou},
+                       {"accuracy", vs.accuracy},
+                       {"levels", chosen}});
+      if (!view_dir.empty() && options.write_view_images) {
+        const std::string stem = fs::path(v.name).stem().string();
+        write_png(view_dir / (stem + "_gt.png"), colourise(gt_labels, H, W, colours, cv::Vec3b(0, 0, 0)));
+        write_png(view_dir / (stem + "_pred.png"), colourise(pred, H, W, colours, cv::Vec3b(64, 64, 64)));
+      }
+      progress.advance();
+    }
+  }
+  const SegmentationScores s2 = segmentation_scores(total);
+  nlohmann::json per_class_2d = nlohmann::json::object(), per_class_2d_pooled = nlohmann::json::object();
+  for (int k = 0; k < K; ++k) {
+    const ClassScores m = per_image.mean(k);
+    per_class_2d[class_names[k].get<std::string>()] = {
+        {"iou", m.iou}, {"precision", m.precision}, {"recall", m.recall}, {"images", per_image.images_with(k)}};
+    per_class_2d_pooled[class_names[k].get<std::string>()] = scores_json(s2.per_class[size_t(k)]);
+  }
+  nlohmann::json j2d = {{"gt_coverage", pixels ? double(valid_gt) / double(pixels) : 0.0},
+                        {"coverage", valid_gt ? double(scored) / double(valid_gt) : 0.0},
+                        {"miou", s2.miou},
+                        {"wiou", s2.wiou},
+                        {"accuracy", s2.accuracy},
+                        {"classes_in_miou", s2.classes_in_miou},
+                        {"pixels", pixels},
+                        {"valid_gt_pixels", valid_gt},
+                        {"scored_pixels", scored},
+                        {"per_class", per_class_2d},
+                        {"per_class_pooled", per_class_2d_pooled},
+                        {"confusion", confusion_json(total)},
+                        {"views", views}};
+
+  // ---- 3D: every Gaussian's decoded latent argmax over the prototypes; GT points matched to centres.
+  const int64_t N = model.gaussians.size();
+  std::map<int, at::Tensor> gcos;
+  for (int l : used_levels) gcos[l] = gaussian_cosines(model, l, prototypes);
+  std::vector<at::Tensor> cols;
+  nlohmann::json levels_3d = nlohmann::json::array();
+  for (int k = 0; k < K; ++k) {
+    int level = class_level[k];
+    if (langsplat_rule) {
+      double best = -1e300;
+      for (int l : levels) {
+        const double m = N > 0 ? gcos[l].select(1, k).max().item<double>() : 0.0;
+        if (m > best) {
+          best = m;
+          level = l;
+        }
+      }
+    }
+    levels_3d.push_back(level);
+    cols.push_back(gcos[level].select(1, k));
+  }
+  std::vector<int32_t> centre_labels(size_t(N), 0);
+  if (N > 0) {
+    const at::Tensor arg = torch::stack(cols, 1).argmax(1).to(torch::kInt32).contiguous();
+    std::copy(arg.data_ptr<int32_t>(), arg.data_ptr<int32_t>() + N, centre_labels.begin());
+  }
+  const at::Tensor means = model.gaussians.means.to(torch::kCPU, torch::kFloat64).contiguous();
+  std::vector<Vec3d> centres(static_cast<size_t>(N));
+  for (int64_t i = 0; i < N; ++i) {
+    const double* m = means.data_ptr<double>() + 3 * i;
+    centres[size_t(i)] = {m[0], m[1], m[2]};
+  }
+  std::vector<int32_t> gt_eval(gt.size());
+  for (size_t i = 0; i < gt.size(); ++i) gt_eval[i] = to_eval(gt.labels[i]);
+  auto scores_3d_json = [&](const std::vector<int32_t>& labels) {
+    const Scores3d s3 = score_3d(gt.positions, labels, centres, centre_labels, K, options.match_radius);
+    nlohmann::json per_class = nlohmann::json::object();
+    for (int k = 0; k < K; ++k) per_class[class_names[k].get<std::string>()] = scores_json(s3.scores.per_class[size_t(k)]);
+    return nlohmann::json{{"coverage", s3.coverage},
+                          {"mean_distance", s3.mean_distance},
+                          {"miou", s3.scores.miou},
+                          {"wiou", s3.scores.wiou},
+                          {"accuracy", s3.scores.accuracy},
+                          {"classes_in_miou", s3.scores.classes_in_miou},
+                          {"gt_points", s3.gt_points},
+                          {"matched", s3.matched},
+                          {"gaussians", N},
+                          {"levels", levels_3d},
+                          {"per_class", per_class},
+                          {"confusion", confusion_json(s3.confusion)}};
+  };
+  // The paper's 3D scores use every GT point; a synthetic cloud also samples surfaces no view sees
+  // (e.g. a building's ground surface), whose Gaussians no loss reaches: "3d_visible" keeps the GT
+  // points that are the nearest point at some pixel of some view.
+  const nlohmann::json j3d = scores_3d_json(gt_eval);
+  for (size_t i = 0; i < gt.size(); ++i)
+    if (!visible[i]) gt_eval[i] = -1;
+  const nlohmann::json j3d_visible = scores_3d_json(gt_eval);
+
+  nlohmann::json levels_json = nlohmann::json::array();
+  for (int l : class_level) levels_json.push_back(l);
+  return {{"method", model.info.value("method", std::string("unknown"))},
+          {"classes", class_names},
+          {"class_levels", levels_json},
+          {"level_rule", options.level_rule},
+          {"threshold_2d", options.threshold_2d},
+          {"match_radius", options.match_radius},
+          {"gt_points", options.gt_points},
+          {"gt_point_radius", radius},
+          {"provider", provider.spec()},
+          {"2d", j2d},
+          {"3d", j3d},
+          {"3d_visible", j3d_visible}};
+}
+
+namespace {
+
+// One Markdown row; the best value of each metric group among the methods in bold.
+struct Column {
+  std::string header;
+  std::function<double(const nlohmann::json&)> value;
+  bool percent = true;
+  bool higher_better = true;
+};
+
+std::string table(const std::vector<std::pair<std::string, nlohmann::json>>& methods, const std::vector<Column>& cols) {
+  std::ostringstream md;
+  md << "| Method |";
+  for (const Column& c : cols) md << " " << c.header << " |";
+  md << "\n|---|";
+  for (size_t i = 0; i < cols.size(); ++i) md << "---:|";
+  md << "\n";
+  for (size_t m = 0; m < methods.size(); ++m) {
+    md << "| " << methods[m].first << " |";
+    for (const Column& c : cols) {
+      const double v = c.value(methods[m].second);
+      // Bold: strictly better than every other method (ties stay plain).
+      bool best = methods.size() > 1;
+      for (size_t o = 0; o < methods.size(); ++o) {
+        const double w = c.value(methods[o].second);
+        if (o != m && !(c.higher_better ? v > w + 1e-12 : v < w - 1e-12)) best = false;
+      }
+      const std::string text = c.percent ? pct(v) : fixed2(v);
+      md << " " << (best ? "**" + text + "**" : text) << " |";
+    }
+    md << "\n";
+  }
+  return md.str();
+}
+
+double get(const nlohmann::json& j, const std::string& a, const std::string& b) {
+  return j.contains(a) && j[a].contains(b) ? j[a][b].get<double>() : 0.0;
+}
+
+}  // namespace
+
+std::string evaluation_tables_markdown(const std::vector<std::pair<std::string, nlohmann::json>>& methods) {
+  std::ostringstream md;
+  md << "### Table 1: 2D (projected GT; percentages)\n\n"
+        "Cov. GT: pixels with a valid GT label; Cov.: valid GT pixels with a prediction above the threshold; "
+        "scores over those.\n\n";
+  md << table(methods, {{"Cov. GT", [](const nlohmann::json& j) { return get(j, "2d", "gt_coverage"); }},
+                        {"Cov.", [](const nlohmann::json& j) { return get(j, "2d", "coverage"); }},
+                        {"mIoU", [](const nlohmann::json& j) { return get(j, "2d", "miou"); }},
+                        {"wIoU", [](const nlohmann::json& j) { return get(j, "2d", "wiou"); }},
+                        {"Acc", [](const nlohmann::json& j) { return get(j, "2d", "accuracy"); }}});
+  md << "\n### Table 2: 3D (nearest Gaussian centre)\n\n"
+        "Cov.: GT points with a Gaussian centre within the radius (%); Dist.: mean match distance (scene units).\n\n";
+  md << table(methods, {{"Cov.", [](const nlohmann::json& j) { return get(j, "3d", "coverage"); }},
+                        {"Dist.", [](const nlohmann::json& j) { return get(j, "3d", "mean_distance"); }, false, false},
+                        {"mIoU", [](const nlohmann::json& j) { return get(j, "3d", "miou"); }},
+                        {"wIoU", [](const nlohmann::json& j) { return get(j, "3d", "wiou"); }}});
+  md << "\n### Table 2b: 3D over the GT points visible in some view\n\n";
+  md << table(methods, {{"Cov.", [](const nlohmann::json& j) { return get(j, "3d_visible", "coverage"); }},
+                        {"Dist.", [](const nlohmann::json& j) { return get(j, "3d_visible", "mean_distance"); }, false, false},
+                        {"mIoU", [](const nlohmann::json& j) { return get(j, "3d_visible", "miou"); }},
+                        {"wIoU", [](const nlohmann::json& j) { return get(j, "3d_visible", "wiou"); }}});
+  // Table 3: classes of every method, in first-seen order.
+  std::vector<std::string> classes;
+  for (const auto& m : methods)
+    if (m.second.contains("classes"))
+      for (const auto& c : m.second["classes"])
+        if (std::find(classes.begin(), classes.end(), c.get<std::string>()) == classes.end()) classes.push_back(c);
+  md << "\n### Table 3: per class, 2D (per image, averaged over the images that contain the class; percentages)\n\n";
+  md << "| Class |";
+  for (const auto& m : methods) md << " " << m.first << " IoU | Precision | Recall |";
+  md << "\n|---|";
+  for (size_t i = 0; i < methods.size(); ++i) md << "---:|---:|---:|";
+  md << "\n";
+  for (const std::string& c : classes) {
+    md << "| " << c << " |";
+    auto class_scores = [&](size_t m) -> const nlohmann::json* {
+      const nlohmann::json& j = methods[m].second;
+      return j.contains("2d") && j["2d"].contains("per_class") && j["2d"]["per_class"].contains(c)
+                 ? &j["2d"]["per_class"][c]
+                 : nullptr;
+    };
+    for (size_t m = 0; m < methods.size(); ++m) {
+      const nlohmann::json* pc = class_scores(m);
+      for (const char* metric : {"iou", "precision", "recall"}) {
+        if (!pc) {
+          md << " - |";
+          continue;
+        }
+        const double v = (*pc)[metric].get<double>();
+        bool best = methods.size() > 1;
+        for (size_t o = 0; o < methods.size(); ++o) {
+          const nlohmann::json* other = class_scores(o);
+          if (o != m && other && !(v > (*other)[metric].get<double>() + 1e-12)) best = false;
+        }
+        md << " " << (best ? "**" + pct(v) + "**" : pct(v)) << " |";
+      }
+    }
+    md << "\n";
+  }
+  return md.str();
+}
+
+}  // namespace cls

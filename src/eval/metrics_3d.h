@@ -1,0 +1,35 @@
+#pragma once
+// The paper's 3D evaluation (section 4.1, Table 2): ground-truth points matched to the nearest Gaussian
+// centre within a radius (k-d tree); scores over the matched points.
+#include <cstdint>
+#include <vector>
+
+#include "core/math.h"
+#include "eval/metrics_2d.h"
+
+namespace cls {
+
+struct PointMatching {
+  std::vector<int64_t> match;     // per GT point: index of the nearest centre within the radius, -1 = none
+  std::vector<double> distance;   // per GT point: distance to it (0 where unmatched)
+  int64_t matched = 0;
+  double coverage = 0;            // matched / GT points (0 for no GT points)
+  double mean_distance = 0;       // over the matched points
+};
+
+PointMatching match_points(const std::vector<Vec3d>& gt_points, const std::vector<Vec3d>& centres, double radius);
+
+struct Scores3d {
+  SegmentationScores scores;  // over matched GT points (mIoU, wIoU, accuracy)
+  ConfusionMatrix confusion;
+  int64_t gt_points = 0, matched = 0;
+  double coverage = 0, mean_distance = 0;
+};
+
+// gt_labels: per GT point, class index in [0, K) or -1 (not evaluated: such points are left out entirely,
+// from the coverage too); centre_labels: per centre, class index in [0, K).
+Scores3d score_3d(const std::vector<Vec3d>& gt_points, const std::vector<int32_t>& gt_labels,
+                  const std::vector<Vec3d>& centres, const std::vector<int32_t>& centre_labels, int num_classes,
+                  double radius);
+
+}  // namespace cls

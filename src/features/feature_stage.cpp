@@ -1,0 +1,175 @@
+#include "features/feature_stage.h"
+
+#include <ATen/ATen.h>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include <chrono>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/hash.h"
+#include "core/log.h"
+#include "core/progress.h"
+#include "features/city_regions.h"
+#include "features/view_features.h"
+#include "raycast/label_export.h"
+#include "scene/image_loader.h"
+
+namespace cls {
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* mode_name(RegionMode m) { return m == RegionMode::Class ? "class" : "instance"; }
+
+std::string file_hash(const fs::path& p) { return fnv1a64_hex(read_text_file(p)); }
+
+struct ViewJob {
+  const SceneView* view = nullptr;
+  fs::path label_dir, out_dir;
+  std::string stem;
+  nlohmann::json stamp;
+};
+
+cv::Mat read_map(const fs::path& p, int type, int h, int w) {
+  if (!fs::is_regular_file(p)) fail(p.string(), "missing (run `citylangsplat raycast` to make the label maps)");
+  cv::Mat m = cv::imread(p.string(), cv::IMREAD_UNCHANGED);
+  if (m.empty()) fail(p.string(), "cannot be read as an image");
+  if (m.type() != type)
+    fail(p.string(), std::string("must be a ") + (type == CV_16UC1 ? "16-bit" : "8-bit") + " single-channel PNG");
+  if (m.rows != h || m.cols != w)
+    fail(p.string(), "is " + std::to_string(m.cols) + " x " + std::to_string(m.rows) + " but the view's image is " +
+                         std::to_string(w) + " x " + std::to_string(h) + " (raycast with the same --resolution)");
+  return m;
+}
+
+bool cached(const ViewJob& job) {
+  if (!view_features_complete(job.out_dir, job.stem)) return false;
+  try {
+    const auto j = nlohmann::json::parse(read_text_file(job.out_dir / (job.stem + "_gml.json")));
+    return j.value("stamp", nlohmann::json()) == job.stamp;
+  } catch (const std::exception&) {
+    return false;  // unreadable: recompute
+  }
+}
+
+}  // namespace
+
+int run_feature_stage(const Scene& scene, FeatureProvider& provider, const Taxonomy& taxonomy,
+                      const FeatureStageOptions& options) {
+  if (options.alpha < 0 || options.alpha > 1) throw UsageError("features: alpha must be in [0, 1]");
+  if (!fs::is_directory(options.labels_dir))
+    fail(options.labels_dir.string(), "label map directory not found (make it with `citylangsplat raycast`)");
+  if (taxonomy.classes.empty()) throw Error("features: the taxonomy has no classes");
+
+  // What every view's features depend on besides its own inputs.
+  const nlohmann::json common = {{"provider", provider.spec()},
+                                 {"alpha", options.alpha},
+                                 {"region_mode", mode_name(options.region_mode)},
+                                 {"min_region_pixels", options.min_region_pixels},
+                                 {"taxonomy", fnv1a64_hex(taxonomy.legend_json())}};
+
+  // Check every input and find the cached views before computing anything.
+  const std::vector<fs::path> label_dirs = label_map_dirs(scene, options.labels_dir);
+  const std::vector<fs::path> out_paths = label_map_dirs(scene, options.out_dir);
+  std::vector<ViewJob> jobs;
+  for (size_t k = 0; k < scene.views.size(); ++k) {
+    ViewJob job;
+    job.view = &scene.views[k];
+    job.label_dir = label_dirs[k];
+    job.out_dir = out_paths[k].parent_path();
+    job.stem = out_paths[k].filename().string();
+    nlohmann::json labels;
+    for (const char* f : {"level1.png", "level2.png", "level3.png", "coverage.png"}) {
+      const fs::path p = job.label_dir / f;
+      if (!fs::is_regular_file(p))
+        fail(p.string(), "missing: no label maps for view '" + job.view->name + "' (run `citylangsplat raycast`)");
+      labels[f] = file_hash(p);
+    }
+    if (options.region_mode == RegionMode::Instance) {
+      const fs::path p = job.label_dir / "building.png";
+      if (!fs::is_regular_file(p)) fail(p.string(), "missing: instance regions need the building map");
+      labels["building.png"] = file_hash(p);
+    }
+    job.stamp = common;
+    job.stamp["labels"] = labels;
+    job.stamp["image"] = {{"file", file_hash(job.view->image_path)},
+                          {"width", job.view->camera.width},
+                          {"height", job.view->camera.height}};
+    jobs.push_back(std::move(job));
+  }
+  fs::create_directories(options.out_dir);
+  fs::remove(options.out_dir / "features.json");  // its presence marks a finished stage
+
+  std::vector<const ViewJob*> todo;
+  for (const ViewJob& job : jobs)
+    if (options.overwrite || !cached(job)) todo.push_back(&job);
+  log_info(cat("features: ", jobs.size(), " views, ", jobs.size() - todo.size(), " cached, provider ", provider.name(),
+               ", alpha ", options.alpha, ", ", mode_name(options.region_mode), " regions"));
+
+  // f^txt: the text feature of each class's prompt tau_c = prompts[0].
+  at::Tensor class_text;
+  if (!todo.empty()) {
+    std::vector<std::string> prompts;
+    for (const SemanticClass& c : taxonomy.classes) prompts.push_back(c.prompts.empty() ? c.name : c.prompts[0]);
+    class_text = provider.text_features(prompts).to(at::kFloat).contiguous();
+  }
+
+  ImageLoader loader;
+  Progress progress("features", todo.size(), "views");
+  for (const ViewJob* job : todo) {
+    const SceneView& sv = *job->view;
+    FeatureView view;
+    view.name = sv.name;
+    cv::cvtColor(loader.load(sv), view.rgb, cv::COLOR_BGR2RGB);
+    const int h = view.rgb.rows, w = view.rgb.cols;
+    for (int l = 0; l < 3; ++l)
+      view.labels[l] = read_map(job->label_dir / ("level" + std::to_string(l + 1) + ".png"), CV_16UC1, h, w);
+    view.coverage = read_map(job->label_dir / "coverage.png", CV_8UC1, h, w);
+    cv::Mat building;
+    if (options.region_mode == RegionMode::Instance) building = read_map(job->label_dir / "building.png", CV_16UC1, h, w);
+
+    ViewFeatures f;
+    f.height = h;
+    f.width = w;
+    f.stamp = job->stamp;
+    SamSegments sam = provider.sam_segments(view);
+    f.sam_seg = std::move(sam.seg);
+    f.sam_features = sam.features;
+
+    CityRegionSet regions = extract_city_regions(view.labels, view.coverage, building, options.region_mode, taxonomy,
+                                                 options.min_region_pixels, job->label_dir.string());
+    if (regions.masks.empty()) {
+      f.gml_features = at::zeros({0, provider.dim()}, at::kFloat);
+    } else {
+      const at::Tensor gml = provider.region_features(view, regions.masks);
+      std::vector<int64_t> cls_ids;
+      for (const CityRegion& r : regions.regions) cls_ids.push_back(r.class_id);
+      const at::Tensor txt = class_text.index_select(0, at::tensor(cls_ids, at::kLong));
+      f.gml_features = fuse_features(gml, txt, options.alpha);
+    }
+    f.gml_seg = std::move(regions.seg);
+    f.regions = std::move(regions.regions);
+    write_view_features(job->out_dir, job->stem, f);
+    log_verbose(cat(sv.name, ": ", f.sam_features.size(0), " SAM segments, ", f.regions.size(), " CityGML regions"));
+    progress.advance();
+  }
+  progress.finish();
+
+  nlohmann::json views = nlohmann::json::array();
+  for (const ViewJob& job : jobs)
+    views.push_back({{"name", job.view->name},
+                     {"features", fs::relative(job.out_dir / job.stem, options.out_dir).generic_string()}});
+  nlohmann::json record = common;
+  record["provider"] = provider.spec();
+  record["taxonomy"] = nlohmann::json::parse(taxonomy.legend_json());
+  record["dim"] = provider.dim();
+  record["labels_dir"] = fs::absolute(options.labels_dir).string();
+  record["layout"] = "LangSplat: <stem>_s.npy / _f.npy (SAM), <stem>_gml_s.npy / _gml_f.npy / _gml.json (CityGML)";
+  record["views"] = views;
+  write_text_atomic(options.out_dir / "features.json", record.dump(1) + "\n");
+  return static_cast<int>(todo.size());
+}
+
+}  // namespace cls

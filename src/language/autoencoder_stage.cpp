@@ -1,0 +1,122 @@
+#include "language/autoencoder_stage.h"
+
+#include <ATen/ATen.h>
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "core/npy.h"
+#include "core/progress.h"
+#include "models/weights/npy_tensor.h"
+#include "models/weights/weight_file.h"
+
+namespace cls {
+namespace fs = std::filesystem;
+
+namespace {
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+}  // namespace
+
+std::vector<fs::path> find_sam_feature_files(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) fail(dir.string(), "not a directory (expected the features stage's output)");
+  std::vector<fs::path> files;
+  for (auto it = fs::recursive_directory_iterator(dir, ec); !ec && it != fs::recursive_directory_iterator();
+       it.increment(ec)) {
+    if (!it->is_regular_file()) continue;
+    const std::string name = it->path().filename().string();
+    if (ends_with(name, "_f.npy") && !ends_with(name, "_gml_f.npy")) files.push_back(it->path());
+  }
+  if (ec) fail(dir.string(), "cannot list the directory: " + ec.message());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+at::Tensor read_sam_features(const std::vector<fs::path>& files, int input_dim) {
+  std::vector<at::Tensor> parts;
+  for (const fs::path& file : files) {
+    const NpyArray a = read_npy(file);  // names the file on a malformed header or short data
+    if (a.shape.size() != 2 || a.shape[1] != input_dim)
+      fail(file.string(), cat("expected an N x ", input_dim, " array of CLIP features, got shape ",
+                              shape_string(a.shape)));
+    const NpyType t = a.type();
+    if (t != NpyType::F16 && t != NpyType::F32 && t != NpyType::F64)
+      fail(file.string(), "expected floating-point CLIP features, got dtype " + a.dtype);
+    at::Tensor f = to_tensor(a).to(at::kFloat);
+    if (!at::isfinite(f).all().item<bool>()) {
+      const int64_t row = at::nonzero(~at::isfinite(f).all(1))[0][0].item<int64_t>();
+      fail(file.string(), cat("row ", row, " of the CLIP features contains NaN or infinite values"));
+    }
+    if (f.size(0) > 0) parts.push_back(f);
+  }
+  if (parts.empty()) return at::empty({0, input_dim}, at::kFloat);
+  return at::cat(parts, 0);
+}
+
+AutoencoderReport run_autoencoder_stage(const AutoencoderStageOptions& o) {
+  const std::vector<fs::path> files = find_sam_feature_files(o.features_dir);
+  if (files.empty())
+    fail(o.features_dir.string(),
+         "no SAM feature files (*_f.npy; *_gml_f.npy are not used for training): run the features stage first");
+  const at::Tensor features = read_sam_features(files, o.config.input_dim);
+  if (features.size(0) == 0) fail(o.features_dir.string(), "the SAM feature files hold no rows");
+  log_info(cat("autoencoder: ", features.size(0), " SAM features from ", files.size(), " files, ",
+               o.config.input_dim, " -> ", o.config.latent_dim()));
+
+  Autoencoder ae(o.config, o.train.seed);
+  AutoencoderTrainOptions train = o.train;
+  AutoencoderReport report;
+  {
+    Progress progress("autoencoder", static_cast<uint64_t>(std::max(train.epochs, 0)), "epochs");
+    const int every = std::max(1, train.epochs / 10);
+    train.on_epoch = [&](int epoch, double loss) {
+      if (o.train.on_epoch) o.train.on_epoch(epoch, loss);
+      const std::string line = cat("autoencoder: epoch ", epoch, "/", train.epochs, " loss ", loss);
+      if (epoch % every == 0 || epoch == train.epochs)
+        log_info(line);
+      else
+        log_verbose(line);
+      progress.advance();
+    };
+    report = ae.train(features, train);
+    progress.finish();
+  }
+
+  if (o.out.has_parent_path()) fs::create_directories(o.out.parent_path());
+  ae.save(o.out.string());
+  const auto finite_or_null = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
+  const nlohmann::json j = {
+      {"samples", features.size(0)},
+      {"train_samples", report.train_samples},
+      {"holdout_samples", report.holdout_samples},
+      {"files", files.size()},
+      {"train_loss", finite_or_null(report.train_loss)},
+      {"holdout_cosine", finite_or_null(report.holdout_cosine)},
+      {"seconds", report.seconds},
+      {"epochs", train.epochs},
+      {"batch_size", train.batch_size},
+      {"lr", train.lr},
+      {"lambda_cos", train.lambda_cos},
+      {"holdout_fraction", train.holdout_fraction},
+      {"seed", train.seed},
+      {"config",
+       {{"input_dim", o.config.input_dim},
+        {"encoder_dims", o.config.encoder_dims},
+        {"decoder_dims", o.config.decoder_dims},
+        {"normalize_latent", o.config.normalize_latent},
+        {"normalize_output", o.config.normalize_output}}}};
+  write_text_atomic(o.out.string() + ".json", j.dump(2) + "\n");
+  log_info(cat("autoencoder: held-out cosine ", report.holdout_cosine, " (", report.holdout_samples,
+               " features), wrote ", o.out.string()));
+  return report;
+}
+
+}  // namespace cls

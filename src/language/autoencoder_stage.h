@@ -1,0 +1,36 @@
+#pragma once
+// The autoencoder stage (`citylangsplat autoencoder`, paper 3.2): collect the SAM CLIP features of a
+// features directory (every <stem>_f.npy, never the CityGML <stem>_gml_f.npy: the autoencoder is
+// trained on SAM features only), train, write the model and a JSON report.
+#include <ATen/core/Tensor.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "language/autoencoder.h"
+
+namespace cls {
+
+// Every *_f.npy under `dir` (recursively) that is not a *_gml_f.npy, sorted by path. cls::Error when
+// `dir` is not a directory.
+std::vector<std::filesystem::path> find_sam_feature_files(const std::filesystem::path& dir);
+
+// The rows of all files stacked (float32, sum N x input_dim). cls::Error naming the file for an
+// unreadable file, a shape other than N x input_dim, a non-float dtype or NaN/infinite values.
+at::Tensor read_sam_features(const std::vector<std::filesystem::path>& files, int input_dim);
+
+struct AutoencoderStageOptions {
+  std::filesystem::path features_dir;
+  std::filesystem::path out;  // the model (safetensors); the report goes to <out>.json
+  AutoencoderConfig config;
+  AutoencoderTrainOptions train;  // train.seed also seeds the initialisation
+};
+
+// Reads, trains (progress per epoch), writes `out` atomically and then `out`.json:
+// {"samples", "train_samples", "holdout_samples", "files", "train_loss", "holdout_cosine" (null when
+// nothing was held out), "seconds", "epochs", "batch_size", "lr", "lambda_cos", "holdout_fraction",
+// "seed", "config"}. cls::Error when there are no feature files or no feature rows.
+AutoencoderReport run_autoencoder_stage(const AutoencoderStageOptions& options);
+
+}  // namespace cls

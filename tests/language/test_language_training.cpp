@@ -1,0 +1,316 @@
+// Language training (paper 3.3) on a hand-made scene: a wall of Gaussians at depth 5 in front of
+// three 16 x 12 cameras, hand-made per-view features (two SAM segments in the lower half, two
+// CityGML regions in the upper half, defined in world coordinates so that every view agrees) and a
+// tiny untrained autoencoder. Checks that rendered latents approach the encoded targets, that the
+// baseline ignores the CityGML targets, and that a resumed run equals an uninterrupted one.
+#include <ATen/ATen.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "core/interrupt.h"
+#include "features/view_features.h"
+#include "language/language_loss.h"
+#include "language/language_model.h"
+#include "language/language_training.h"
+#include "models/temp_dir.h"
+#include "scene/scene.h"
+#include "splat/ply_gaussians.h"
+#include "splat/rasterize.h"
+
+namespace cls {
+namespace {
+
+namespace fs = std::filesystem;
+using test::TempDir;
+
+constexpr int kW = 16, kH = 12, kDim = 8;
+constexpr double kDepth = 5, kF = 16;
+const double kCentres[3] = {-0.4, 0.0, 0.4};
+
+AutoencoderConfig tiny_config() {
+  AutoencoderConfig c;
+  c.input_dim = kDim;
+  c.encoder_dims = {6, 4};
+  c.decoder_dims = {6, kDim};
+  return c;
+}
+
+double world_x(int view, int x) { return (x + 0.5 - kW / 2.0) / kF * kDepth + kCentres[view]; }
+double world_y(int y) { return (y + 0.5 - kH / 2.0) / kF * kDepth; }
+
+at::Tensor unit_rows(int64_t n, uint64_t seed) {
+  at::manual_seed(seed);
+  const at::Tensor f = at::randn({n, kDim});
+  return f / f.norm(2, {1}, true);
+}
+
+// SAM: lower half (world y > 0), segment 2k left of x = 0 and 2k + 1 right of it at seg level k;
+// CityGML: upper half, region 2(l-1) left and 2(l-1) + 1 right at level l. M = upper half.
+ViewFeatures view_features(int view, const at::Tensor& sam_f, const at::Tensor& gml_f) {
+  ViewFeatures f;
+  f.height = kH, f.width = kW;
+  f.sam_seg.assign(4 * kH * kW, -1);
+  f.gml_seg.assign(3 * kH * kW, -1);
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x) {
+      const int right = world_x(view, x) > 0 ? 1 : 0;
+      for (int k = 0; k < 4; ++k)
+        if (world_y(y) > 0) f.sam_seg[(k * kH + y) * kW + x] = 2 * k + right;
+      for (int l = 0; l < 3; ++l)
+        if (world_y(y) < 0) f.gml_seg[(l * kH + y) * kW + x] = 2 * l + right;
+    }
+  f.sam_features = sam_f;
+  f.gml_features = gml_f;
+  for (int r = 0; r < 6; ++r) {
+    CityRegion c;
+    c.level = r / 2 + 1;
+    c.class_id = r % 2;
+    c.class_name = r % 2 ? "door" : "wall";
+    c.pixels = kH * kW / 4;
+    f.regions.push_back(c);
+  }
+  return f;
+}
+
+struct TinyScene {
+  TempDir dir;
+  Scene scene;
+  LanguageTrainOptions options;
+  at::Tensor sam_f = unit_rows(8, 11), gml_f = unit_rows(6, 12);
+
+  TinyScene() {
+    // A wall of 16 x 11 Gaussians at z = 5 covering every view.
+    const int nx = 16, ny = 11;
+    GaussianModel g = make_gaussians(nx * ny, 0, 0);
+    auto means = g.means.accessor<float, 2>();
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        means[j * nx + i][0] = float(-3.0 + 0.4 * i);
+        means[j * nx + i][1] = float(-2.0 + 0.4 * j);
+        means[j * nx + i][2] = float(kDepth);
+      }
+    g.log_scales.fill_(std::log(0.22));
+    g.opacity_logits.fill_(3.0);
+    options.geometry_ply = (dir.path / "geometry.ply").string();
+    write_gaussians_ply(options.geometry_ply, g);
+    options.autoencoder_path = (dir.path / "ae.safetensors").string();
+    Autoencoder(tiny_config(), 5).save(options.autoencoder_path);
+    options.features_dir = (dir.path / "features").string();
+    write_features();
+    std::ofstream(dir.path / "features" / "features.json") << R"({"provider": {"provider": "hand-made"}})";
+    for (int v = 0; v < 3; ++v) {
+      SceneView sv;
+      sv.name = "view" + std::to_string(v) + ".png";
+      sv.camera = PinholeCamera{kF, kF, kW / 2.0, kH / 2.0, kW, kH};
+      sv.pose.t = Vec3d{-kCentres[v], 0, 0};
+      scene.views.push_back(sv);
+    }
+    options.out_dir = (dir.path / "model").string();
+    options.iterations = 150;
+    options.lr = 0.02;
+    options.checkpoint_every = 0;
+    options.device = "cpu";
+  }
+  // The same cameras as a COLMAP text model (scene/sparse/0), for the CLI.
+  fs::path write_colmap() const {
+    const fs::path root = dir.path / "scene";
+    fs::create_directories(root / "sparse" / "0");
+    std::ofstream(root / "sparse" / "0" / "cameras.txt") << "1 PINHOLE " << kW << " " << kH << " " << kF << " " << kF
+                                                           << " " << kW / 2.0 << " " << kH / 2.0 << "\n";
+    std::ofstream images(root / "sparse" / "0" / "images.txt");
+    for (int v = 0; v < 3; ++v)
+      images << v + 1 << " 1 0 0 0 " << -kCentres[v] << " 0 0 1 view" << v << ".png\n\n";
+    std::ofstream(root / "sparse" / "0" / "points3D.txt") << "1 0 0 5 128 128 128 0.5\n";
+    return root;
+  }
+  void write_features() {
+    for (int v = 0; v < 3; ++v)
+      write_view_features(options.features_dir, "view" + std::to_string(v), view_features(v, sam_f, gml_f));
+  }
+};
+
+// Mean |rendered - target| over the target's valid pixels of every view at `level`, and the same
+// for a zero rendering (the initial state).
+std::pair<double, double> target_error(const TinyScene& t, const LanguageModel& m, int level, bool gml) {
+  const at::Tensor means = m.gaussians.means, scales = m.gaussians.scales(), quats = m.gaussians.quats,
+                   opac = m.gaussians.opacities();
+  double err = 0, base = 0, count = 0;
+  for (int v = 0; v < 3; ++v) {
+    const ViewFeatures f = view_features(v, t.sam_f, t.gml_f);
+    const at::Tensor table = m.autoencoder.encode(gml ? t.gml_f : t.sam_f);
+    const LatentTarget target =
+        gml ? gather_latent_target(f.gml_seg.data() + (level - 1) * kH * kW, kH, kW, table)
+            : gather_latent_target(f.sam_seg.data() + level * kH * kW, kH, kW, table);
+    RasterizeSettings s;
+    s.camera = t.scene.views[v].camera;
+    s.pose = t.scene.views[v].pose;
+    const at::Tensor img = rasterize_features(means, scales, quats, opac, m.latents[level - 1], {}, s).image;
+    // Pixels next to the segment boundary (x = 0) blend both sides: leave them out.
+    at::Tensor w = target.valid.clone();
+    for (int x = 0; x < kW; ++x)
+      if (std::abs(world_x(v, x)) < 0.5) w.select(1, x).zero_();
+    err += ((img - target.latents).abs().sum(-1) * w).sum().item<double>();
+    base += (target.latents.abs().sum(-1) * w).sum().item<double>();
+    count += w.sum().item<double>();
+  }
+  return {err / count, base / count};
+}
+
+TEST(LanguageTraining, RenderedLatentsApproachTheTargets) {
+  TinyScene t;
+  const LanguageTrainReport r = train_language(t.scene, t.options);
+  EXPECT_FALSE(r.interrupted);
+  EXPECT_EQ(r.iterations, 3 * 150);
+  const LanguageModel m = load_language_model(t.options.out_dir);
+  EXPECT_EQ(m.info["method"], "citylangsplat");
+  EXPECT_EQ(m.info["provider"]["provider"], "hand-made");
+  EXPECT_EQ(m.info["iterations"], 150);
+  EXPECT_EQ(m.info["lambda_citygml"], 0.5);
+  for (int level = 1; level <= 3; ++level) {
+    const auto [sam_err, sam_base] = target_error(t, m, level, false);
+    const auto [gml_err, gml_base] = target_error(t, m, level, true);
+    EXPECT_LT(sam_err, 0.05 * sam_base) << "level " << level << " SAM half";
+    EXPECT_LT(gml_err, 0.05 * gml_base) << "level " << level << " CityGML half";
+  }
+  // The geometry is frozen: the model's PLY holds the input geometry unchanged.
+  const GaussianModel in = read_gaussians_ply(t.options.geometry_ply);
+  EXPECT_TRUE(at::equal(m.gaussians.means, in.means));
+  EXPECT_TRUE(at::equal(m.gaussians.opacity_logits, in.opacity_logits));
+}
+
+TEST(LanguageTraining, BaselineIgnoresCityGmlTargets) {
+  TinyScene t;
+  t.options.baseline = true;
+  t.options.iterations = 60;
+  train_language(t.scene, t.options);
+  const LanguageModel a = load_language_model(t.options.out_dir);
+  EXPECT_EQ(a.info["method"], "langsplat");
+  // Other CityGML features: the baseline trains to the same latents, bit for bit.
+  t.gml_f = unit_rows(6, 99);
+  t.write_features();
+  t.options.out_dir = (t.dir.path / "model_b").string();
+  train_language(t.scene, t.options);
+  const LanguageModel b = load_language_model(t.options.out_dir);
+  for (int l = 0; l < 3; ++l) EXPECT_TRUE(at::equal(a.latents[l], b.latents[l])) << l;
+  // The SAM half is learnt, the CityGML half (no SAM segment there) is not.
+  const auto [sam_err, sam_base] = target_error(t, a, 1, false);
+  const auto [gml_err, gml_base] = target_error(t, a, 1, true);
+  EXPECT_LT(sam_err, 0.05 * sam_base);
+  EXPECT_GT(gml_err, 0.5 * gml_base);
+}
+
+TEST(LanguageTraining, ResumeEqualsUninterruptedRun) {
+  TinyScene t;
+  t.options.iterations = 20;
+  train_language(t.scene, t.options);
+  const LanguageModel full = load_language_model(t.options.out_dir);
+
+  t.options.out_dir = (t.dir.path / "resumed").string();
+  t.options.stop_after = 33;  // level 2, iteration 13 (mid-epoch of the 3-view order)
+  t.options.checkpoint_every = 7;
+  const LanguageTrainReport stopped = train_language(t.scene, t.options);
+  EXPECT_TRUE(stopped.interrupted);
+  EXPECT_EQ(stopped.iterations, 33);
+  EXPECT_FALSE(fs::exists(fs::path(t.options.out_dir) / "model.json"));
+  t.options.stop_after = 0;
+  t.options.resume = true;
+  const LanguageTrainReport rest = train_language(t.scene, t.options);
+  EXPECT_FALSE(rest.interrupted);
+  EXPECT_EQ(rest.iterations, 60 - 33);
+  const LanguageModel resumed = load_language_model(t.options.out_dir);
+  for (int l = 0; l < 3; ++l) EXPECT_TRUE(at::equal(full.latents[l], resumed.latents[l])) << "level " << l + 1;
+
+  // An interrupt (the signal flag) stops at the next iteration with a checkpoint.
+  t.options.out_dir = (t.dir.path / "signalled").string();
+  t.options.resume = false;
+  request_interrupt();
+  const LanguageTrainReport sig = train_language(t.scene, t.options);
+  reset_interrupt();
+  EXPECT_TRUE(sig.interrupted);
+  EXPECT_EQ(sig.iterations, 1);
+  EXPECT_TRUE(fs::exists(fs::path(t.options.out_dir) / "checkpoints" / "language.safetensors"));
+
+  // Resuming with other settings is refused, naming the checkpoint.
+  t.options.resume = true;
+  t.options.lambda_citygml = 0.25;
+  try {
+    train_language(t.scene, t.options);
+    ADD_FAILURE() << "resume with another lambda was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("language.safetensors"), std::string::npos) << e.what();
+  }
+}
+
+TEST(LanguageTraining, MismatchedFeatureSizeIsAnError) {
+  TinyScene t;
+  t.scene.views[1].camera.width = 20;
+  try {
+    train_language(t.scene, t.options);
+    ADD_FAILURE() << "accepted features of another size";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("view1_s.npy"), std::string::npos) << e.what();
+  }
+}
+
+// Runs a shell script; returns the exit status and the combined output.
+int run_shell(const std::string& script, std::string* output) {
+  const std::string cmd = "(" + script + ") 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return -1;
+  char buf[4096];
+  output->clear();
+  while (size_t n = fread(buf, 1, sizeof buf, pipe)) output->append(buf, n);
+  const int status = pclose(pipe);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+int run_cli(const std::string& arguments, std::string* output) {
+  return run_shell(std::string(CLS_BINARY) + " " + arguments, output);
+}
+
+TEST(LanguageTraining, CommandLineTrainsAndStopsOnSigint) {
+  TinyScene t;
+  const fs::path scene = t.write_colmap();
+  const std::string common = "train-language --scene " + scene.string() + " --model " + t.options.geometry_ply +
+                             " --features " + t.options.features_dir + " --autoencoder " + t.options.autoencoder_path +
+                             " --device cpu --lr 0.02";
+  std::string out;
+  // The reference: 20 iterations per level in one go.
+  ASSERT_EQ(run_cli(common + " --iterations 20 --out " + (t.dir.path / "cli_full").string(), &out), 0) << out;
+  const LanguageModel full = load_language_model((t.dir.path / "cli_full").string());
+  EXPECT_EQ(full.info["method"], "citylangsplat");
+
+  // SIGINT after the first checkpoint of a long run: exit 130, a checkpoint and a hint how to resume.
+  const std::string long_out = (t.dir.path / "cli_long").string();
+  const std::string checkpoint = long_out + "/checkpoints/language.safetensors";
+  ASSERT_EQ(run_shell(std::string(CLS_BINARY) + " " + common + " --iterations 100000000 --checkpoint-every 1 --out " +
+                          long_out + " & pid=$!; i=0; " + "while [ ! -e " + checkpoint +
+                          " ] && [ $i -lt 1200 ]; do sleep 0.05; i=$((i+1)); done; kill -INT $pid; wait $pid",
+                      &out),
+            130)
+      << out;
+  EXPECT_NE(out.find("--resume"), std::string::npos) << out;
+  EXPECT_TRUE(fs::exists(checkpoint));
+  EXPECT_FALSE(fs::exists(long_out + "/model.json"));
+  // Resuming it with another lambda is refused, naming the checkpoint.
+  EXPECT_EQ(run_cli(common + " --iterations 100000000 --lambda-citygml 0.3 --resume --out " + long_out, &out), 1) << out;
+  EXPECT_NE(out.find("language.safetensors"), std::string::npos) << out;
+
+  // Baseline and bad usage.
+  ASSERT_EQ(run_cli(common + " --iterations 2 --baseline langsplat --out " + (t.dir.path / "cli_base").string(), &out), 0)
+      << out;
+  EXPECT_EQ(load_language_model((t.dir.path / "cli_base").string()).info["method"], "langsplat");
+  EXPECT_EQ(run_cli(common + " --baseline other --out " + (t.dir.path / "x").string(), &out), 2) << out;
+  EXPECT_EQ(run_cli("train-language --scene " + scene.string(), &out), 2) << out;
+}
+
+}  // namespace
+}  // namespace cls
