@@ -13,4 +13,5 @@ int cmd_train_language(int argc, char** argv);  // language field training (pape
 int cmd_autoencoder(int argc, char** argv); // train the shared autoencoder on SAM features
 int cmd_query(int argc, char** argv);       // open-vocabulary text queries on a language model
 int cmd_evaluate(int argc, char** argv);    // the paper's evaluation (section 4)
+int cmd_train_rgb(int argc, char** argv);   // photometric 3DGS training
 }  // namespace cls

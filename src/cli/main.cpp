@@ -30,6 +30,7 @@ const Command kCommands[] = {
     {"autoencoder", cls::cmd_autoencoder, "train the shared autoencoder (512 -> 128) on SAM features"},
     {"query", cls::cmd_query, "query a language model with text: Gaussian scores, selections, relevance maps"},
     {"evaluate", cls::cmd_evaluate, "evaluate language models against a labelled point cloud (2D and 3D)"},
+    {"train-rgb", cls::cmd_train_rgb, "train 3D Gaussians photometrically (3DGS) on a scene"},
 };
 
 void usage(FILE* out) {

@@ -37,6 +37,11 @@ void Progress::finish() {
   finished_ = true;
 }
 
+void Progress::set_detail(std::string detail) {
+  std::lock_guard<std::mutex> lock(detail_mutex_);
+  detail_ = std::move(detail);
+}
+
 std::string Progress::format_duration(double seconds) {
   if (!std::isfinite(seconds) || seconds < 0) return "--:--";
   auto s = static_cast<long long>(seconds + 0.5);
@@ -63,7 +68,8 @@ std::string Progress::status_line(uint64_t done, double elapsed_s) const {
                   static_cast<unsigned long long>(done), unit_.c_str(), rate, unit_.c_str(),
                   format_duration(elapsed_s).c_str());
   }
-  return buf;
+  std::lock_guard<std::mutex> lock(detail_mutex_);
+  return detail_.empty() ? std::string(buf) : std::string(buf) + " " + detail_;
 }
 
 void Progress::maybe_print(bool final) {

@@ -20,6 +20,8 @@ class Progress {
 
   void advance(uint64_t n = 1);
   void finish();  // prints the final line once; called by the destructor if not called before
+  // Free text shown after the counters (e.g. "loss 0.041 PSNR 27.1 dB"); thread-safe.
+  void set_detail(std::string detail);
 
   uint64_t done() const { return done_.load(); }
 
@@ -39,6 +41,8 @@ class Progress {
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_print_;
   std::mutex print_mutex_;
+  mutable std::mutex detail_mutex_;
+  std::string detail_;
   bool tty_;
   bool finished_ = false;
 };

@@ -12,13 +12,15 @@
 //    region there (docs/conventions.md: coverage is 255 where any level has a label, and the
 //    features stage writes -1 wherever M = 0).
 // Only the per-segment latents (the encoder applied once per view) and the seg maps are kept in
-// memory; dense H x W x L targets are gathered per iteration for the one view being trained.
+// memory. On the CPU the loss runs straight from the seg maps (language_loss_from_seg); on a GPU
+// dense H x W x L targets are gathered per iteration for the one view being trained.
 #include "language/language_training.h"
 
 #include <ATen/ATen.h>
 
 #include <array>
 #include <chrono>
+#include <cstdio>
 #include <map>
 #include <filesystem>
 #include <random>
@@ -187,13 +189,14 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
   Autoencoder autoencoder = Autoencoder::load(o.autoencoder_path);
   const int latent = autoencoder.config().latent_dim();
 
-  nlohmann::json provider = nullptr;
+  nlohmann::json provider = nullptr, taxonomy = nullptr;
   const fs::path features_json = fs::path(o.features_dir) / "features.json";
   if (fs::exists(features_json)) {
     try {
       const nlohmann::json fj = nlohmann::json::parse(read_text_file(features_json));
       if (fj.contains("provider")) provider = fj["provider"];
       else if (fj.contains("spec")) provider = fj["spec"];
+      if (fj.contains("taxonomy")) taxonomy = fj["taxonomy"];  // the class legend, for query / evaluate
     } catch (const nlohmann::json::exception& e) {
       fail(features_json.string(), std::string("not valid JSON: ") + e.what());
     }
@@ -275,14 +278,19 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
       const at::Tensor rendered =
           rasterize_features(means, scales, quats, opacities, adam.group(adam_name(level)).param, at::Tensor(), settings).image;
       const size_t hw = size_t(v.height) * v.width;
-      LanguageLossInputs in;
-      in.rendered = rendered;
-      in.sam = gather_latent_target(v.sam_seg.data() + level * hw, v.height, v.width, v.sam_latents, "SAM seg map");
-      if (!o.baseline)
-        in.gml = gather_latent_target(v.gml_seg.data() + (level - 1) * hw, v.height, v.width, v.gml_latents,
-                                      "CityGML seg map");
-      in.coverage = v.coverage;
-      const LanguageLoss loss = language_loss(in, weights);
+      const int32_t* sam_ids = v.sam_seg.data() + level * hw;  // seg map l of [default, s, m, l]
+      const int32_t* gml_ids = v.gml_seg.data() + (level - 1) * hw;
+      LanguageLoss loss;
+      if (device.is_cpu()) {  // one pass, no dense targets
+        loss = language_loss_from_seg(rendered, {sam_ids, v.sam_latents}, {gml_ids, v.gml_latents}, v.coverage, weights);
+      } else {
+        LanguageLossInputs in;
+        in.rendered = rendered;
+        in.sam = gather_latent_target(sam_ids, v.height, v.width, v.sam_latents, "SAM seg map");
+        if (!o.baseline) in.gml = gather_latent_target(gml_ids, v.height, v.width, v.gml_latents, "CityGML seg map");
+        in.coverage = v.coverage;
+        loss = language_loss(in, weights);
+      }
       loss.total.backward();
       adam.step();
       adam.zero_grad();
@@ -292,6 +300,11 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
       ++s.iteration;
       ++s.total;
       ++report.iterations;
+      if (s.iteration % 10 == 0 || s.iteration == o.iterations) {
+        char detail[64];
+        std::snprintf(detail, sizeof detail, "loss %.4g", s.ema_loss);
+        progress.set_detail(detail);
+      }
       progress.advance();
       if (s.iteration % log_every == 0 || s.iteration == o.iterations)
         log_verbose(cat("language level ", level, " iteration ", s.iteration, "/", o.iterations, " loss ", s.ema_loss,
@@ -326,6 +339,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
                          {"lambda_citygml", o.baseline ? 0.0 : o.lambda_citygml},
                          {"features", fs::absolute(o.features_dir).string()},
                          {"provider", provider},
+                         {"taxonomy", taxonomy},
                          {"geometry_source", fs::absolute(o.geometry_ply).string()},
                          {"autoencoder_source", fs::absolute(o.autoencoder_path).string()},
                          {"views", nviews},

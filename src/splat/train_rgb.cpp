@@ -1,0 +1,458 @@
+#include "splat/train_rgb.h"
+
+#include <torch/torch.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <numeric>
+#include <random>
+#include <sstream>
+
+#include <opencv2/imgproc.hpp>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/interrupt.h"
+#include "core/log.h"
+#include "core/progress.h"
+#include "scene/image_loader.h"
+#include "splat/adam.h"
+#include "splat/checkpoint.h"
+#include "splat/densify.h"
+#include "splat/ply_gaussians.h"
+#include "splat/rasterize.h"
+#include "splat/ssim.h"
+
+namespace cls {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kShC0 = 0.28209479177387814;  // Y_0^0, 3DGS RGB2SH
+constexpr int kCheckpointVersion = 1;
+
+struct View {
+  const SceneView* view = nullptr;
+  at::Tensor image;  // H x W x 3 float RGB in [0, 1]
+};
+
+at::Tensor to_rgb_tensor(const cv::Mat& bgr) {
+  cv::Mat rgb;
+  cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
+  at::Tensor t = torch::from_blob(rgb.data, {rgb.rows, rgb.cols, 3}, torch::kUInt8).clone();
+  return t.to(torch::kFloat32).div_(255.0f);
+}
+
+// getNerfppNorm: 1.1 x the largest distance of a camera centre from the centres' mean.
+double scene_extent(const std::vector<View>& views) {
+  Vec3d mean{0, 0, 0};
+  for (const View& v : views) mean = mean + v.view->pose.center();
+  mean = (1.0 / double(views.size())) * mean;
+  double diagonal = 0;
+  for (const View& v : views) diagonal = std::max(diagonal, norm(v.view->pose.center() - mean));
+  return 1.1 * diagonal;
+}
+
+// Mean squared distance to the 3 nearest other points (simple-knn's distCUDA2), clamped at 1e-7.
+at::Tensor mean_knn_sq_distance(const at::Tensor& points) {
+  const int64_t n = points.size(0);
+  const int64_t k = std::min<int64_t>(3, n - 1);
+  if (k <= 0) return torch::ones({n});
+  at::Tensor out = torch::empty({n});
+  constexpr int64_t kChunk = 1024;
+  for (int64_t start = 0; start < n; start += kChunk) {
+    const int64_t end = std::min(n, start + kChunk);
+    at::Tensor d2 = torch::cdist(points.slice(0, start, end), points).pow(2);
+    // Exclude each point itself (not its duplicates, which count as neighbours at distance 0).
+    d2.index_put_({torch::arange(end - start), torch::arange(start, end)}, INFINITY);
+    const at::Tensor nearest = std::get<0>(d2.topk(k, 1, /*largest=*/false));
+    out.slice(0, start, end).copy_(nearest.mean(1));
+  }
+  return out.clamp_min(1e-7);
+}
+
+// create_from_pcd: positions and colours of the SfM points, isotropic scales from the neighbours,
+// identity rotations, opacity 0.1.
+GaussianModel init_from_points(const std::vector<SparsePoint>& points, int sh_degree) {
+  const int64_t n = int64_t(points.size());
+  GaussianModel g = make_gaussians(n, sh_degree);
+  auto means = g.means.accessor<float, 2>();
+  auto dc = g.sh_dc.accessor<float, 3>();
+  for (int64_t i = 0; i < n; ++i) {
+    const SparsePoint& p = points[size_t(i)];
+    means[i][0] = float(p.xyz.x);
+    means[i][1] = float(p.xyz.y);
+    means[i][2] = float(p.xyz.z);
+    for (int c = 0; c < 3; ++c) dc[i][0][c] = float((p.rgb[size_t(c)] / 255.0 - 0.5) / kShC0);
+  }
+  const at::Tensor scale = mean_knn_sq_distance(g.means.to(torch::kFloat64)).sqrt().log().to(torch::kFloat32);
+  g.log_scales = scale.unsqueeze(1).repeat({1, 3}).contiguous();
+  g.opacity_logits.fill_(std::log(0.1 / 0.9));  // inverse_sigmoid(0.1)
+  return g;
+}
+
+// get_expon_lr_func without delay: log-linear from init to final over max_steps.
+double exponential_lr(int step, double lr_init, double lr_final, int max_steps) {
+  if (lr_init == 0 && lr_final == 0) return 0;
+  const double t = max_steps > 0 ? std::clamp(double(step) / max_steps, 0.0, 1.0) : 1.0;
+  return std::exp(std::log(lr_init) * (1 - t) + std::log(lr_final) * t);
+}
+
+double psnr_of(const at::Tensor& image, const at::Tensor& gt) {
+  const double mse = (image - gt).pow(2).mean().item<double>();
+  return 20 * std::log10(1.0 / std::sqrt(std::max(mse, 1e-20)));
+}
+
+const char* const kGroups[] = {"means", "log_scales", "quats", "opacity_logits", "sh_dc", "sh_rest"};
+
+nlohmann::json options_json(const RgbTrainOptions& o) {
+  return {{"iterations", o.iterations},
+          {"sh_degree", o.sh_degree},
+          {"position_lr_init", o.position_lr_init},
+          {"position_lr_final", o.position_lr_final},
+          {"feature_lr", o.feature_lr},
+          {"opacity_lr", o.opacity_lr},
+          {"scaling_lr", o.scaling_lr},
+          {"rotation_lr", o.rotation_lr},
+          {"lambda_dssim", o.lambda_dssim},
+          {"densify_from", o.densify_from},
+          {"densify_until", o.densify_until},
+          {"densify_every", o.densify_every},
+          {"densify_grad_threshold", o.densify_grad_threshold},
+          {"percent_dense", o.percent_dense},
+          {"opacity_reset_every", o.opacity_reset_every},
+          {"sh_increase_every", o.sh_increase_every},
+          {"max_gaussians", o.max_gaussians},
+          {"random_background", o.random_background},
+          {"white_background", o.white_background},
+          {"test_every", o.test_every},
+          {"checkpoint_every", o.checkpoint_every},
+          {"seed", o.seed}};
+}
+
+// Everything a resumed run needs to continue exactly where the checkpoint was taken.
+struct TrainState {
+  int iteration = 0;  // completed iterations
+  int active_sh_degree = 0;
+  std::mt19937_64 rng;
+  std::vector<int> view_stack;  // training views not yet used in this epoch (3DGS viewpoint_stack)
+  double ema_loss = 0;
+  double seconds = 0;  // training time of earlier sessions
+};
+
+std::string checkpoint_path(const std::string& out_dir) {
+  return (fs::path(out_dir) / "checkpoints" / "checkpoint.safetensors").string();
+}
+
+void save_checkpoint(const std::string& path, const Adam& adam, const DensifyStats& stats, const TrainState& s,
+                     const RgbTrainOptions& options) {
+  Checkpoint c;
+  for (const auto& g : adam.groups()) c.tensors["param." + g.name] = g.param.detach();
+  for (const auto& [name, t] : adam.state_tensors()) c.tensors[name] = t;
+  c.tensors["stats.grad_accum"] = stats.grad_accum;
+  c.tensors["stats.count"] = stats.count;
+  c.tensors["stats.max_radii"] = stats.max_radii;
+  std::ostringstream rng;
+  rng << s.rng;
+  c.info = {{"format", "citylangsplat-rgb-checkpoint"},
+            {"version", kCheckpointVersion},
+            {"iteration", s.iteration},
+            {"active_sh_degree", s.active_sh_degree},
+            {"rng", rng.str()},
+            {"view_stack", s.view_stack},
+            {"ema_loss", s.ema_loss},
+            {"seconds", s.seconds},
+            {"adam", adam.state_scalars()},
+            {"options", options_json(options)}};
+  write_checkpoint(path, c);
+}
+
+void load_checkpoint(const std::string& path, Adam& adam, DensifyStats& stats, TrainState& s) {
+  const Checkpoint c = read_checkpoint(path);
+  if (c.info.value("format", "") != "citylangsplat-rgb-checkpoint")
+    fail(path, "not a photometric training checkpoint");
+  auto tensor = [&](const std::string& name) -> at::Tensor {
+    auto it = c.tensors.find(name);
+    if (it == c.tensors.end()) fail(path, "no tensor '" + name + "'");
+    return it->second;
+  };
+  try {
+    int64_t n = -1;
+    for (const char* name : kGroups) {
+      const at::Tensor p = tensor(std::string("param.") + name);
+      AdamGroup& g = adam.group(name);
+      if (p.dim() != g.param.dim() || p.sizes().slice(1) != g.param.sizes().slice(1) || p.scalar_type() != torch::kFloat)
+        fail(path, std::string("tensor 'param.") + name + "' has the wrong shape or type");
+      if (n >= 0 && p.size(0) != n) fail(path, std::string("tensor 'param.") + name + "' has a different row count");
+      n = p.size(0);
+      g.param = p.clone().set_requires_grad(true);
+    }
+    adam.restore(c.tensors, c.info.at("adam").get<std::map<std::string, double>>(), path);
+    stats.grad_accum = tensor("stats.grad_accum").clone();
+    stats.count = tensor("stats.count").clone();
+    stats.max_radii = tensor("stats.max_radii").clone();
+    if (stats.size() != n || stats.count.size(0) != n || stats.max_radii.size(0) != n)
+      fail(path, "densification statistics do not match the Gaussian count");
+    s.iteration = c.info.at("iteration").get<int>();
+    s.active_sh_degree = c.info.at("active_sh_degree").get<int>();
+    std::istringstream rng(c.info.at("rng").get<std::string>());
+    rng >> s.rng;
+    if (rng.fail()) fail(path, "unreadable random generator state");
+    s.view_stack = c.info.at("view_stack").get<std::vector<int>>();
+    s.ema_loss = c.info.at("ema_loss").get<double>();
+    s.seconds = c.info.at("seconds").get<double>();
+  } catch (const nlohmann::json::exception& e) {
+    fail(path, std::string("checkpoint metadata incomplete: ") + e.what());
+  }
+}
+
+at::Tensor background_for(const RgbTrainOptions& o) {
+  return torch::full({3}, o.white_background ? 1.0f : 0.0f);
+}
+
+RasterizeSettings settings_for(const SceneView& v, const at::Tensor& background) {
+  RasterizeSettings s;
+  s.camera = v.camera;
+  s.pose = v.pose;
+  s.background = background;
+  return s;
+}
+
+at::Tensor render(const GaussianModel& g, int sh_degree, const SceneView& v, const at::Tensor& background,
+                  const at::Tensor& means2d, at::Tensor* radii = nullptr) {
+  RasterizeOutput out = rasterize_sh(g.means, g.scales(), g.quats, g.opacities(), g.sh(), sh_degree, means2d,
+                                     settings_for(v, background));
+  if (radii) *radii = out.radii;
+  return out.image;
+}
+
+void check_options(const RgbTrainOptions& o) {
+  auto bad = [](const std::string& what) { throw Error("train-rgb: " + what); };
+  if (o.out_dir.empty()) bad("no output directory");
+  if (o.iterations < 0) bad("iterations must be >= 0");
+  if (o.sh_degree < 0 || o.sh_degree > 3) bad("SH degree must be 0..3");
+  if (o.densify_every <= 0 || o.opacity_reset_every <= 0 || o.sh_increase_every <= 0)
+    bad("densify_every, opacity_reset_every and sh_increase_every must be positive");
+  if (o.test_every < 0 || o.checkpoint_every < 0 || o.max_gaussians < 0) bad("negative interval or cap");
+  if (o.lambda_dssim < 0 || o.lambda_dssim > 1) bad("lambda_dssim must be in [0, 1]");
+  if (o.random_background && o.white_background) bad("random and white background exclude each other");
+}
+
+}  // namespace
+
+RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
+  check_options(options);
+  torch::NoGradGuard outer_no_grad;  // re-enabled for the forward/backward only
+  const auto wall_start = std::chrono::steady_clock::now();
+  if (scene.views.empty()) throw Error(scene.root + ": the scene has no views");
+  if (scene.points.empty()) throw Error(scene.root + ": the scene has no sparse points to start from");
+
+  // Views sorted by name; every test_every-th (index % test_every == 0) held out, as 3DGS's llffhold.
+  std::vector<const SceneView*> sorted;
+  for (const SceneView& v : scene.views) sorted.push_back(&v);
+  std::stable_sort(sorted.begin(), sorted.end(), [](const SceneView* a, const SceneView* b) { return a->name < b->name; });
+  std::vector<View> train, test;
+  {
+    ImageLoader loader;
+    Progress progress("load images", sorted.size(), "images");
+    for (size_t i = 0; i < sorted.size(); ++i) {
+      View v{sorted[i], to_rgb_tensor(loader.load(*sorted[i]))};
+      (options.test_every > 0 && i % size_t(options.test_every) == 0 ? test : train).push_back(std::move(v));
+      progress.advance();
+    }
+  }
+  if (train.empty()) throw Error(scene.root + ": no training views left after holding out every " +
+                                 std::to_string(options.test_every) + "th view");
+  const double extent = scene_extent(train);
+  log_info("train-rgb: " + std::to_string(train.size()) + " training views, " + std::to_string(test.size()) +
+           " test views, scene extent " + std::to_string(extent) + ", " + std::to_string(scene.points.size()) +
+           " initial Gaussians");
+
+  // Parameters and their learning rates (3DGS training_setup).
+  const GaussianModel init = init_from_points(scene.points, options.sh_degree);
+  Adam adam(0.9, 0.999, 1e-15);
+  auto leaf = [](const at::Tensor& t) { return t.clone().set_requires_grad(true); };
+  adam.add("means", leaf(init.means), options.position_lr_init * extent);
+  adam.add("log_scales", leaf(init.log_scales), options.scaling_lr);
+  adam.add("quats", leaf(init.quats), options.rotation_lr);
+  adam.add("opacity_logits", leaf(init.opacity_logits), options.opacity_lr);
+  adam.add("sh_dc", leaf(init.sh_dc), options.feature_lr);
+  adam.add("sh_rest", leaf(init.sh_rest), options.feature_lr / 20.0);
+  DensifyStats stats;
+  stats.reset(init.size());
+  TrainState state;
+  state.rng.seed(options.seed);
+
+  const std::string ckpt = checkpoint_path(options.out_dir);
+  fs::create_directories(options.out_dir);
+  if (options.resume) {
+    if (!fs::exists(ckpt)) throw Error(ckpt + ": no checkpoint to resume from");
+    load_checkpoint(ckpt, adam, stats, state);
+    log_info("train-rgb: resuming at iteration " + std::to_string(state.iteration) + " with " +
+             std::to_string(adam.group("means").param.size(0)) + " Gaussians");
+  }
+
+  RgbTrainReport report;
+  struct {
+    double render = 0, loss = 0, backward = 0;
+    int iterations = 0;
+  } timing;
+  const auto loop_start = std::chrono::steady_clock::now();
+  install_interrupt_handlers();
+  const at::Tensor fixed_background = background_for(options);
+  const int start_iteration = state.iteration;
+  auto session_seconds = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  };
+  auto checkpoint_now = [&](int done) {
+    state.iteration = done;
+    TrainState snapshot = state;
+    snapshot.seconds = state.seconds + session_seconds();
+    save_checkpoint(ckpt, adam, stats, snapshot, options);
+  };
+  {
+    Progress progress("train-rgb", uint64_t(std::max(0, options.iterations - start_iteration)), "it");
+    for (int it = start_iteration + 1; it <= options.iterations; ++it) {
+      if (interrupt_requested()) {
+        checkpoint_now(it - 1);
+        report.interrupted = true;
+        report.iterations = it - 1;
+        break;
+      }
+      adam.group("means").lr = exponential_lr(it, options.position_lr_init * extent,
+                                              options.position_lr_final * extent, options.iterations);
+      if (it % options.sh_increase_every == 0 && state.active_sh_degree < options.sh_degree) ++state.active_sh_degree;
+
+      if (state.view_stack.empty()) {
+        state.view_stack.resize(train.size());
+        std::iota(state.view_stack.begin(), state.view_stack.end(), 0);
+      }
+      const size_t pick = std::uniform_int_distribution<size_t>(0, state.view_stack.size() - 1)(state.rng);
+      const View& view = train[size_t(state.view_stack[pick])];
+      state.view_stack.erase(state.view_stack.begin() + std::ptrdiff_t(pick));
+      at::Tensor background = fixed_background;
+      if (options.random_background) {
+        std::uniform_real_distribution<float> u(0.0f, 1.0f);
+        background = torch::tensor({u(state.rng), u(state.rng), u(state.rng)});
+      }
+
+      const GaussianModel g = model_from_adam(adam);
+      const int64_t n = g.size();
+      at::Tensor means2d = torch::zeros({n, 2}).set_requires_grad(true);
+      at::Tensor radii;
+      at::Tensor loss_value, image;
+      {
+        torch::AutoGradMode grad_mode(true);
+        const auto t0 = std::chrono::steady_clock::now();
+        image = render(g, state.active_sh_degree, *view.view, background, means2d, &radii);
+        const auto t1 = std::chrono::steady_clock::now();
+        const at::Tensor l1 = (image - view.image).abs().mean();
+        const at::Tensor loss = (1.0 - options.lambda_dssim) * l1 + options.lambda_dssim * dssim_loss(image, view.image);
+        const auto t2 = std::chrono::steady_clock::now();
+        loss.backward();
+        const auto t3 = std::chrono::steady_clock::now();
+        loss_value = loss.detach();
+        timing.render += std::chrono::duration<double>(t1 - t0).count();
+        timing.loss += std::chrono::duration<double>(t2 - t1).count();
+        timing.backward += std::chrono::duration<double>(t3 - t2).count();
+      }
+      const double loss_d = loss_value.item<double>();
+      state.ema_loss = it == 1 ? loss_d : 0.4 * loss_d + 0.6 * state.ema_loss;
+
+      if (it < options.densify_until) {
+        // The original's screen-space gradient is w.r.t. NDC: pixel gradient x (W/2, H/2).
+        const double half_w = 0.5 * view.view->camera.width, half_h = 0.5 * view.view->camera.height;
+        const at::Tensor grad_ndc = means2d.grad() * torch::tensor({float(half_w), float(half_h)});
+        add_densification_stats(stats, grad_ndc, radii);
+        if (it > options.densify_from && it % options.densify_every == 0) {
+          DensifyOptions d;
+          d.grad_threshold = options.densify_grad_threshold;
+          d.percent_dense = options.percent_dense;
+          d.extent = extent;
+          d.prune_large = it > options.opacity_reset_every;  // train.py's size_threshold gate
+          d.max_gaussians = options.max_gaussians;
+          const DensifyResult r = densify_and_prune(adam, stats, d, state.rng);
+          log_verbose("train-rgb: iteration " + std::to_string(it) + ": cloned " + std::to_string(r.cloned) +
+                      ", split " + std::to_string(r.split) + ", pruned " + std::to_string(r.pruned) + " -> " +
+                      std::to_string(adam.group("means").param.size(0)) + " Gaussians");
+        }
+        if (it % options.opacity_reset_every == 0 || (options.white_background && it == options.densify_from))
+          reset_opacity(adam);
+      }
+      if (it < options.iterations) adam.step();  // densified groups have no gradient: skipped
+      adam.zero_grad();
+      timing.iterations += 1;
+
+      char detail[160];
+      std::snprintf(detail, sizeof detail, "it %d loss %.4f PSNR %.2f dB %lld Gaussians", it, state.ema_loss,
+                    psnr_of(image.detach().clamp(0, 1), view.image),
+                    static_cast<long long>(adam.group("means").param.size(0)));
+      progress.set_detail(detail);
+      progress.advance();
+      report.iterations = it;
+      if (options.checkpoint_every > 0 && it % options.checkpoint_every == 0 && it < options.iterations)
+        checkpoint_now(it);
+    }
+    if (options.iterations <= start_iteration) report.iterations = start_iteration;
+  }
+  const double loop_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop_start).count();
+  const double ms_per_iteration = timing.iterations > 0 ? 1000.0 * loop_seconds / timing.iterations : 0.0;
+  if (timing.iterations > 0) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "train-rgb: %.1f ms/iteration (render %.1f, loss %.1f, backward %.1f, rest %.1f)",
+                  ms_per_iteration, 1000 * timing.render / timing.iterations, 1000 * timing.loss / timing.iterations,
+                  1000 * timing.backward / timing.iterations,
+                  ms_per_iteration - 1000 * (timing.render + timing.loss + timing.backward) / timing.iterations);
+    log_info(buf);
+  }
+  const double seconds = state.seconds + session_seconds();
+  report.seconds = seconds;
+  report.gaussians = adam.group("means").param.size(0);
+  if (report.interrupted) {
+    log_info("train-rgb: interrupted; checkpoint at iteration " + std::to_string(report.iterations) + " in " + ckpt);
+    return report;
+  }
+
+  // Held-out evaluation (train views when nothing is held out), renders clamped to [0, 1].
+  const GaussianModel g = model_from_adam(adam);
+  const std::vector<View>& eval = test.empty() ? train : test;
+  double psnr_sum = 0, ssim_sum = 0;
+  for (const View& v : eval) {
+    const at::Tensor image = render(g, state.active_sh_degree, *v.view, fixed_background, {}).clamp(0, 1);
+    psnr_sum += psnr_of(image, v.image);
+    ssim_sum += ssim(image, v.image).item<double>();
+  }
+  report.test_views = int(test.size());
+  report.test_psnr = psnr_sum / double(eval.size());
+  report.test_ssim = ssim_sum / double(eval.size());
+
+  GaussianModel out;
+  out.means = g.means.detach();
+  out.log_scales = g.log_scales.detach();
+  out.quats = g.quats.detach();
+  out.opacity_logits = g.opacity_logits.detach();
+  out.sh_dc = g.sh_dc.detach();
+  out.sh_rest = g.sh_rest.detach();
+  write_gaussians_ply((fs::path(options.out_dir) / "point_cloud.ply").string(), out);
+  const nlohmann::json summary = {{"iterations", report.iterations},
+                                  {"gaussians", report.gaussians},
+                                  {"test_psnr", report.test_psnr},
+                                  {"test_ssim", report.test_ssim},
+                                  {"test_views", report.test_views},
+                                  {"evaluated_on", test.empty() ? "train" : "test"},
+                                  {"seconds", report.seconds},
+                                  {"ms_per_iteration", ms_per_iteration},
+                                  {"scene", scene.root},
+                                  {"extent", extent},
+                                  {"options", options_json(options)}};
+  write_text_atomic(fs::path(options.out_dir) / "summary.json", summary.dump(2) + "\n");
+  // The final state, so that a later run with more iterations can continue from it.
+  checkpoint_now(report.iterations);
+  return report;
+}
+
+}  // namespace cls

@@ -1,0 +1,90 @@
+// SSIM against a slow double-precision per-pixel reference (zero padding, as conv2d), SSIM(x, x) = 1,
+// and its gradient against central finite differences.
+#include <gtest/gtest.h>
+#include <torch/torch.h>
+
+#include <cmath>
+#include <vector>
+
+#include "splat/ssim.h"
+
+namespace {
+
+// Direct evaluation of 3DGS's ssim: window taps computed here independently of ssim_window_1d.
+double reference_ssim(const at::Tensor& a_in, const at::Tensor& b_in) {
+  const at::Tensor a = a_in.to(torch::kFloat64).contiguous(), b = b_in.to(torch::kFloat64).contiguous();
+  const int H = int(a.size(0)), W = int(a.size(1)), C = int(a.size(2));
+  auto A = a.accessor<double, 3>();
+  auto B = b.accessor<double, 3>();
+  double w[11], sum = 0;
+  for (int i = 0; i < 11; ++i) sum += (w[i] = std::exp(-double((i - 5) * (i - 5)) / 4.5));
+  for (double& v : w) v /= sum;
+  double total = 0;
+  for (int c = 0; c < C; ++c)
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) {
+        double mx = 0, my = 0, xx = 0, yy = 0, xy = 0;
+        for (int dy = -5; dy <= 5; ++dy)
+          for (int dx = -5; dx <= 5; ++dx) {
+            const int py = y + dy, px = x + dx;
+            if (py < 0 || py >= H || px < 0 || px >= W) continue;  // zero padding
+            const double k = w[dy + 5] * w[dx + 5], va = A[py][px][c], vb = B[py][px][c];
+            mx += k * va;
+            my += k * vb;
+            xx += k * va * va;
+            yy += k * vb * vb;
+            xy += k * va * vb;
+          }
+        const double sx = xx - mx * mx, sy = yy - my * my, sxy = xy - mx * my;
+        const double C1 = 1e-4, C2 = 9e-4;
+        total += ((2 * mx * my + C1) * (2 * sxy + C2)) / ((mx * mx + my * my + C1) * (sx + sy + C2));
+      }
+  return total / (double(H) * W * C);
+}
+
+TEST(Ssim, WindowIsCentredAndNormalised) {
+  const at::Tensor w = cls::ssim_window_1d(torch::kFloat64);
+  ASSERT_EQ(w.size(0), 11);
+  EXPECT_NEAR(w.sum().item<double>(), 1.0, 1e-15);
+  for (int i = 0; i < 5; ++i) EXPECT_EQ(w[i].item<double>(), w[10 - i].item<double>());
+  EXPECT_EQ(w.argmax().item<int64_t>(), 5);
+  EXPECT_NEAR(w[4].item<double>() / w[5].item<double>(), std::exp(-1.0 / 4.5), 1e-14);
+}
+
+TEST(Ssim, MatchesPerPixelReference) {
+  torch::manual_seed(1);
+  const at::Tensor a = torch::rand({23, 31, 3}, torch::kFloat64);
+  const at::Tensor b = (a + 0.2 * torch::randn({23, 31, 3}, torch::kFloat64)).clamp(0, 1);
+  const double want = reference_ssim(a, b);
+  EXPECT_NEAR(cls::ssim(a, b).item<double>(), want, 1e-12);
+  EXPECT_NEAR(cls::ssim(a.to(torch::kFloat), b.to(torch::kFloat)).item<double>(), want, 1e-5);
+  EXPECT_LT(want, 0.9);  // the images differ: a meaningful comparison
+}
+
+TEST(Ssim, IdenticalImagesGiveOne) {
+  torch::manual_seed(2);
+  const at::Tensor a = torch::rand({16, 20, 3});
+  EXPECT_NEAR(cls::ssim(a, a).item<float>(), 1.0f, 1e-6f);
+  EXPECT_NEAR(cls::dssim_loss(a, a).item<float>(), 0.0f, 1e-6f);
+  EXPECT_THROW(cls::ssim(a, a.slice(0, 1)), std::exception);
+}
+
+TEST(Ssim, GradientMatchesFiniteDifferences) {
+  torch::manual_seed(3);
+  const at::Tensor a = torch::rand({9, 12, 2}, torch::kFloat64).requires_grad_(true);
+  const at::Tensor b = torch::rand({9, 12, 2}, torch::kFloat64);
+  cls::dssim_loss(a, b).backward();
+  const at::Tensor grad = a.grad();
+  const double h = 1e-6;
+  for (int k = 0; k < 20; ++k) {
+    const int64_t idx = (k * 37) % a.numel();
+    at::Tensor p = a.detach().clone(), m = a.detach().clone();
+    p.view({-1})[idx] += h;
+    m.view({-1})[idx] -= h;
+    const double fd = (cls::dssim_loss(p, b).item<double>() - cls::dssim_loss(m, b).item<double>()) / (2 * h);
+    const double g = grad.view({-1})[idx].item<double>();
+    EXPECT_NEAR(g, fd, 1e-7 + 1e-5 * std::abs(fd)) << idx;
+  }
+}
+
+}  // namespace
