@@ -160,6 +160,19 @@ json run_query(const QueryOptions& o) {
   for (int l = 0; l < 3; ++l) latents_on_device[l] = model.latents[l].to(device);
   const std::string model_json = (fs::path(o.model_dir) / "model.json").string();
   const fs::path out = o.out_dir.empty() ? fs::path(o.model_dir) / "query" : fs::path(o.out_dir);
+
+  // The views of the maps, resolved before any work so that a wrong name fails early.
+  Scene scene;
+  std::vector<const SceneView*> views;
+  if (o.maps) {
+    const std::string scene_dir = o.scene_dir.empty() ? recorded_scene(model.info) : o.scene_dir;
+    if (scene_dir.empty())
+      throw UsageError("query: relevance maps need the scene: pass --scene DIR (or --no-maps)");
+    SceneOptions scene_options;
+    scene_options.check_images = false;
+    scene = load_scene(scene_dir, scene_options);
+    views = pick_views(scene, o.views);
+  }
   fs::create_directories(out);
 
   // The text side: the model's own provider and encoder.
@@ -222,13 +235,6 @@ json run_query(const QueryOptions& o) {
   // Relevance maps per view: one render + decode per (view, level) for all texts of that level.
   json views_done = json::array();
   if (o.maps) {
-    const std::string scene_dir = o.scene_dir.empty() ? recorded_scene(model.info) : o.scene_dir;
-    if (scene_dir.empty())
-      throw UsageError("query: relevance maps need the scene: pass --scene DIR (or --no-maps)");
-    SceneOptions scene_options;
-    scene_options.check_images = false;
-    const Scene scene = load_scene(scene_dir, scene_options);
-    const std::vector<const SceneView*> views = pick_views(scene, o.views);
     const at::Tensor canonical = provider->text_features(canonical_phrases()).to(device, torch::kFloat32);
     const LatentDecoder decode = [&model](const at::Tensor& z) { return model.autoencoder.decode(z); };
     std::map<int, std::vector<int64_t>> texts_of_level;

@@ -216,6 +216,7 @@ TEST(QueryCli, Errors) {
   r = run(model + " wall --views 0002,nope");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("'nope'"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(f.root / "out_err" / "scores.ply"));  // views are checked before any work
   r = run(model + " wall --level 4");
   EXPECT_EQ(r.status, 2);
   r = run(model + " wall --top-k 3 --threshold 0.2");
