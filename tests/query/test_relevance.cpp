@@ -148,6 +148,11 @@ TEST(RenderDecoded, LanguageModelLevelMatchesReferenceThenAutoencoderPerPixel) {
     }
   EXPECT_LT(max_diff, 1e-4);
   EXPECT_THROW(render_decoded(m, 4, view), Error);
+  // relevance_maps of the same level and view agrees with the maps of the decoded field.
+  const at::Tensor queries = torch::randn({2, D}), canonical = torch::randn({4, D});
+  const RelevanceMaps rm = relevance_maps(m, 2, view, queries, canonical);
+  EXPECT_LT((rm.cosine - cosine_maps(v.features, queries)).abs().max().item<float>(), 1e-5);
+  EXPECT_LT((rm.relevancy[1] - langsplat_relevancy(v.features, queries[1], canonical)).abs().max().item<float>(), 1e-5);
   // Another level renders other latents.
   EXPECT_GT((render_decoded(m, 1, view).features - v.features).abs().max().item<float>(), 1e-3);
 }
