@@ -9,9 +9,9 @@ int cmd_scene(int argc, char** argv);       // scene info | convert
 int cmd_run(int argc, char** argv);         // the whole pipeline
 int cmd_models(int argc, char** argv);      // models list | download | check
 int cmd_features(int argc, char** argv);    // per-view SAM and CityGML features
-int cmd_train_language(int argc, char** argv);  // language field training (paper 3.3)
 int cmd_autoencoder(int argc, char** argv); // train the shared autoencoder on SAM features
+int cmd_train_rgb(int argc, char** argv);   // photometric 3DGS training
+int cmd_train_language(int argc, char** argv);  // language field training (paper 3.3)
 int cmd_query(int argc, char** argv);       // open-vocabulary text queries on a language model
 int cmd_evaluate(int argc, char** argv);    // the paper's evaluation (section 4)
-int cmd_train_rgb(int argc, char** argv);   // photometric 3DGS training
 }  // namespace cls

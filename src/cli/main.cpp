@@ -26,11 +26,11 @@ const Command kCommands[] = {
     {"scene", cls::cmd_scene, "inspect or convert a scene (COLMAP / Pix4D)"},
     {"models", cls::cmd_models, "list, download and check CLIP/SAM weight files"},
     {"features", cls::cmd_features, "per-view SAM and CityGML language features (LangSplat's layout)"},
-    {"train-language", cls::cmd_train_language, "train the language field on a frozen photometric model (paper 3.3)"},
     {"autoencoder", cls::cmd_autoencoder, "train the shared autoencoder (512 -> 128) on SAM features"},
+    {"train-rgb", cls::cmd_train_rgb, "train 3D Gaussians photometrically (3DGS) on a scene"},
+    {"train-language", cls::cmd_train_language, "train the language field on a frozen photometric model (paper 3.3)"},
     {"query", cls::cmd_query, "query a language model with text: Gaussian scores, selections, relevance maps"},
     {"evaluate", cls::cmd_evaluate, "evaluate language models against a labelled point cloud (2D and 3D)"},
-    {"train-rgb", cls::cmd_train_rgb, "train 3D Gaussians photometrically (3DGS) on a scene"},
 };
 
 void usage(FILE* out) {

@@ -9,6 +9,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/hash.h"
+#include "core/interrupt.h"
 #include "core/log.h"
 #include "core/progress.h"
 #include "features/city_regions.h"
@@ -118,7 +119,14 @@ int run_feature_stage(const Scene& scene, FeatureProvider& provider, const Taxon
 
   ImageLoader loader;
   Progress progress("features", todo.size(), "views");
+  int computed = 0;
   for (const ViewJob* job : todo) {
+    // A signal (when the caller installed core/interrupt.h's handlers) stops between views: the views
+    // written so far stay cached, and features.json is not written, so the stage is not finished.
+    if (interrupt_requested()) {
+      log_warn(cat("features: interrupted after ", computed, " of ", todo.size(), " views; run again to resume"));
+      return computed;
+    }
     const SceneView& sv = *job->view;
     FeatureView view;
     view.name = sv.name;
@@ -153,6 +161,7 @@ int run_feature_stage(const Scene& scene, FeatureProvider& provider, const Taxon
     f.regions = std::move(regions.regions);
     write_view_features(job->out_dir, job->stem, f);
     log_verbose(cat(sv.name, ": ", f.sam_features.size(0), " SAM segments, ", f.regions.size(), " CityGML regions"));
+    ++computed;
     progress.advance();
   }
   progress.finish();

@@ -23,7 +23,8 @@ struct FeatureStageOptions {
   int min_region_pixels = 16;        // CityGML regions with fewer pixels are skipped (-1 in the seg map)
 };
 
-// Returns the number of views computed (0 when every view was cached).
+// Returns the number of views computed (0 when every view was cached). Stops early, leaving
+// features.json unwritten, when interrupt_requested() (core/interrupt.h) turns true between views.
 int run_feature_stage(const Scene& scene, FeatureProvider& provider, const Taxonomy& taxonomy,
                       const FeatureStageOptions& options);
 

@@ -36,12 +36,21 @@ nlohmann::json read_json(const fs::path& p) { return nlohmann::json::parse(cls::
 TEST(RunCli, LabelMapsAgreeWithTheSyntheticGroundTruth) {
   const fs::path out = scene_dir().string() + "_out1";
   fs::remove_all(out);
+  // No weights anywhere the registry looks: the run stops before the features, saying how to get them.
+  const fs::path no_models = scene_dir().string() + "_no_models";
+  fs::create_directories(no_models);
+  ::setenv("HOME", no_models.c_str(), 1);
+  ::setenv("XDG_CACHE_HOME", no_models.c_str(), 1);
+  ::unsetenv("CITYLANGSPLAT_MODELS");
   const auto r = run_cli("run " + scene_dir().string() + " --out " + out.string());
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.err.find("not available in this version"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("stopped before the features"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("models download"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--models tiny"), std::string::npos) << r.err;
   const auto record = read_json(out / "run.json");
   EXPECT_EQ(record["labels"]["status"], "done");
-  EXPECT_EQ(record["features"]["status"], "not available in this version");
+  EXPECT_EQ(record["features"]["status"], "stopped: no model weights");
+  EXPECT_FALSE(fs::exists(out / "features"));
   EXPECT_TRUE(fs::exists(out / "labels" / "legend.json"));
   // The synthetic ground truth (rendered with clutter by the generator) carries the level-1 class
   // wherever the city model is visible; the label map must agree there. Clutter only removes GT
@@ -112,4 +121,44 @@ TEST(RunCli, BadInputsFailWithTheFileNamedAndWriteNothing) {
   r = run_cli("run " + empty.string() + " --out " + out.string());
   EXPECT_EQ(r.status, 2) << r.err;  // no city model anywhere: a usage error
   EXPECT_FALSE(fs::exists(out));
+}
+
+// The acceptance run of issue 6: every stage with tiny random models on the bundled example (made
+// here by scripts/make_example.sh, as set-up makes it), then a second run that reuses every stage.
+TEST(RunCli, TinyModelsRunEveryStageOnTheBundledExampleAndASecondRunReusesThem) {
+  const fs::path base = fs::temp_directory_path() / ("cls_run_example_" + std::to_string(::getpid()));
+  fs::remove_all(base);
+  const std::string make = "CITYLANGSPLAT='" + std::string(CLS_BINARY) + "' bash '" CLS_TEST_DATA
+                           "/../scripts/make_example.sh' '" + (base / "fzk-haus").string() + "' >/dev/null";
+  ASSERT_EQ(std::system(make.c_str()), 0) << make;
+  const fs::path out = base / "out";
+  const std::string cmd = "run " + (base / "fzk-haus").string() + " --models tiny --out " + out.string();
+  const auto first = run_cli(cmd);
+  ASSERT_EQ(first.status, 0) << first.err;
+  EXPECT_NE(first.err.find("tiny random"), std::string::npos);
+  const auto record = read_json(out / "run.json");
+  for (const char* stage : {"labels", "features", "autoencoder", "train-rgb", "evaluate"})
+    EXPECT_EQ(record[stage]["status"], "done") << stage;
+  for (const char* method : {"citylangsplat", "langsplat"}) {
+    EXPECT_EQ(record["train-language"][method]["status"], "done") << method;
+    EXPECT_EQ(record["query"][method]["status"], "done") << method;
+    EXPECT_TRUE(fs::exists(out / "language" / method / "latents.safetensors")) << method;
+    EXPECT_TRUE(fs::exists(out / "query" / method / "scores.ply")) << method;
+  }
+  // Every output of a smoke run says so.
+  EXPECT_NE(record["warning"].get<std::string>().find("meaningless"), std::string::npos);
+  const std::string tables = cls::read_text_file(out / "eval" / "eval.md");
+  EXPECT_NE(tables.find("meaningless"), std::string::npos);
+  EXPECT_NE(cls::read_text_file(out / "features" / "features.json").find("meaningless"), std::string::npos);
+
+  const auto second = run_cli(cmd);
+  ASSERT_EQ(second.status, 0) << second.err;
+  const auto again = read_json(out / "run.json");
+  for (const char* stage : {"labels", "features", "autoencoder", "train-rgb", "evaluate"})
+    EXPECT_EQ(again[stage]["status"], "reused") << stage;
+  for (const char* method : {"citylangsplat", "langsplat"}) {
+    EXPECT_EQ(again["train-language"][method]["status"], "reused") << method;
+    EXPECT_EQ(again["query"][method]["status"], "reused") << method;
+  }
+  fs::remove_all(base);
 }
