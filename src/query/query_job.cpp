@@ -70,8 +70,33 @@ std::vector<const SceneView*> pick_views(const Scene& scene, const std::vector<s
   return out;
 }
 
+// A taxonomy recorded as its legend (Taxonomy::legend_json(), what the features stage and language
+// training write): class order, names, levels, prompts and colours; the CityGML source types are not
+// recorded and not needed to encode text.
+Taxonomy taxonomy_from_legend(const json& legend, const std::string& file) {
+  Taxonomy t;
+  try {
+    for (size_t i = 0; i < legend.size(); ++i) {
+      const json& c = legend.at(i);
+      if (c.value("id", static_cast<int>(i)) != static_cast<int>(i))
+        fail(file, "taxonomy: class " + std::to_string(i) + " has id " + c["id"].dump());
+      SemanticClass sc;
+      sc.name = c.at("name").get<std::string>();
+      sc.level = c.value("level", 2);
+      sc.prompts = c.value("prompts", std::vector<std::string>{});
+      if (c.contains("color")) sc.color = c["color"].get<std::array<unsigned char, 3>>();
+      t.classes.push_back(std::move(sc));
+    }
+  } catch (const json::exception& e) {
+    fail(file, std::string("taxonomy: ") + e.what());
+  }
+  return t;
+}
+
+// --taxonomy, else what model.json records (a legend array, or a path), else the built-in one.
 Taxonomy taxonomy_for(const QueryOptions& o, const json& info, const std::string& model_json) {
   if (!o.taxonomy_path.empty()) return Taxonomy::load(o.taxonomy_path);
+  if (info.contains("taxonomy") && info["taxonomy"].is_array()) return taxonomy_from_legend(info["taxonomy"], model_json);
   if (info.contains("taxonomy") && info["taxonomy"].is_string()) {
     const std::string path = info["taxonomy"].get<std::string>();
     if (!path.empty()) {
@@ -160,6 +185,19 @@ json run_query(const QueryOptions& o) {
   for (int l = 0; l < 3; ++l) latents_on_device[l] = model.latents[l].to(device);
   const std::string model_json = (fs::path(o.model_dir) / "model.json").string();
   const fs::path out = o.out_dir.empty() ? fs::path(o.model_dir) / "query" : fs::path(o.out_dir);
+
+  // The views of the maps, resolved before any work so that a wrong name fails early.
+  Scene scene;
+  std::vector<const SceneView*> views;
+  if (o.maps) {
+    const std::string scene_dir = o.scene_dir.empty() ? recorded_scene(model.info) : o.scene_dir;
+    if (scene_dir.empty())
+      throw UsageError("query: relevance maps need the scene: pass --scene DIR (or --no-maps)");
+    SceneOptions scene_options;
+    scene_options.check_images = false;
+    scene = load_scene(scene_dir, scene_options);
+    views = pick_views(scene, o.views);
+  }
   fs::create_directories(out);
 
   // The text side: the model's own provider and encoder.
@@ -222,13 +260,6 @@ json run_query(const QueryOptions& o) {
   // Relevance maps per view: one render + decode per (view, level) for all texts of that level.
   json views_done = json::array();
   if (o.maps) {
-    const std::string scene_dir = o.scene_dir.empty() ? recorded_scene(model.info) : o.scene_dir;
-    if (scene_dir.empty())
-      throw UsageError("query: relevance maps need the scene: pass --scene DIR (or --no-maps)");
-    SceneOptions scene_options;
-    scene_options.check_images = false;
-    const Scene scene = load_scene(scene_dir, scene_options);
-    const std::vector<const SceneView*> views = pick_views(scene, o.views);
     const at::Tensor canonical = provider->text_features(canonical_phrases()).to(device, torch::kFloat32);
     const LatentDecoder decode = [&model](const at::Tensor& z) { return model.autoencoder.decode(z); };
     std::map<int, std::vector<int64_t>> texts_of_level;

@@ -36,18 +36,28 @@ const char* const kRoof = "Red roof!";                         // any other text
 struct Fixture {
   fs::path root, model_dir, scene_dir;
   json provider_spec{{"provider", "synthetic"}, {"seed", 3}, {"dim", kDim}};
+  // The built-in taxonomy plus a class of our own, recorded in model.json as its legend: a query for
+  // its prompt only hits that class's direction if `query` uses the recorded taxonomy.
+  Taxonomy taxonomy = Taxonomy::builtin();
   std::vector<std::pair<std::string, std::pair<int, int>>> views;  // name, (width, height)
 
   Fixture() {
     root = fs::temp_directory_path() / ("cls_query_test_" + std::to_string(::getpid()));
     fs::remove_all(root);
     model_dir = root / "model";
+    SemanticClass crossing;
+    crossing.name = "crossing";
+    crossing.prompts = {"zebra crossing"};
+    taxonomy.classes.push_back(crossing);
     scene_dir = root / "scene";
     const test::LatentScene t = test::latent_scene(kN, 48, 36, kLatent, 21);
     torch::manual_seed(4);
     LanguageModel m{t.g, {}, Autoencoder(AutoencoderConfig{kDim, {12, kLatent}, {12, kDim}}, 7), {}};
     for (int l = 0; l < 3; ++l) m.latents[l] = torch::randn({kN, kLatent});
-    m.info = {{"method", "citylangsplat"}, {"provider", provider_spec}, {"scene", scene_dir.string()}};
+    m.info = {{"method", "citylangsplat"},
+              {"provider", provider_spec},
+              {"scene", scene_dir.string()},
+              {"taxonomy", json::parse(taxonomy.legend_json())}};
     save_language_model(model_dir.string(), m);
 
     // Two pinhole views of different sizes looking at the Gaussians.
@@ -78,7 +88,7 @@ Fixture& fixture() {
 
 // Independent scores: the provider's text feature, the model's encoder, then cos per Gaussian in double.
 std::vector<double> independent_scores(const LanguageModel& m, const std::string& text, int level) {
-  const auto provider = make_feature_provider(fixture().provider_spec, Taxonomy::builtin());
+  const auto provider = make_feature_provider(fixture().provider_spec, fixture().taxonomy);
   const at::Tensor q = m.autoencoder.encode(provider->text_features({text})).to(torch::kFloat64)[0];
   const at::Tensor g = m.latents[level - 1].to(torch::kFloat64);
   std::vector<double> s(kN);
@@ -100,7 +110,7 @@ TEST(QueryCli, TopKScoresMapsAndJson) {
   const fs::path out = f.root / "out_topk";
   const int k = 7;
   const auto r = test::run_cli("-q query " + q(f.model_dir) + " '" + kWindow + "' '" + kRoof +
-                               "' --top-k 7 --out " + q(out));
+                               "' 'zebra crossing' --top-k 7 --out " + q(out));
   ASSERT_EQ(r.status, 0) << r.err;
   const json j = json::parse(read_text_file(out / "query.json"));
   const LanguageModel m = load_language_model(f.model_dir.string());
@@ -108,9 +118,10 @@ TEST(QueryCli, TopKScoresMapsAndJson) {
   ASSERT_EQ(scored.size(), kN);
   EXPECT_TRUE(torch::allclose(scored.means, m.gaussians.means));
 
-  const std::vector<std::string> texts{kWindow, "Red roof!"}, slugs{"a_window_on_a_building_facade", "red_roof"};
-  ASSERT_EQ(j["queries"].size(), 2u);
-  for (size_t t = 0; t < 2; ++t) {
+  const std::vector<std::string> texts{kWindow, "Red roof!", "zebra crossing"},
+      slugs{"a_window_on_a_building_facade", "red_roof", "zebra_crossing"};
+  ASSERT_EQ(j["queries"].size(), 3u);
+  for (size_t t = 0; t < 3; ++t) {
     const json& qj = j["queries"][t];
     EXPECT_EQ(qj["slug"], slugs[t]);
     // "best": the level whose max score is highest.
@@ -176,7 +187,7 @@ TEST(QueryCli, CosineMapEqualsDecodedFieldOfTheView) {
   const LanguageModel m = load_language_model(f.model_dir.string());
   const Scene scene = load_scene(f.scene_dir.string(), SceneOptions{1, 0, false});
   const SceneView& view = scene.views[0].name == "0002.jpg" ? scene.views[0] : scene.views[1];
-  const auto provider = make_feature_provider(f.provider_spec, Taxonomy::builtin());
+  const auto provider = make_feature_provider(f.provider_spec, f.taxonomy);
   const DecodedView d = render_decoded(m, 2, view);
   const at::Tensor expected = cosine_maps(d.features, provider->text_features({"wall"}))[0];
   const NpyArray a = read_npy(out / "maps" / "wall" / "0002_cosine.npy");
@@ -216,6 +227,7 @@ TEST(QueryCli, Errors) {
   r = run(model + " wall --views 0002,nope");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("'nope'"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(f.root / "out_err" / "scores.ply"));  // views are checked before any work
   r = run(model + " wall --level 4");
   EXPECT_EQ(r.status, 2);
   r = run(model + " wall --top-k 3 --threshold 0.2");

@@ -123,6 +123,40 @@ TEST(RenderDecoded, MatchesPerPixelReference) {
   EXPECT_GT(covered / (W * H), 0.5);  // the scene is not empty
 }
 
+TEST(RenderDecoded, LanguageModelLevelMatchesReferenceThenAutoencoderPerPixel) {
+  // The LanguageModel form: the level's latents, the model's autoencoder, the view's camera and pose.
+  const int W = 29, H = 23, L = 8, D = 16;
+  test::LatentScene t = test::latent_scene(70, W, H, L, 13);
+  LanguageModel m{t.g, {}, Autoencoder(AutoencoderConfig{D, {12, L}, {12, D}}, 3), {}};
+  torch::manual_seed(2);
+  m.latents = {torch::randn({70, L}), t.latents, torch::randn({70, L})};
+  SceneView view;
+  view.camera = t.camera;
+  view.pose = t.pose;
+  const DecodedView v = render_decoded(m, 2, view);
+  ASSERT_EQ(v.features.sizes(), at::IntArrayRef({H, W, D}));
+
+  const auto ad = test::scene_arrays<double>(t.s);
+  const ReferenceImage ref = reference_render(t.s.cam, ad.inputs(t.s, /*with_background=*/false));
+  double max_diff = 0;
+  for (int y = 0; y < H; y += 3)
+    for (int x = 0; x < W; x += 2) {
+      const size_t p = size_t(y) * W + x;
+      std::vector<float> z(ref.image.begin() + p * L, ref.image.begin() + (p + 1) * L);
+      const at::Tensor f = m.autoencoder.decode(torch::tensor(z).reshape({1, L}))[0];  // one pixel at a time
+      max_diff = std::max(max_diff, (f - v.features[y][x]).abs().max().item<double>());
+    }
+  EXPECT_LT(max_diff, 1e-4);
+  EXPECT_THROW(render_decoded(m, 4, view), Error);
+  // relevance_maps of the same level and view agrees with the maps of the decoded field.
+  const at::Tensor queries = torch::randn({2, D}), canonical = torch::randn({4, D});
+  const RelevanceMaps rm = relevance_maps(m, 2, view, queries, canonical);
+  EXPECT_LT((rm.cosine - cosine_maps(v.features, queries)).abs().max().item<float>(), 1e-5);
+  EXPECT_LT((rm.relevancy[1] - langsplat_relevancy(v.features, queries[1], canonical)).abs().max().item<float>(), 1e-5);
+  // Another level renders other latents.
+  EXPECT_GT((render_decoded(m, 1, view).features - v.features).abs().max().item<float>(), 1e-3);
+}
+
 TEST(RelevanceMaps, EqualMapsOfTheWholeDecodedField) {
   const int W = 31, H = 23, L = 6, D = 10;
   test::LatentScene t = test::latent_scene(60, W, H, L, 11);
