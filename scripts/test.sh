@@ -3,4 +3,4 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh --no-example
-cd build && ctest --output-on-failure --parallel "$(nproc)" --timeout 900
+cd build && ctest --output-on-failure --parallel "$(nproc)" --timeout 2400
