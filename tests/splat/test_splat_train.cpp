@@ -8,7 +8,9 @@
 
 #include <fcntl.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -18,6 +20,8 @@
 
 #include "cli_runner.h"
 #include "core/atomic_file.h"
+#include "scene/scene.h"
+#include "splat/ply_gaussians.h"
 
 namespace fs = std::filesystem;
 using cls::test::run_cli;
@@ -151,6 +155,52 @@ TEST(TrainRgbCli, HeldOutPsnrRisesAndOutputsAreWritten) {
   EXPECT_NE(ply.find("property float f_rest_44"), std::string::npos);
   EXPECT_NE(ply.find("element vertex " + std::to_string(s1["gaussians"].get<int64_t>())), std::string::npos);
   EXPECT_TRUE(fs::exists(trained / "checkpoints" / "checkpoint.safetensors"));
+}
+
+// Zero iterations: the written model is the initialisation (create_from_pcd), checked against the
+// scene's points with a brute-force nearest-neighbour search; the extent against getNerfppNorm.
+TEST(TrainRgbCli, InitialisationFromSparsePoints) {
+  const fs::path out = temp_root() / "init";
+  auto r = run_cli("-q train-rgb --scene " + scene_dir().string() + " --out " + out.string() + " --iterations 0");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const cls::Scene scene = cls::load_scene(scene_dir().string());
+  const cls::GaussianModel g = cls::read_gaussians_ply((out / "point_cloud.ply").string());
+  ASSERT_EQ(g.size(), int64_t(scene.points.size()));
+  ASSERT_EQ(g.sh_degree(), 3);
+  const double C0 = 0.28209479177387814;
+  for (size_t i = 0; i < scene.points.size(); i += 37) {
+    const auto& p = scene.points[i];
+    std::vector<double> d2;
+    for (size_t j = 0; j < scene.points.size(); ++j)
+      if (j != i) {
+        const auto& q = scene.points[j];
+        d2.push_back((p.xyz.x - q.xyz.x) * (p.xyz.x - q.xyz.x) + (p.xyz.y - q.xyz.y) * (p.xyz.y - q.xyz.y) +
+                     (p.xyz.z - q.xyz.z) * (p.xyz.z - q.xyz.z));
+      }
+    std::partial_sort(d2.begin(), d2.begin() + 3, d2.end());
+    const double want_log_scale = 0.5 * std::log(std::max(1e-7, (d2[0] + d2[1] + d2[2]) / 3));
+    const int64_t k = int64_t(i);
+    EXPECT_NEAR(g.means[k][0].item<double>(), p.xyz.x, 1e-4 * (1 + std::abs(p.xyz.x)));
+    for (int a = 0; a < 3; ++a) EXPECT_NEAR(g.log_scales[k][a].item<double>(), want_log_scale, 1e-4) << i;
+    EXPECT_NEAR(g.opacity_logits[k][0].item<double>(), std::log(0.1 / 0.9), 1e-6);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(g.sh_dc[k][0][c].item<double>(), (p.rgb[size_t(c)] / 255.0 - 0.5) / C0, 1e-5);
+    EXPECT_EQ(g.quats[k][0].item<float>(), 1.0f);
+    EXPECT_EQ(g.sh_rest[k].abs().sum().item<float>(), 0.0f);
+  }
+  // getNerfppNorm over the training views (sorted by name, every 8th held out).
+  std::vector<const cls::SceneView*> views;
+  for (const auto& v : scene.views) views.push_back(&v);
+  std::sort(views.begin(), views.end(), [](auto* a, auto* b) { return a->name < b->name; });
+  std::vector<cls::Vec3d> centres;
+  for (size_t i = 0; i < views.size(); ++i)
+    if (i % 8 != 0) centres.push_back(views[i]->pose.center());
+  cls::Vec3d mean{0, 0, 0};
+  for (const auto& c : centres) mean = mean + c;
+  mean = (1.0 / double(centres.size())) * mean;
+  double radius = 0;
+  for (const auto& c : centres) radius = std::max(radius, cls::norm(c - mean));
+  EXPECT_NEAR(read_json(out / "summary.json")["extent"].get<double>(), 1.1 * radius, 1e-9 * radius);
 }
 
 TEST(TrainRgbCli, SigintThenResumeEqualsUninterruptedRun) {
