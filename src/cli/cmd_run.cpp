@@ -76,13 +76,8 @@ RunInputs resolve_inputs(const Args& args, const fs::path& scene_dir) {
   return in;
 }
 
-// Identifies everything the label maps depend on: the city model, transform and taxonomy bytes,
-// the LoD, and every view's name, intrinsics and pose at the loaded resolution.
-std::string labels_fingerprint(const RunInputs& in, const Scene& scene) {
-  uint64_t h = fnv1a64(read_text_file(in.city));
-  if (!in.transform.empty()) h = fnv1a64(read_text_file(in.transform), h);
-  if (!in.model.taxonomy_path.empty()) h = fnv1a64(read_text_file(in.model.taxonomy_path), h);
-  h = fnv1a64(std::to_string(in.model.lod), h);
+// Every view's name, intrinsics and pose at the loaded resolution.
+uint64_t views_fingerprint(const Scene& scene, uint64_t h) {
   for (const SceneView& v : scene.views) {
     const PinholeCamera& c = v.camera;
     char buf[512];
@@ -95,6 +90,35 @@ std::string labels_fingerprint(const RunInputs& in, const Scene& scene) {
     }
     h = fnv1a64(s, h);
   }
+  return h;
+}
+
+// Identifies everything the label maps depend on: the city model, transform and taxonomy bytes,
+// the LoD, and the views.
+std::string labels_fingerprint(const RunInputs& in, const Scene& scene) {
+  uint64_t h = fnv1a64(read_text_file(in.city));
+  if (!in.transform.empty()) h = fnv1a64(read_text_file(in.transform), h);
+  if (!in.model.taxonomy_path.empty()) h = fnv1a64(read_text_file(in.model.taxonomy_path), h);
+  h = fnv1a64(std::to_string(in.model.lod), h);
+  return hex64(views_fingerprint(scene, h));
+}
+
+// What the photometric model depends on: the views and their images' bytes (not the city model).
+std::string images_fingerprint(const Scene& scene) {
+  uint64_t h = views_fingerprint(scene, fnv1a64("images"));
+  for (const SceneView& v : scene.views) h = fnv1a64(read_text_file(v.image_path), h);
+  return hex64(h);
+}
+
+// The features stage's result: features.json plus every view's `_gml.json`, which holds the view's
+// stamp (label-map and image hashes, provider, alpha, regions), so changed inputs change it.
+std::string features_fingerprint_of(const fs::path& features_dir) {
+  const fs::path index = features_dir / "features.json";
+  const std::string text = read_text_file(index);
+  uint64_t h = fnv1a64(text);
+  const nlohmann::json index_json = nlohmann::json::parse(text);  // named: a temporary would dangle in the loop
+  for (const auto& view : index_json.at("views"))
+    h = fnv1a64(read_text_file(features_dir / (view.at("features").get<std::string>() + "_gml.json")), h);
   return hex64(h);
 }
 
@@ -116,9 +140,11 @@ void write_stamp(const fs::path& stamp, const std::string& fingerprint) {
 std::string file_fingerprint(const fs::path& path) { return fnv1a64_hex(read_text_file(path)); }
 
 // A training stage resumes its checkpoint only when the checkpoint belongs to a run of the same
-// inputs: `started` records the fingerprint when training starts; a finished stage writes `stamp`.
+// inputs: `started` records the fingerprint when training starts (a finished stage writes its stamp);
+// a checkpoint of other inputs is deleted so that it can never be resumed later.
 bool resume_training(const fs::path& started, const fs::path& checkpoint, const std::string& fingerprint) {
   const bool same = stage_is_current(started, fingerprint) && fs::exists(checkpoint);
+  if (!same) fs::remove_all(checkpoint);
   write_stamp(started, fingerprint);
   return same;
 }
@@ -230,6 +256,14 @@ int cmd_run(int argc, char** argv) {
   if (!mode.warning.empty()) record["warning"] = mode.warning;
   const fs::path run_json = out / "run.json";
   auto save_record = [&] { write_text_atomic(run_json, record.dump(2) + "\n"); };
+  // Stages that do not poll the signal flag themselves finish their step; the run stops after them.
+  auto stopped_by_signal = [&](const char* after_stage) {
+    if (!interrupt_requested()) return false;
+    record["interrupted_after"] = after_stage;
+    save_record();
+    log_warn(cat("run: interrupted after ", after_stage, "; run the same command again to continue"));
+    return true;
+  };
 
   // Stage: alignment check (cheap; a warning, not a failure, so a user sees it before training).
   if (!scene.points.empty()) {
@@ -291,7 +325,7 @@ int cmd_run(int argc, char** argv) {
                           {"computed_views", computed}};
     save_record();
   }
-  const std::string features_fingerprint = file_fingerprint(features_dir / "features.json");
+  const std::string features_fingerprint = features_fingerprint_of(features_dir);
 
   // Stage: the shared autoencoder (3.2), trained on the SAM features only.
   const fs::path ae_path = out / "autoencoder.safetensors";
@@ -314,6 +348,8 @@ int cmd_run(int argc, char** argv) {
     save_record();
   }
 
+  if (stopped_by_signal("autoencoder")) return kInterruptedExit;
+
   // Stage: the photometric model (or an imported 3DGS PLY).
   fs::path geometry;
   if (args.has("rgb-model")) {
@@ -322,7 +358,7 @@ int cmd_run(int argc, char** argv) {
   } else {
     const fs::path rgb_dir = out / "rgb";
     geometry = rgb_dir / "point_cloud.ply";
-    const std::string fp = hex64(fnv1a64(cat(scene_fingerprint, "|", mode.rgb_iterations)));
+    const std::string fp = hex64(fnv1a64(cat(images_fingerprint(scene), "|", mode.rgb_iterations)));
     const fs::path rgb_stamp = rgb_dir / "stage.json";
     if (stage_is_current(rgb_stamp, fp) && fs::exists(geometry)) {
       log_info("run: train-rgb: up to date (reused)");
@@ -420,6 +456,8 @@ int cmd_run(int argc, char** argv) {
            (out / "query").string());
   save_record();
 
+  if (stopped_by_signal("query")) return kInterruptedExit;
+
   // Stage: evaluation (section 4) when the scene has a labelled point cloud.
   const fs::path gt = scene_dir / "gt" / "points.ply";
   if (!fs::exists(gt)) {
@@ -449,6 +487,7 @@ int cmd_run(int argc, char** argv) {
     std::fprintf(stdout, "%s", md.c_str());
   }
   save_record();
+  if (stopped_by_signal("evaluate")) return kInterruptedExit;
   log_info("run: done. Results: " + run_json.string());
   return 0;
 }

@@ -138,7 +138,7 @@ std::string adam_name(int level) { return "latents_l" + std::to_string(level); }
 nlohmann::json run_config(const LanguageTrainOptions& o, int64_t n, int latent, size_t views) {
   return {{"seed", o.seed},           {"baseline", o.baseline}, {"lambda_sam", o.lambda_sam},
           {"lambda_citygml", o.lambda_citygml}, {"lr", o.lr}, {"gaussians", n},
-          {"latent_dim", latent},     {"views", views}};
+          {"latent_dim", latent},     {"views", views}, {"iterations", o.iterations}};
 }
 
 struct TrainState {

@@ -162,3 +162,43 @@ TEST(RunCli, TinyModelsRunEveryStageOnTheBundledExampleAndASecondRunReusesThem) 
   }
   fs::remove_all(base);
 }
+
+// Stage reuse follows the inputs: a changed image redoes the features and everything trained on
+// them but not the label maps; a changed city transform redoes the label maps and the features but
+// not the photometric model, which never sees the city model.
+TEST(RunCli, ChangedInputsRedoExactlyTheStagesThatDependOnThem) {
+  const fs::path scene = scene_dir().string() + "_reuse";
+  fs::remove_all(scene);
+  fs::copy(scene_dir(), scene, fs::copy_options::recursive);
+  const fs::path out = scene / "out";
+  const std::string cmd = "-q run " + scene.string() + " --models synthetic --rgb-iterations 5 "
+                          "--language-iterations 2 --out " + out.string();
+  ASSERT_EQ(run_cli(cmd).status, 0);
+  ASSERT_EQ(run_cli(cmd).status, 0);
+  auto record = read_json(out / "run.json");
+  for (const char* stage : {"labels", "features", "autoencoder", "train-rgb", "evaluate"})
+    EXPECT_EQ(record[stage]["status"], "reused") << stage;
+
+  // One pixel of one image.
+  const fs::path image = scene / "images" / "0001.png";
+  cv::Mat pixels = cv::imread(image.string(), cv::IMREAD_COLOR);
+  ASSERT_FALSE(pixels.empty());
+  pixels.at<cv::Vec3b>(10, 10) = cv::Vec3b(pixels.at<cv::Vec3b>(10, 10)[0] ^ 0x40, 1, 2);
+  ASSERT_TRUE(cv::imwrite(image.string(), pixels));
+  ASSERT_EQ(run_cli(cmd).status, 0);
+  record = read_json(out / "run.json");
+  EXPECT_EQ(record["labels"]["status"], "reused");
+  EXPECT_EQ(record["features"]["status"], "done");
+  EXPECT_EQ(record["features"]["computed_views"], 1);
+  for (const char* stage : {"autoencoder", "train-rgb", "evaluate"}) EXPECT_EQ(record[stage]["status"], "done") << stage;
+  EXPECT_EQ(record["train-language"]["citylangsplat"]["status"], "done");
+
+  // The city transform's bytes (same meaning).
+  const fs::path transform = scene / "city" / "transform.json";
+  cls::write_text_atomic(transform, cls::read_text_file(transform) + " ");
+  ASSERT_EQ(run_cli(cmd).status, 0);
+  record = read_json(out / "run.json");
+  EXPECT_EQ(record["labels"]["status"], "done");
+  EXPECT_EQ(record["train-rgb"]["status"], "reused");
+  fs::remove_all(scene);
+}
