@@ -137,8 +137,6 @@ void write_stamp(const fs::path& stamp, const std::string& fingerprint) {
   write_text_atomic(stamp, nlohmann::json({{"fingerprint", fingerprint}}).dump(2) + "\n");
 }
 
-std::string file_fingerprint(const fs::path& path) { return fnv1a64_hex(read_text_file(path)); }
-
 // A training stage resumes its checkpoint only when the checkpoint belongs to a run of the same
 // inputs: `started` records the fingerprint when training starts (a finished stage writes its stamp);
 // a checkpoint of other inputs is deleted so that it can never be resumed later.
@@ -388,8 +386,8 @@ int cmd_run(int argc, char** argv) {
   // Stage: language fields (3.3): CityLangSplat, and LangSplat's objective on identical inputs.
   std::vector<std::pair<std::string, fs::path>> methods = {{"citylangsplat", out / "language" / "citylangsplat"}};
   if (!args.flag_set("no-baseline")) methods.push_back({"langsplat", out / "language" / "langsplat"});
-  const std::string geometry_fp = file_fingerprint(geometry);
-  const std::string ae_fp = file_fingerprint(ae_path);
+  const std::string geometry_fp = file_fnv1a64_hex(geometry);
+  const std::string ae_fp = file_fnv1a64_hex(ae_path);
   nlohmann::json language_record = nlohmann::json::object();
   for (const auto& [method, dir] : methods) {
     LanguageTrainOptions o;
@@ -426,7 +424,7 @@ int cmd_run(int argc, char** argv) {
   save_record();
   std::string latents_fingerprint;
   for (const auto& [method, dir] : methods)
-    latents_fingerprint += method + ":" + file_fingerprint(dir / "latents.safetensors") + ";";
+    latents_fingerprint += method + ":" + file_fnv1a64_hex(dir / "latents.safetensors") + ";";
 
   // Stage: queries for the taxonomy's classes (scores and selections per Gaussian, maps of the first
   // views).
@@ -462,7 +460,7 @@ int cmd_run(int argc, char** argv) {
   const fs::path gt = scene_dir / "gt" / "points.ply";
   if (!fs::exists(gt)) {
     record["evaluate"] = {{"status", "skipped: no " + gt.string()}};
-  } else if (const std::string fp = hex64(fnv1a64(cat(file_fingerprint(gt), "|", latents_fingerprint)));
+  } else if (const std::string fp = hex64(fnv1a64(cat(file_fnv1a64_hex(gt), "|", latents_fingerprint)));
              stage_is_current(out / "eval" / "stage.json", fp) && fs::exists(out / "eval" / "eval.md")) {
     log_info("run: evaluate: up to date (reused): " + (out / "eval" / "eval.md").string());
     record["evaluate"] = {{"status", "reused"}, {"tables", (out / "eval" / "eval.md").string()}};

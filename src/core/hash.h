@@ -3,7 +3,10 @@
 // cryptographic; it only has to notice that an input changed.
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <string>
+
+#include "core/atomic_file.h"
 
 namespace cls {
 
@@ -19,5 +22,8 @@ inline std::string hex64(uint64_t h) {
 }
 
 inline std::string fnv1a64_hex(const std::string& bytes) { return hex64(fnv1a64(bytes)); }
+
+// The hash of a whole file's bytes (cls::Error naming the file if it cannot be read).
+inline std::string file_fnv1a64_hex(const std::filesystem::path& path) { return fnv1a64_hex(read_text_file(path)); }
 
 }  // namespace cls

@@ -24,8 +24,6 @@ namespace {
 
 const char* mode_name(RegionMode m) { return m == RegionMode::Class ? "class" : "instance"; }
 
-std::string file_hash(const fs::path& p) { return fnv1a64_hex(read_text_file(p)); }
-
 struct ViewJob {
   const SceneView* view = nullptr;
   fs::path label_dir, out_dir;
@@ -86,16 +84,16 @@ int run_feature_stage(const Scene& scene, FeatureProvider& provider, const Taxon
       const fs::path p = job.label_dir / f;
       if (!fs::is_regular_file(p))
         fail(p.string(), "missing: no label maps for view '" + job.view->name + "' (run `citylangsplat raycast`)");
-      labels[f] = file_hash(p);
+      labels[f] = file_fnv1a64_hex(p);
     }
     if (options.region_mode == RegionMode::Instance) {
       const fs::path p = job.label_dir / "building.png";
       if (!fs::is_regular_file(p)) fail(p.string(), "missing: instance regions need the building map");
-      labels["building.png"] = file_hash(p);
+      labels["building.png"] = file_fnv1a64_hex(p);
     }
     job.stamp = common;
     job.stamp["labels"] = labels;
-    job.stamp["image"] = {{"file", file_hash(job.view->image_path)},
+    job.stamp["image"] = {{"file", file_fnv1a64_hex(job.view->image_path)},
                           {"width", job.view->camera.width},
                           {"height", job.view->camera.height}};
     jobs.push_back(std::move(job));
