@@ -86,6 +86,8 @@ int cmd_evaluate(int argc, char** argv) {
       .option("provider", "", "feature provider spec, JSON text or file (default: the first model's model.json provider)")
       .option("taxonomy", "", "taxonomy JSON (default: the built-in one)")
       .option("gt-point-radius", "0", "GT projection footprint radius in scene units (0 = from the cloud's spacing)")
+      .option("labels", "", "raycast label maps of these views (`citylangsplat raycast` output): adds 2D scores on the GT "
+              "the city model covers (M = 1) and the label maps themselves as a reference row, the CityGML ceiling")
       .option("resolution", "1", "3DGS-style downscaling factor of the views: 1, 2, 4 or 8", "r")
       .flag("no-images", "do not write the per-view GT/prediction PNGs");
   std::vector<char*> rest_argv{argv[0]};
@@ -93,7 +95,8 @@ int cmd_evaluate(int argc, char** argv) {
   if (!args.parse(int(rest_argv.size()), rest_argv.data())) return 0;
   if (!args.has("scene")) throw UsageError("evaluate: --scene is required");
   if (!args.has("out")) throw UsageError("evaluate: --out is required");
-  if (models.empty()) throw UsageError("evaluate: at least one --model NAME=DIR is required");
+  if (models.empty() && !args.has("labels"))
+    throw UsageError("evaluate: at least one --model NAME=DIR (or --labels DIR) is required");
   for (size_t i = 0; i < models.size(); ++i)
     for (size_t j = 0; j < i; ++j)
       if (models[i].first == models[j].first) throw UsageError("evaluate: model name '" + models[i].first + "' given twice");
@@ -111,6 +114,7 @@ int cmd_evaluate(int argc, char** argv) {
   options.level_rule = args.get("level-rule");
   options.gt_point_radius = args.get_double("gt-point-radius");
   options.write_view_images = !args.flag_set("no-images");
+  options.labels_dir = args.get("labels");
   const fs::path out = args.get("out");
   fs::create_directories(out);
 
@@ -132,6 +136,11 @@ int cmd_evaluate(int argc, char** argv) {
     r["model_dir"] = dir;
     log_info(cat("  2D mIoU ", r["2d"]["miou"].get<double>(), ", 3D mIoU ", r["3d"]["miou"].get<double>()));
     results.emplace_back(name, std::move(r));
+  }
+  if (!options.labels_dir.empty()) {
+    log_info("evaluate: " + std::string(kLabelMapsMethod) + " (" + options.labels_dir + ")");
+    options.out_dir = (out / kLabelMapsMethod).string();
+    results.emplace_back(kLabelMapsMethod, evaluate_label_maps(scene, taxonomy, options));
   }
   nlohmann::json all = nlohmann::json::object();
   nlohmann::json order = nlohmann::json::array();

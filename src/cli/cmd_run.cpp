@@ -467,12 +467,15 @@ int cmd_run(int argc, char** argv) {
   } else {
     EvaluationOptions e;
     e.gt_points = gt.string();
+    e.labels_dir = labels_dir.string();
     std::vector<std::pair<std::string, nlohmann::json>> results;
     for (const auto& [method, dir] : methods) {
       e.out_dir = (out / "eval" / method).string();
       const LanguageModel model = load_language_model(dir.string());
       results.emplace_back(method, evaluate_model(scene, model, *provider, city.taxonomy, e));
     }
+    e.out_dir = (out / "eval" / kLabelMapsMethod).string();
+    results.emplace_back(kLabelMapsMethod, evaluate_label_maps(scene, city.taxonomy, e));
     nlohmann::json all = nlohmann::json::object();
     for (const auto& [method, j] : results) all[method] = j;
     if (!mode.warning.empty()) all["warning"] = mode.warning;

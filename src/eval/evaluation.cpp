@@ -22,6 +22,8 @@
 #include "eval/labelled_points.h"
 #include "eval/metrics_2d.h"
 #include "eval/metrics_3d.h"
+#include "raycast/label_export.h"
+#include "raycast/label_map_io.h"
 #include "query/relevance.h"
 
 namespace fs = std::filesystem;
@@ -162,132 +164,201 @@ at::Tensor class_prototypes(FeatureProvider& provider, const Taxonomy& taxonomy,
   return torch::stack(rows, 0);
 }
 
+namespace {
+
+// What every evaluation shares: the GT cloud, the evaluated classes and their names and colours.
+struct EvaluatedClasses {
+  LabelledPoints gt;
+  std::vector<int> ids;      // taxonomy ids, ascending
+  std::vector<int> eval_of;  // taxonomy id -> evaluated index or -1
+  nlohmann::json names = nlohmann::json::array();
+  std::vector<std::array<unsigned char, 3>> colours;
+  int size() const { return int(ids.size()); }
+  int32_t to_eval(int32_t taxonomy_id) const {
+    return taxonomy_id >= 0 && taxonomy_id < int32_t(eval_of.size()) ? eval_of[size_t(taxonomy_id)] : -1;
+  }
+};
+
+EvaluatedClasses load_evaluated_classes(const Taxonomy& taxonomy, const EvaluationOptions& options) {
+  EvaluatedClasses e;
+  e.gt = read_labelled_points(options.gt_points, options.gt_class_property);
+  e.ids = evaluated_classes(taxonomy, e.gt, options);
+  e.eval_of.assign(taxonomy.classes.size(), -1);
+  for (int k = 0; k < e.size(); ++k) {
+    e.eval_of[size_t(e.ids[k])] = k;
+    e.colours.push_back(taxonomy.classes[size_t(e.ids[k])].color);
+    e.names.push_back(taxonomy.classes[size_t(e.ids[k])].name);
+  }
+  return e;
+}
+
+// Confusion counts and per-image class averages over a set of images (Tables 1 and 3).
+struct Scores2d {
+  ConfusionMatrix total;
+  PerImageClassAverages per_image;
+  int64_t pixels = 0, valid_gt = 0, scored = 0;
+  explicit Scores2d(int K) : total(K), per_image(K) {}
+
+  ImageScoring add(const std::vector<int32_t>& gt, const std::vector<int32_t>& pred) {
+    ImageScoring s = score_labels(gt, pred, total.num_classes());
+    total.add(s.confusion);
+    per_image.add_image(s.confusion);
+    pixels += s.pixels;
+    valid_gt += s.valid_gt;
+    scored += s.scored;
+    return s;
+  }
+
+  nlohmann::json json(const nlohmann::json& names) const {
+    const SegmentationScores s = segmentation_scores(total);
+    nlohmann::json per_class = nlohmann::json::object(), pooled = nlohmann::json::object();
+    for (int k = 0; k < total.num_classes(); ++k) {
+      const ClassScores m = per_image.mean(k);
+      per_class[names[k].get<std::string>()] = {
+          {"iou", m.iou}, {"precision", m.precision}, {"recall", m.recall}, {"images", per_image.images_with(k)}};
+      pooled[names[k].get<std::string>()] = scores_json(s.per_class[size_t(k)]);
+    }
+    return {{"gt_coverage", pixels ? double(valid_gt) / double(pixels) : 0.0},
+            {"coverage", valid_gt ? double(scored) / double(valid_gt) : 0.0},
+            {"miou", s.miou},
+            {"wiou", s.wiou},
+            {"accuracy", s.accuracy},
+            {"classes_in_miou", s.classes_in_miou},
+            {"pixels", pixels},
+            {"valid_gt_pixels", valid_gt},
+            {"scored_pixels", scored},
+            {"per_class", per_class},
+            {"per_class_pooled", pooled},
+            {"confusion", confusion_json(total)}};
+  }
+};
+
+// A method's 2D prediction for one view: evaluated class index per pixel (row-major H x W), -1 = none.
+// It may add fields to the view's record (e.g. the levels it read).
+using Predict2d = std::function<std::vector<int32_t>(const SceneView& view, size_t index, nlohmann::json& record)>;
+
+// The 2D evaluation (paper 4.3) of any prediction: GT label images projected from the cloud, scored on
+// valid GT pixels ("2d") and, when options.labels_dir is set, on those the city model covers (M = 1,
+// "2d_covered"). `visible` (optional, gt.size()) receives which GT points win some pixel of some view.
+nlohmann::json evaluate_2d(const Scene& scene, const EvaluatedClasses& ec, const EvaluationOptions& options,
+                           const Predict2d& predict, std::vector<uint8_t>* visible) {
+  const int K = ec.size();
+  GtProjectionOptions popt;
+  popt.point_radius = options.gt_point_radius;
+  const double radius = footprint_radius(ec.gt, popt);
+  const std::vector<fs::path> label_dirs =
+      options.labels_dir.empty() ? std::vector<fs::path>() : label_map_dirs(scene, options.labels_dir);
+  Scores2d all(K), covered(K);
+  nlohmann::json views = nlohmann::json::array();
+  const fs::path view_dir = options.out_dir.empty() ? fs::path() : fs::path(options.out_dir) / "views";
+  if (!view_dir.empty() && options.write_view_images) fs::create_directories(view_dir);
+  Progress progress("evaluate 2D", scene.views.size(), "views");
+  for (size_t i = 0; i < scene.views.size(); ++i) {
+    const SceneView& v = scene.views[i];
+    const int H = v.camera.height, W = v.camera.width;
+    cv::Mat winner;
+    const cv::Mat proj = project_gt_labels(ec.gt, v.camera, v.pose, radius, popt, nullptr, &winner);
+    if (visible)
+      for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x)
+          if (const int32_t w = winner.at<int32_t>(y, x); w >= 0) (*visible)[size_t(w)] = 1;
+    std::vector<int32_t> gt_labels(size_t(H) * W);
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) gt_labels[size_t(y) * W + x] = ec.to_eval(proj.at<int32_t>(y, x));
+
+    nlohmann::json record = {{"name", v.name}};
+    const std::vector<int32_t> pred = predict(v, i, record);
+    const ImageScoring s = all.add(gt_labels, pred);
+    const SegmentationScores vs = segmentation_scores(s.confusion);
+    record["gt_coverage"] = s.pixels ? double(s.valid_gt) / double(s.pixels) : 0.0;
+    record["coverage"] = s.valid_gt ? double(s.scored) / double(s.valid_gt) : 0.0;
+    record["miou"] = vs.miou;
+    record["wiou"] = vs.wiou;
+    record["accuracy"] = vs.accuracy;
+    if (!label_dirs.empty()) {
+      const cv::Mat m = read_label_png(label_dirs[i] / "coverage.png", CV_8UC1, H, W);
+      std::vector<int32_t> gt_covered = gt_labels;
+      for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x)
+          if (m.at<uint8_t>(y, x) == 0) gt_covered[size_t(y) * W + x] = -1;
+      record["miou_covered"] = segmentation_scores(covered.add(gt_covered, pred).confusion).miou;
+    }
+    views.push_back(record);
+    if (!view_dir.empty() && options.write_view_images) {
+      const std::string stem = fs::path(v.name).stem().string();
+      write_png(view_dir / (stem + "_gt.png"), colourise(gt_labels, H, W, ec.colours, cv::Vec3b(0, 0, 0)));
+      write_png(view_dir / (stem + "_pred.png"), colourise(pred, H, W, ec.colours, cv::Vec3b(64, 64, 64)));
+    }
+    progress.advance();
+  }
+  nlohmann::json out = {{"gt_point_radius", radius}, {"2d", all.json(ec.names)}};
+  out["2d"]["views"] = views;
+  if (!label_dirs.empty()) out["2d_covered"] = covered.json(ec.names);
+  return out;
+}
+
+nlohmann::json common_json(const EvaluatedClasses& ec, const EvaluationOptions& options) {
+  return {{"classes", ec.names},
+          {"threshold_2d", options.threshold_2d},
+          {"match_radius", options.match_radius},
+          {"gt_points", options.gt_points},
+          {"labels", options.labels_dir}};
+}
+
+}  // namespace
+
 nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, FeatureProvider& provider,
                               const Taxonomy& taxonomy, const EvaluationOptions& options) {
   if (options.level_rule != "fallback" && options.level_rule != "langsplat")
     throw UsageError("evaluate: level rule must be 'fallback' or 'langsplat', got '" + options.level_rule + "'");
   at::NoGradGuard no_grad;
-  const LabelledPoints gt = read_labelled_points(options.gt_points, options.gt_class_property);
-  const std::vector<int> classes = evaluated_classes(taxonomy, gt, options);
-  const int K = int(classes.size());
-  std::vector<int> eval_of(taxonomy.classes.size(), -1);
-  for (int k = 0; k < K; ++k) eval_of[size_t(classes[k])] = k;
-  auto to_eval = [&](int32_t l) { return l >= 0 && l < int32_t(eval_of.size()) ? eval_of[size_t(l)] : -1; };
-
-  const at::Tensor prototypes = class_prototypes(provider, taxonomy, classes);
+  const EvaluatedClasses ec = load_evaluated_classes(taxonomy, options);
+  const int K = ec.size();
+  const at::Tensor prototypes = class_prototypes(provider, taxonomy, ec.ids);
   const std::vector<int> levels = available_levels(model);
   const bool langsplat_rule = options.level_rule == "langsplat";
   std::vector<int> class_level(K);
   for (int k = 0; k < K; ++k) {
-    class_level[k] = fallback_level(taxonomy.classes[size_t(classes[k])]);
+    class_level[k] = fallback_level(taxonomy.classes[size_t(ec.ids[k])]);
     if (!langsplat_rule && !model.latents[size_t(class_level[k] - 1)].defined())
-      throw Error("evaluate: class '" + taxonomy.classes[size_t(classes[k])].name + "' is read at level " +
+      throw Error("evaluate: class '" + taxonomy.classes[size_t(ec.ids[k])].name + "' is read at level " +
                   std::to_string(class_level[k]) + ", which the language model does not have");
   }
   std::set<int> used_levels;
   if (langsplat_rule) used_levels.insert(levels.begin(), levels.end());
   else used_levels.insert(class_level.begin(), class_level.end());
 
-  std::vector<std::array<unsigned char, 3>> colours;
-  nlohmann::json class_names = nlohmann::json::array();
-  for (int id : classes) {
-    colours.push_back(taxonomy.classes[size_t(id)].color);
-    class_names.push_back(taxonomy.classes[size_t(id)].name);
-  }
-  const fs::path view_dir = options.out_dir.empty() ? fs::path() : fs::path(options.out_dir) / "views";
-  if (!view_dir.empty() && options.write_view_images) fs::create_directories(view_dir);
-
-  // ---- 2D: GT label images projected from the cloud; relevance argmax per pixel.
-  GtProjectionOptions popt;
-  popt.point_radius = options.gt_point_radius;
-  const double radius = footprint_radius(gt, popt);
-  ConfusionMatrix total(K);
-  PerImageClassAverages per_image(K);
-  int64_t pixels = 0, valid_gt = 0, scored = 0;
-  nlohmann::json views = nlohmann::json::array();
-  std::vector<uint8_t> visible(gt.size(), 0);  // GT points nearest at some pixel of some view
-  {
-    Progress progress("evaluate 2D", scene.views.size(), "views");
-    for (const SceneView& v : scene.views) {
-      const int H = v.camera.height, W = v.camera.width;
-      cv::Mat winner;
-      const cv::Mat proj = project_gt_labels(gt, v.camera, v.pose, radius, popt, nullptr, &winner);
-      for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x)
-          if (const int32_t w = winner.at<int32_t>(y, x); w >= 0) visible[size_t(w)] = 1;
-      std::vector<int32_t> gt_labels(size_t(H) * W);
-      for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x) gt_labels[size_t(y) * W + x] = to_eval(proj.at<int32_t>(y, x));
-
-      std::map<int, at::Tensor> cos;  // level -> K x H x W raw cosine
-      for (int l : used_levels)
-        cos[l] = relevance_maps(model, l, v, prototypes, prototypes.slice(0, 0, 1)).cosine.to(torch::kCPU);
-      std::vector<at::Tensor> maps;
-      nlohmann::json chosen = nlohmann::json::array();
-      for (int k = 0; k < K; ++k) {
-        int level = class_level[k];
-        if (langsplat_rule) {
-          double best = -1e300;
-          for (int l : levels) {
-            const double m = cos[l][k].max().item<double>();
-            if (m > best) {
-              best = m;
-              level = l;
-            }
+  // ---- 2D: per class relevance normalised to [0, 1], argmax per pixel, below the threshold ignored.
+  std::vector<uint8_t> visible(ec.gt.size(), 0);  // GT points nearest at some pixel of some view
+  const Predict2d predict = [&](const SceneView& v, size_t, nlohmann::json& record) {
+    std::map<int, at::Tensor> cos;  // level -> K x H x W raw cosine
+    for (int l : used_levels)
+      cos[l] = relevance_maps(model, l, v, prototypes, prototypes.slice(0, 0, 1)).cosine.to(torch::kCPU);
+    std::vector<at::Tensor> maps;
+    nlohmann::json chosen = nlohmann::json::array();
+    for (int k = 0; k < K; ++k) {
+      int level = class_level[k];
+      if (langsplat_rule) {
+        double best = -1e300;
+        for (int l : levels) {
+          const double m = cos[l][k].max().item<double>();
+          if (m > best) {
+            best = m;
+            level = l;
           }
         }
-        chosen.push_back(level);
-        maps.push_back(minmax_normalise(cos[level][k]));
       }
-      const auto [best, arg] = torch::stack(maps, 0).max(0);
-      const at::Tensor pred_t = torch::where(best >= options.threshold_2d, arg, torch::full_like(arg, -1))
-                                    .to(torch::kInt32).contiguous();
-      const int32_t* pp = pred_t.data_ptr<int32_t>();
-      const std::vector<int32_t> pred(pp, pp + size_t(H) * W);
-
-      const ImageScoring s = score_labels(gt_labels, pred, K);
-      total.add(s.confusion);
-      per_image.add_image(s.confusion);
-      pixels += s.pixels;
-      valid_gt += s.valid_gt;
-      scored += s.scored;
-      const SegmentationScores vs = segmentation_scores(s.confusion);
-      views.push_back({{"name", v.name},
-                       {"gt_coverage", s.pixels ? double(s.valid_gt) / double(s.pixels) : 0.0},
-                       {"coverage", s.valid_gt ? double(s.scored) / double(s.valid_gt) : 0.0},
-                       {"miou", vs.miou},
-                       {"wiou", vs.wiou},
-                       {"accuracy", vs.accuracy},
-                       {"levels", chosen}});
-      if (!view_dir.empty() && options.write_view_images) {
-        const std::string stem = fs::path(v.name).stem().string();
-        write_png(view_dir / (stem + "_gt.png"), colourise(gt_labels, H, W, colours, cv::Vec3b(0, 0, 0)));
-        write_png(view_dir / (stem + "_pred.png"), colourise(pred, H, W, colours, cv::Vec3b(64, 64, 64)));
-      }
-      progress.advance();
+      chosen.push_back(level);
+      maps.push_back(minmax_normalise(cos[level][k]));
     }
-  }
-  const SegmentationScores s2 = segmentation_scores(total);
-  nlohmann::json per_class_2d = nlohmann::json::object(), per_class_2d_pooled = nlohmann::json::object();
-  for (int k = 0; k < K; ++k) {
-    const ClassScores m = per_image.mean(k);
-    per_class_2d[class_names[k].get<std::string>()] = {
-        {"iou", m.iou}, {"precision", m.precision}, {"recall", m.recall}, {"images", per_image.images_with(k)}};
-    per_class_2d_pooled[class_names[k].get<std::string>()] = scores_json(s2.per_class[size_t(k)]);
-  }
-  nlohmann::json j2d = {{"gt_coverage", pixels ? double(valid_gt) / double(pixels) : 0.0},
-                        {"coverage", valid_gt ? double(scored) / double(valid_gt) : 0.0},
-                        {"miou", s2.miou},
-                        {"wiou", s2.wiou},
-                        {"accuracy", s2.accuracy},
-                        {"classes_in_miou", s2.classes_in_miou},
-                        {"pixels", pixels},
-                        {"valid_gt_pixels", valid_gt},
-                        {"scored_pixels", scored},
-                        {"per_class", per_class_2d},
-                        {"per_class_pooled", per_class_2d_pooled},
-                        {"confusion", confusion_json(total)},
-                        {"views", views}};
+    record["levels"] = chosen;
+    const auto [best, arg] = torch::stack(maps, 0).max(0);
+    const at::Tensor pred_t =
+        torch::where(best >= options.threshold_2d, arg, torch::full_like(arg, -1)).to(torch::kInt32).contiguous();
+    const int32_t* pp = pred_t.data_ptr<int32_t>();
+    return std::vector<int32_t>(pp, pp + pred_t.numel());
+  };
+  nlohmann::json result = evaluate_2d(scene, ec, options, predict, &visible);
 
   // ---- 3D: every Gaussian's decoded latent argmax over the prototypes; GT points matched to centres.
   const int64_t N = model.gaussians.size();
@@ -321,12 +392,12 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
     const double* m = means.data_ptr<double>() + 3 * i;
     centres[size_t(i)] = {m[0], m[1], m[2]};
   }
-  std::vector<int32_t> gt_eval(gt.size());
-  for (size_t i = 0; i < gt.size(); ++i) gt_eval[i] = to_eval(gt.labels[i]);
+  std::vector<int32_t> gt_eval(ec.gt.size());
+  for (size_t i = 0; i < ec.gt.size(); ++i) gt_eval[i] = ec.to_eval(ec.gt.labels[i]);
   auto scores_3d_json = [&](const std::vector<int32_t>& labels) {
-    const Scores3d s3 = score_3d(gt.positions, labels, centres, centre_labels, K, options.match_radius);
+    const Scores3d s3 = score_3d(ec.gt.positions, labels, centres, centre_labels, K, options.match_radius);
     nlohmann::json per_class = nlohmann::json::object();
-    for (int k = 0; k < K; ++k) per_class[class_names[k].get<std::string>()] = scores_json(s3.scores.per_class[size_t(k)]);
+    for (int k = 0; k < K; ++k) per_class[ec.names[k].get<std::string>()] = scores_json(s3.scores.per_class[size_t(k)]);
     return nlohmann::json{{"coverage", s3.coverage},
                           {"mean_distance", s3.mean_distance},
                           {"miou", s3.scores.miou},
@@ -343,28 +414,64 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
   // The paper's 3D scores use every GT point; a synthetic cloud also samples surfaces no view sees
   // (e.g. a building's ground surface), whose Gaussians no loss reaches: "3d_visible" keeps the GT
   // points that are the nearest point at some pixel of some view.
-  const nlohmann::json j3d = scores_3d_json(gt_eval);
-  for (size_t i = 0; i < gt.size(); ++i)
+  result["3d"] = scores_3d_json(gt_eval);
+  for (size_t i = 0; i < ec.gt.size(); ++i)
     if (!visible[i]) gt_eval[i] = -1;
-  const nlohmann::json j3d_visible = scores_3d_json(gt_eval);
+  result["3d_visible"] = scores_3d_json(gt_eval);
 
   nlohmann::json levels_json = nlohmann::json::array();
   for (int l : class_level) levels_json.push_back(l);
-  return {{"method", model.info.value("method", std::string("unknown"))},
-          {"classes", class_names},
-          {"class_levels", levels_json},
-          {"level_rule", options.level_rule},
-          {"threshold_2d", options.threshold_2d},
-          {"match_radius", options.match_radius},
-          {"gt_points", options.gt_points},
-          {"gt_point_radius", radius},
-          {"provider", provider.spec()},
-          {"2d", j2d},
-          {"3d", j3d},
-          {"3d_visible", j3d_visible}};
+  result.update(common_json(ec, options));
+  result["method"] = model.info.value("method", std::string("unknown"));
+  result["class_levels"] = levels_json;
+  result["level_rule"] = options.level_rule;
+  result["provider"] = provider.spec();
+  return result;
+}
+
+nlohmann::json evaluate_label_maps(const Scene& scene, const Taxonomy& taxonomy, const EvaluationOptions& options) {
+  if (options.labels_dir.empty()) throw UsageError("evaluate: the label-map ceiling needs the label maps' directory");
+  const EvaluatedClasses ec = load_evaluated_classes(taxonomy, options);
+  const std::vector<fs::path> dirs = label_map_dirs(scene, options.labels_dir);
+  // Each pixel takes its finest level's class among the evaluated ones (a window pixel scores as window
+  // when windows are evaluated, as its wall otherwise); no evaluated class at any level = no prediction.
+  const Predict2d predict = [&](const SceneView& v, size_t i, nlohmann::json&) {
+    const int H = v.camera.height, W = v.camera.width;
+    std::vector<int32_t> pred(size_t(H) * W, -1);
+    for (int l = 3; l >= 1; --l) {
+      const cv::Mat m = read_label_png(dirs[i] / ("level" + std::to_string(l) + ".png"), CV_16UC1, H, W);
+      for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x)
+          if (const int32_t c = ec.to_eval(int32_t(m.at<uint16_t>(y, x)) - 1); c >= 0) pred[size_t(y) * W + x] = c;
+    }
+    return pred;
+  };
+  nlohmann::json result = evaluate_2d(scene, ec, options, predict, nullptr);
+  result.update(common_json(ec, options));
+  result["method"] = "city model labels";
+  result["reference"] = true;
+  return result;
 }
 
 namespace {
+
+// A reference row (the label maps' ceiling) is shown but neither bolded nor compared against.
+bool is_reference(const nlohmann::json& j) { return j.is_object() && j.value("reference", false); }
+
+// Whether methods[m]'s value v is strictly better than every other (non-reference) method's; ties stay plain.
+bool strictly_best(const std::vector<std::pair<std::string, nlohmann::json>>& methods, size_t m, double v,
+                   const std::function<double(size_t)>& value_of, bool higher_better) {
+  if (is_reference(methods[m].second) || std::isnan(v)) return false;
+  int compared = 0;
+  for (size_t o = 0; o < methods.size(); ++o) {
+    if (o == m || is_reference(methods[o].second)) continue;
+    const double w = value_of(o);
+    if (std::isnan(w)) continue;
+    ++compared;
+    if (!(higher_better ? v > w + 1e-12 : v < w - 1e-12)) return false;
+  }
+  return compared > 0;
+}
 
 // One Markdown row; the best value of each metric group among the methods in bold.
 struct Column {
@@ -385,11 +492,11 @@ std::string table(const std::vector<std::pair<std::string, nlohmann::json>>& met
     md << "| " << methods[m].first << " |";
     for (const Column& c : cols) {
       const double v = c.value(methods[m].second);
-      // Bold: strictly better than every other method (ties stay plain).
-      bool best = methods.size() > 1;
-      for (size_t o = 0; o < methods.size(); ++o) {
-        const double w = c.value(methods[o].second);
-        if (o != m && !(c.higher_better ? v > w + 1e-12 : v < w - 1e-12)) best = false;
+      const bool best = strictly_best(
+          methods, m, v, [&](size_t o) { return c.value(methods[o].second); }, c.higher_better);
+      if (std::isnan(v)) {  // the method has no such score (the label maps have no 3D)
+        md << " - |";
+        continue;
       }
       const std::string text = c.percent ? pct(v) : fixed2(v);
       md << " " << (best ? "**" + text + "**" : text) << " |";
@@ -400,7 +507,7 @@ std::string table(const std::vector<std::pair<std::string, nlohmann::json>>& met
 }
 
 double get(const nlohmann::json& j, const std::string& a, const std::string& b) {
-  return j.contains(a) && j[a].contains(b) ? j[a][b].get<double>() : 0.0;
+  return j.contains(a) && j[a].contains(b) ? j[a][b].get<double>() : std::nan("");
 }
 
 }  // namespace
@@ -415,6 +522,14 @@ std::string evaluation_tables_markdown(const std::vector<std::pair<std::string, 
                         {"mIoU", [](const nlohmann::json& j) { return get(j, "2d", "miou"); }},
                         {"wIoU", [](const nlohmann::json& j) { return get(j, "2d", "wiou"); }},
                         {"Acc", [](const nlohmann::json& j) { return get(j, "2d", "accuracy"); }}});
+  if (std::any_of(methods.begin(), methods.end(), [](const auto& m) { return m.second.contains("2d_covered"); })) {
+    md << "\n### Table 1b: 2D on the GT pixels the city model covers (coverage M = 1)\n\n";
+    md << table(methods, {{"Cov. GT", [](const nlohmann::json& j) { return get(j, "2d_covered", "gt_coverage"); }},
+                          {"Cov.", [](const nlohmann::json& j) { return get(j, "2d_covered", "coverage"); }},
+                          {"mIoU", [](const nlohmann::json& j) { return get(j, "2d_covered", "miou"); }},
+                          {"wIoU", [](const nlohmann::json& j) { return get(j, "2d_covered", "wiou"); }},
+                          {"Acc", [](const nlohmann::json& j) { return get(j, "2d_covered", "accuracy"); }}});
+  }
   md << "\n### Table 2: 3D (nearest Gaussian centre)\n\n"
         "Cov.: GT points with a Gaussian centre within the radius (%); Dist.: mean match distance (scene units).\n\n";
   md << table(methods, {{"Cov.", [](const nlohmann::json& j) { return get(j, "3d", "coverage"); }},
@@ -454,11 +569,13 @@ std::string evaluation_tables_markdown(const std::vector<std::pair<std::string, 
           continue;
         }
         const double v = (*pc)[metric].get<double>();
-        bool best = methods.size() > 1;
-        for (size_t o = 0; o < methods.size(); ++o) {
-          const nlohmann::json* other = class_scores(o);
-          if (o != m && other && !(v > (*other)[metric].get<double>() + 1e-12)) best = false;
-        }
+        const bool best = strictly_best(
+            methods, m, v,
+            [&](size_t o) {
+              const nlohmann::json* other = class_scores(o);
+              return other ? (*other)[metric].get<double>() : std::nan("");
+            },
+            true);
         md << " " << (best ? "**" + pct(v) + "**" : pct(v)) << " |";
       }
     }

@@ -27,6 +27,9 @@ struct EvaluationOptions {
   // Gaussians) has the highest maximum.
   std::string level_rule = "fallback";
   double gt_point_radius = 0;     // GT projection footprint (scene units); 0 = from the cloud's spacing
+  // The raycast label maps (`citylangsplat raycast` output) of these views: when set, 2D is also scored
+  // on the GT pixels the city model covers (coverage M = 1, "2d_covered"); evaluate_label_maps needs it.
+  std::string labels_dir;
   bool write_view_images = true;  // OUT/views/<stem>_gt.png, <stem>_pred.png (when out_dir is set)
 };
 
@@ -34,6 +37,14 @@ struct EvaluationOptions {
 // per_class {iou, precision, recall}; 3D: miou, wiou, coverage, mean_distance).
 nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, FeatureProvider& provider,
                               const Taxonomy& taxonomy, const EvaluationOptions& options);
+
+// The label maps themselves as a 2D prediction, scored against the same GT: each pixel takes its finest
+// level's class among the evaluated ones, pixels with none are not scored. This is the most the CityGML
+// supervision can give a method in 2D (its alignment, level of detail and the GT projection's own
+// errors limit it), so a method's scores can be read against it. 2D only: no "3d" fields.
+// The label maps' row name in the tables.
+inline constexpr const char* kLabelMapsMethod = "city-model-labels";
+nlohmann::json evaluate_label_maps(const Scene& scene, const Taxonomy& taxonomy, const EvaluationOptions& options);
 
 // The class prototypes (paper 4.3): per class the mean of the provider's text features of its phrase
 // set (the taxonomy's prompts), normalised: classes.size() x D.

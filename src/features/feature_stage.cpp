@@ -15,6 +15,7 @@
 #include "features/city_regions.h"
 #include "features/view_features.h"
 #include "raycast/label_export.h"
+#include "raycast/label_map_io.h"
 #include "scene/image_loader.h"
 
 namespace cls {
@@ -30,18 +31,6 @@ struct ViewJob {
   std::string stem;
   nlohmann::json stamp;
 };
-
-cv::Mat read_map(const fs::path& p, int type, int h, int w) {
-  if (!fs::is_regular_file(p)) fail(p.string(), "missing (run `citylangsplat raycast` to make the label maps)");
-  cv::Mat m = cv::imread(p.string(), cv::IMREAD_UNCHANGED);
-  if (m.empty()) fail(p.string(), "cannot be read as an image");
-  if (m.type() != type)
-    fail(p.string(), std::string("must be a ") + (type == CV_16UC1 ? "16-bit" : "8-bit") + " single-channel PNG");
-  if (m.rows != h || m.cols != w)
-    fail(p.string(), "is " + std::to_string(m.cols) + " x " + std::to_string(m.rows) + " but the view's image is " +
-                         std::to_string(w) + " x " + std::to_string(h) + " (raycast with the same --resolution)");
-  return m;
-}
 
 bool cached(const ViewJob& job) {
   if (!view_features_complete(job.out_dir, job.stem)) return false;
@@ -131,10 +120,10 @@ int run_feature_stage(const Scene& scene, FeatureProvider& provider, const Taxon
     cv::cvtColor(loader.load(sv), view.rgb, cv::COLOR_BGR2RGB);
     const int h = view.rgb.rows, w = view.rgb.cols;
     for (int l = 0; l < 3; ++l)
-      view.labels[l] = read_map(job->label_dir / ("level" + std::to_string(l + 1) + ".png"), CV_16UC1, h, w);
-    view.coverage = read_map(job->label_dir / "coverage.png", CV_8UC1, h, w);
+      view.labels[l] = read_label_png(job->label_dir / ("level" + std::to_string(l + 1) + ".png"), CV_16UC1, h, w);
+    view.coverage = read_label_png(job->label_dir / "coverage.png", CV_8UC1, h, w);
     cv::Mat building;
-    if (options.region_mode == RegionMode::Instance) building = read_map(job->label_dir / "building.png", CV_16UC1, h, w);
+    if (options.region_mode == RegionMode::Instance) building = read_label_png(job->label_dir / "building.png", CV_16UC1, h, w);
 
     ViewFeatures f;
     f.height = h;

@@ -36,6 +36,18 @@ void write_image(const fs::path& path, const cv::Mat& image) {
 
 }  // namespace
 
+cv::Mat read_label_png(const fs::path& p, int type, int h, int w) {
+  if (!fs::is_regular_file(p)) fail(p.string(), "missing (run `citylangsplat raycast` to make the label maps)");
+  cv::Mat m = cv::imread(p.string(), cv::IMREAD_UNCHANGED);
+  if (m.empty()) fail(p.string(), "cannot be read as an image");
+  if (m.type() != type)
+    fail(p.string(), std::string("must be a ") + (type == CV_16UC1 ? "16-bit" : "8-bit") + " single-channel PNG");
+  if (m.rows != h || m.cols != w)
+    fail(p.string(), "is " + std::to_string(m.cols) + " x " + std::to_string(m.rows) + " but the view's image is " +
+                         std::to_string(w) + " x " + std::to_string(h) + " (raycast with the same --resolution)");
+  return m;
+}
+
 void write_png_u16(const fs::path& path, const std::vector<uint16_t>& data, int width, int height) {
   check_size(path, data.size(), width, height);
   write_image(path, cv::Mat(height, width, CV_16UC1, const_cast<uint16_t*>(data.data())));

@@ -3,6 +3,7 @@
 // through write_atomic, so a reader never sees a half-written file.
 #include <cstdint>
 #include <filesystem>
+#include <opencv2/core/mat.hpp>
 #include <vector>
 
 #include "citymodel/taxonomy.h"
@@ -17,6 +18,10 @@ void write_png_u8(const std::filesystem::path& path, const std::vector<uint8_t>&
 // Single-channel PFM ("Pf"): little-endian floats (scale -1.0), rows stored bottom to top as the
 // format prescribes; `data` is row-major top to bottom like every other map.
 void write_pfm(const std::filesystem::path& path, const std::vector<float>& data, int width, int height);
+
+// Reads one label-map PNG: `type` CV_16UC1 (level*.png, building.png) or CV_8UC1 (coverage.png) of
+// width w and height h; cls::Error naming the file if it is missing, unreadable, of another type or size.
+cv::Mat read_label_png(const std::filesystem::path& path, int type, int h, int w);
 
 struct FloatImage {
   int width = 0, height = 0;

@@ -15,9 +15,12 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "eval/evaluation.h"
+#include "eval/gt_projection.h"
 #include "eval/labelled_points.h"
 #include "features/synthetic_provider.h"
 #include "language/language_model.h"
+#include "raycast/label_export.h"
+#include "raycast/label_map_io.h"
 
 namespace fs = std::filesystem;
 using namespace cls;
@@ -218,6 +221,82 @@ TEST(Evaluation, TablesSideBySide) {
   EXPECT_NE(md.find("| CityLangSplat | 50.00 | 90.00 | **30.00** |"), std::string::npos) << md;
   EXPECT_NE(md.find("| Method | Cov. | Dist. | mIoU | wIoU |"), std::string::npos) << md;
   EXPECT_NE(md.find("| window | **10.00** | 20.00 | 30.00 | 5.00 | 20.00 | 30.00 |"), std::string::npos) << md;
+  // A reference row (the label maps: 2D only) is shown, neither bolded nor compared against.
+  nlohmann::json ref = {{"reference", true}, {"classes", {"wall", "window"}}, {"2d", a["2d"]}};
+  ref["2d"]["miou"] = 0.9;
+  const std::string with_ref = evaluation_tables_markdown({{"LangSplat", a}, {"CityLangSplat", b}, {"labels", ref}});
+  EXPECT_NE(with_ref.find("| CityLangSplat | 50.00 | 90.00 | **30.00** |"), std::string::npos) << with_ref;
+  EXPECT_NE(with_ref.find("| labels | 50.00 | 90.00 | 90.00 |"), std::string::npos) << with_ref;
+  EXPECT_NE(with_ref.find("| labels | - | - | - | - |"), std::string::npos) << with_ref;
+  EXPECT_EQ(with_ref.find("Table 1b"), std::string::npos) << "no method has covered scores";
+}
+
+// Label maps made from the projected GT itself score exactly 1 as a prediction; a window pixel is read
+// at level 1 before its wall at level 2; "2d_covered" scores only where the coverage mask is set.
+TEST(Evaluation, LabelMapsOfTheGtItselfScoreExactlyOne) {
+  Fixture& f = fixture();
+  const int window = f.taxonomy.find("window"), wall = f.taxonomy.find("wall");
+  const fs::path labels = f.dir / "gt_labels";
+  const std::vector<fs::path> dirs = label_map_dirs(f.scene, labels);
+  const double radius = footprint_radius(f.gt, GtProjectionOptions{});
+  int64_t gt_pixels = 0, covered_gt_pixels = 0;
+  for (size_t k = 0; k < f.scene.views.size(); ++k) {
+    const SceneView& v = f.scene.views[k];
+    const int W = v.camera.width, H = v.camera.height;
+    const cv::Mat proj = project_gt_labels(f.gt, v.camera, v.pose, radius, GtProjectionOptions{});
+    std::vector<uint16_t> l1(size_t(W) * H, 0), l2(size_t(W) * H, 0), l3(size_t(W) * H, 0);
+    std::vector<uint8_t> cov(size_t(W) * H, 0);
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) {
+        const int c = proj.at<int32_t>(y, x);
+        const size_t i = size_t(y) * W + x;
+        if (c == window) l1[i] = uint16_t(window + 1);
+        if (c == window || c == wall) {
+          l2[i] = uint16_t(wall + 1);
+          ++gt_pixels;
+          if (x >= W / 2) {  // the city model "covers" the right half only
+            cov[i] = 255;
+            ++covered_gt_pixels;
+          }
+        }
+      }
+    fs::create_directories(dirs[k]);
+    write_png_u16(dirs[k] / "level1.png", l1, W, H);
+    write_png_u16(dirs[k] / "level2.png", l2, W, H);
+    write_png_u16(dirs[k] / "level3.png", l3, W, H);
+    write_png_u8(dirs[k] / "coverage.png", cov, W, H);
+  }
+  ASSERT_GT(covered_gt_pixels, 100);
+  ASSERT_LT(covered_gt_pixels, gt_pixels);
+  EvaluationOptions o = options();
+  o.classes = {"window", "wall"};
+  o.labels_dir = labels.string();
+  const nlohmann::json r = evaluate_label_maps(f.scene, f.taxonomy, o);
+  EXPECT_EQ(r["2d"]["valid_gt_pixels"].get<int64_t>(), gt_pixels);
+  EXPECT_EQ(r["2d"]["scored_pixels"].get<int64_t>(), gt_pixels);
+  EXPECT_DOUBLE_EQ(r["2d"]["miou"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(r["2d"]["accuracy"].get<double>(), 1.0);
+  EXPECT_EQ(r["2d"]["classes_in_miou"].get<int>(), 2);
+  EXPECT_EQ(r["2d_covered"]["valid_gt_pixels"].get<int64_t>(), covered_gt_pixels);
+  EXPECT_DOUBLE_EQ(r["2d_covered"]["miou"].get<double>(), 1.0);
+  EXPECT_FALSE(r.contains("3d"));
+  EXPECT_TRUE(r["reference"].get<bool>());
+  // Read with windows not evaluated, a window pixel counts as its wall (level 2): wall alone, exact again.
+  o.classes = {"wall"};
+  const nlohmann::json w = evaluate_label_maps(f.scene, f.taxonomy, o);
+  EXPECT_DOUBLE_EQ(w["2d"]["miou"].get<double>(), 1.0);
+  // A language model evaluated with the label maps also gets the covered scores.
+  o.classes = {"window", "wall"};
+  const nlohmann::json m = evaluate_model(f.scene, make_model(), *f.provider, f.taxonomy, o);
+  EXPECT_EQ(m["2d_covered"]["valid_gt_pixels"].get<int64_t>(), covered_gt_pixels);
+  // A label map of the wrong size is named.
+  write_png_u8(dirs[0] / "coverage.png", std::vector<uint8_t>(4, 0), 2, 2);
+  try {
+    evaluate_label_maps(f.scene, f.taxonomy, o);
+    FAIL() << "a 2 x 2 coverage map was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("coverage.png"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Evaluation, CliWritesJsonAndMarkdownForTwoModels) {

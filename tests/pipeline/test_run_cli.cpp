@@ -149,6 +149,9 @@ TEST(RunCli, TinyModelsRunEveryStageOnTheBundledExampleAndASecondRunReusesThem) 
   EXPECT_NE(record["warning"].get<std::string>().find("meaningless"), std::string::npos);
   const std::string tables = cls::read_text_file(out / "eval" / "eval.md");
   EXPECT_NE(tables.find("meaningless"), std::string::npos);
+  // The label maps' reference row and the scores on the covered GT.
+  EXPECT_NE(tables.find("| city-model-labels |"), std::string::npos) << tables;
+  EXPECT_NE(tables.find("Table 1b"), std::string::npos) << tables;
   EXPECT_NE(cls::read_text_file(out / "features" / "features.json").find("meaningless"), std::string::npos);
 
   const auto second = run_cli(cmd);
