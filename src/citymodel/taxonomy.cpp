@@ -120,4 +120,26 @@ std::string Taxonomy::legend_json() const {
   return legend.dump(2) + "\n";
 }
 
+Taxonomy Taxonomy::from_legend(const std::string& legend_json, const std::string& file) {
+  Taxonomy t;
+  try {
+    const json legend = json::parse(legend_json);
+    if (!legend.is_array()) fail(file, "taxonomy: the legend is not an array of classes");
+    for (size_t i = 0; i < legend.size(); ++i) {
+      const json& c = legend.at(i);
+      if (c.value("id", static_cast<int>(i)) != static_cast<int>(i))
+        fail(file, "taxonomy: class " + std::to_string(i) + " has id " + c["id"].dump());
+      SemanticClass sc;
+      sc.name = c.at("name").get<std::string>();
+      sc.level = c.value("level", 2);
+      sc.prompts = c.value("prompts", std::vector<std::string>{});
+      if (c.contains("color")) sc.color = c["color"].get<std::array<unsigned char, 3>>();
+      t.classes.push_back(std::move(sc));
+    }
+  } catch (const json::exception& e) {
+    fail(file, std::string("taxonomy: ") + e.what());
+  }
+  return t;
+}
+
 }  // namespace cls

@@ -31,6 +31,10 @@ struct Taxonomy {
   int find(const std::string& name) const;
   // legend.json content: [{"id":k,"name":...,"level":...,"color":[r,g,b],"prompts":[...]}, ...]
   std::string legend_json() const;
+  // A taxonomy recorded as its legend (what the features stage and language training write): class
+  // order, names, levels, prompts and colours; the source types are not recorded (not needed to encode
+  // text or colour a map). cls::Error naming `file` on malformed JSON or out-of-order ids.
+  static Taxonomy from_legend(const std::string& legend_json, const std::string& file);
 };
 
 }  // namespace cls

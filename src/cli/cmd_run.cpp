@@ -399,8 +399,10 @@ int cmd_run(int argc, char** argv) {
     o.lambda_sam = args.get_double("lambda-sam");
     o.lambda_citygml = args.get_double("lambda-citygml");
     o.baseline = method == "langsplat";
-    const std::string fp = hex64(fnv1a64(cat(geometry_fp, "|", ae_fp, "|", features_fingerprint, "|", o.iterations,
-                                             "|", o.lambda_sam, "|", o.lambda_citygml, "|", o.baseline)));
+    // The baseline's objective has no lambdas (LangSplat's L1 on every pixel): changing them keeps it.
+    const std::string weights = o.baseline ? "langsplat" : cat(o.lambda_sam, "|", o.lambda_citygml);
+    const std::string fp =
+        hex64(fnv1a64(cat(geometry_fp, "|", ae_fp, "|", features_fingerprint, "|", o.iterations, "|", weights)));
     const fs::path lstamp = dir / "stage.json";
     if (stage_is_current(lstamp, fp) && fs::exists(dir / "model.json")) {
       log_info("run: train-language (" + method + "): up to date (reused)");

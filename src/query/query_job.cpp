@@ -70,33 +70,10 @@ std::vector<const SceneView*> pick_views(const Scene& scene, const std::vector<s
   return out;
 }
 
-// A taxonomy recorded as its legend (Taxonomy::legend_json(), what the features stage and language
-// training write): class order, names, levels, prompts and colours; the CityGML source types are not
-// recorded and not needed to encode text.
-Taxonomy taxonomy_from_legend(const json& legend, const std::string& file) {
-  Taxonomy t;
-  try {
-    for (size_t i = 0; i < legend.size(); ++i) {
-      const json& c = legend.at(i);
-      if (c.value("id", static_cast<int>(i)) != static_cast<int>(i))
-        fail(file, "taxonomy: class " + std::to_string(i) + " has id " + c["id"].dump());
-      SemanticClass sc;
-      sc.name = c.at("name").get<std::string>();
-      sc.level = c.value("level", 2);
-      sc.prompts = c.value("prompts", std::vector<std::string>{});
-      if (c.contains("color")) sc.color = c["color"].get<std::array<unsigned char, 3>>();
-      t.classes.push_back(std::move(sc));
-    }
-  } catch (const json::exception& e) {
-    fail(file, std::string("taxonomy: ") + e.what());
-  }
-  return t;
-}
-
 // --taxonomy, else what model.json records (a legend array, or a path), else the built-in one.
 Taxonomy taxonomy_for(const QueryOptions& o, const json& info, const std::string& model_json) {
   if (!o.taxonomy_path.empty()) return Taxonomy::load(o.taxonomy_path);
-  if (info.contains("taxonomy") && info["taxonomy"].is_array()) return taxonomy_from_legend(info["taxonomy"], model_json);
+  if (info.contains("taxonomy") && info["taxonomy"].is_array()) return Taxonomy::from_legend(info["taxonomy"].dump(), model_json);
   if (info.contains("taxonomy") && info["taxonomy"].is_string()) {
     const std::string path = info["taxonomy"].get<std::string>();
     if (!path.empty()) {

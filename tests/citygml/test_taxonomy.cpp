@@ -67,6 +67,28 @@ TEST(Taxonomy, LegendJsonListsClassesById) {
   }
 }
 
+TEST(Taxonomy, FromLegendRestoresWhatTheLegendRecords) {
+  const Taxonomy tax = Taxonomy::builtin();
+  const Taxonomy back = Taxonomy::from_legend(tax.legend_json(), "legend.json");
+  ASSERT_EQ(back.classes.size(), tax.classes.size());
+  for (size_t k = 0; k < tax.classes.size(); ++k) {
+    EXPECT_EQ(back.classes[k].name, tax.classes[k].name);
+    EXPECT_EQ(back.classes[k].level, tax.classes[k].level);
+    EXPECT_EQ(back.classes[k].prompts, tax.classes[k].prompts);
+    EXPECT_EQ(back.classes[k].color, tax.classes[k].color);
+    EXPECT_TRUE(back.classes[k].source_types.empty());
+  }
+  // Errors name the file: ids out of order, a class without a name, not JSON, not an array.
+  for (const char* bad : {R"([{"id":1,"name":"a"}])", R"([{"id":0}])", "[{", R"({"name":"a"})"}) {
+    try {
+      Taxonomy::from_legend(bad, "model.json");
+      ADD_FAILURE() << "accepted: " << bad;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("model.json"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(Taxonomy, UserFileWithOptionalFieldsOmitted) {
   const std::string path = write_temp("minimal.json", R"({"classes":[
       {"name":"facade","level":2,"source_types":["WallSurface","RoofSurface"]},

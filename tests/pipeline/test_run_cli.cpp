@@ -203,5 +203,11 @@ TEST(RunCli, ChangedInputsRedoExactlyTheStagesThatDependOnThem) {
   record = read_json(out / "run.json");
   EXPECT_EQ(record["labels"]["status"], "done");
   EXPECT_EQ(record["train-rgb"]["status"], "reused");
+
+  // Another CityGML weight retrains CityLangSplat only: the baseline's objective has no lambdas.
+  ASSERT_EQ(run_cli(cmd + " --lambda-citygml 0.25").status, 0);
+  record = read_json(out / "run.json");
+  EXPECT_EQ(record["train-language"]["citylangsplat"]["status"], "done");
+  EXPECT_EQ(record["train-language"]["langsplat"]["status"], "reused");
   fs::remove_all(scene);
 }
