@@ -71,6 +71,21 @@ std::vector<int> evaluated_classes(const Taxonomy& taxonomy, const LabelledPoint
 // The paper's "fallback" level of a class: the subpart map carries parts (docs/conventions.md).
 int fallback_level(const SemanticClass& c) { return c.level == 3 ? 3 : 1; }
 
+// The level whose field answers a class: its fallback level, or with LangSplat's rule the level whose
+// map has the highest maximum (`max_at(level)`; ties: the lower level).
+int answering_level(int fallback, bool langsplat_rule, const std::vector<int>& levels,
+                    const std::function<double(int)>& max_at) {
+  if (!langsplat_rule) return fallback;
+  int level = fallback;
+  double best = -1e300;
+  for (int l : levels)
+    if (const double m = max_at(l); m > best) {
+      best = m;
+      level = l;
+    }
+  return level;
+}
+
 std::vector<int> available_levels(const LanguageModel& model) {
   std::vector<int> levels;
   for (int l = 1; l <= 3; ++l)
@@ -337,17 +352,8 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
     std::vector<at::Tensor> maps;
     nlohmann::json chosen = nlohmann::json::array();
     for (int k = 0; k < K; ++k) {
-      int level = class_level[k];
-      if (langsplat_rule) {
-        double best = -1e300;
-        for (int l : levels) {
-          const double m = cos[l][k].max().item<double>();
-          if (m > best) {
-            best = m;
-            level = l;
-          }
-        }
-      }
+      const int level = answering_level(class_level[k], langsplat_rule, levels,
+                                        [&](int l) { return cos[l][k].max().item<double>(); });
       chosen.push_back(level);
       maps.push_back(minmax_normalise(cos[level][k]));
     }
@@ -367,17 +373,9 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
   std::vector<at::Tensor> cols;
   nlohmann::json levels_3d = nlohmann::json::array();
   for (int k = 0; k < K; ++k) {
-    int level = class_level[k];
-    if (langsplat_rule) {
-      double best = -1e300;
-      for (int l : levels) {
-        const double m = N > 0 ? gcos[l].select(1, k).max().item<double>() : 0.0;
-        if (m > best) {
-          best = m;
-          level = l;
-        }
-      }
-    }
+    const int level = answering_level(class_level[k], langsplat_rule, levels, [&](int l) {
+      return N > 0 ? gcos[l].select(1, k).max().item<double>() : 0.0;
+    });
     levels_3d.push_back(level);
     cols.push_back(gcos[level].select(1, k));
   }
