@@ -1,5 +1,6 @@
 #include "eval/metrics_3d.h"
 
+#include <limits>
 #include <stdexcept>
 
 #include "eval/kd_tree.h"
@@ -49,6 +50,26 @@ Scores3d score_3d(const std::vector<Vec3d>& gt_points, const std::vector<int32_t
   s.coverage = m.coverage;
   s.mean_distance = m.mean_distance;
   return s;
+}
+
+std::vector<int32_t> nearest_gt_labels(const std::vector<Vec3d>& centres, const std::vector<Vec3d>& gt_points,
+                                       const std::vector<int32_t>& gt_labels) {
+  if (gt_points.size() != gt_labels.size())
+    throw std::invalid_argument("nearest_gt_labels: GT points and labels differ in size");
+  std::vector<Vec3d> labelled;
+  std::vector<int32_t> labels;
+  for (size_t i = 0; i < gt_points.size(); ++i)
+    if (gt_labels[i] >= 0) {
+      labelled.push_back(gt_points[i]);
+      labels.push_back(gt_labels[i]);
+    }
+  std::vector<int32_t> out(centres.size(), 0);
+  if (labelled.empty()) return out;
+  const KdTree tree(std::move(labelled));
+#pragma omp parallel for schedule(static)
+  for (int64_t i = 0; i < int64_t(centres.size()); ++i)
+    out[size_t(i)] = labels[size_t(tree.nearest(centres[size_t(i)], std::numeric_limits<double>::infinity()).index)];
+  return out;
 }
 
 }  // namespace cls

@@ -32,4 +32,9 @@ Scores3d score_3d(const std::vector<Vec3d>& gt_points, const std::vector<int32_t
                   const std::vector<Vec3d>& centres, const std::vector<int32_t>& centre_labels, int num_classes,
                   double radius);
 
+// The centres' labels of a perfect field, the geometry's ceiling of the 3D scores: each centre takes the
+// class of its nearest GT point with a label >= 0 (ties: the lower index); all 0 if no GT point has one.
+std::vector<int32_t> nearest_gt_labels(const std::vector<Vec3d>& centres, const std::vector<Vec3d>& gt_points,
+                                       const std::vector<int32_t>& gt_labels);
+
 }  // namespace cls

@@ -135,6 +135,35 @@ TEST(KdTree, MatchesBruteForceOnRandomPoints) {
   EXPECT_EQ(KdTree({}).nearest({0, 0, 0}, 1.0).index, -1);
 }
 
+TEST(Metrics3d, NearestGtLabelsMatchBruteForce) {
+  // By hand: unlabelled points are skipped, ties go to the lower index.
+  const std::vector<Vec3d> gt{{0, 0, 0}, {1, 0, 0}, {0.5, 0, 0}, {3, 0, 0}};
+  const std::vector<int32_t> labels{2, 1, -1, 0};
+  EXPECT_EQ(nearest_gt_labels({{0.5, 0, 0}, {2.1, 0, 0}, {-5, 0, 0}}, gt, labels), (std::vector<int32_t>{2, 0, 2}));
+  EXPECT_EQ(nearest_gt_labels({{0, 0, 0}}, gt, {-1, -1, -1, -1}), (std::vector<int32_t>{0}));
+  // Random: against a brute-force search.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Vec3d> pts, centres;
+  std::vector<int32_t> cls_of;
+  for (int i = 0; i < 1500; ++i) {
+    pts.push_back({u(rng), u(rng), u(rng)});
+    cls_of.push_back(i % 7 == 0 ? -1 : i % 4);
+  }
+  for (int i = 0; i < 300; ++i) centres.push_back({1.4 * u(rng) - 0.2, u(rng), u(rng)});
+  const std::vector<int32_t> got = nearest_gt_labels(centres, pts, cls_of);
+  for (size_t c = 0; c < centres.size(); ++c) {
+    double best = 1e300;
+    int32_t want = -1;
+    for (size_t i = 0; i < pts.size(); ++i)
+      if (cls_of[i] >= 0 && norm(pts[i] - centres[c]) < best) {
+        best = norm(pts[i] - centres[c]);
+        want = cls_of[i];
+      }
+    ASSERT_EQ(got[c], want) << c;
+  }
+}
+
 TEST(Metrics3d, HandComputedMatching) {
   const std::vector<Vec3d> centres{{0, 0, 0}, {1, 0, 0}};
   const std::vector<int32_t> centre_labels{0, 1};
