@@ -42,6 +42,9 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
 // level's class among the evaluated ones, pixels with none are not scored. This is the most the CityGML
 // supervision can give a method in 2D (its alignment, level of detail and the GT projection's own
 // errors limit it), so a method's scores can be read against it. 2D only: no "3d" fields.
+// The tables' layout version: `run` recomputes an evaluation written by another version.
+inline constexpr const char* kEvaluationTables = "2026-11-22 ceilings";
+
 // The label maps' row name in the tables.
 inline constexpr const char* kLabelMapsMethod = "city-model-labels";
 nlohmann::json evaluate_label_maps(const Scene& scene, const Taxonomy& taxonomy, const EvaluationOptions& options);
