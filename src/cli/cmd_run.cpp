@@ -462,7 +462,8 @@ int cmd_run(int argc, char** argv) {
   const fs::path gt = scene_dir / "gt" / "points.ply";
   if (!fs::exists(gt)) {
     record["evaluate"] = {{"status", "skipped: no " + gt.string()}};
-  } else if (const std::string fp = hex64(fnv1a64(cat(file_fnv1a64_hex(gt), "|", latents_fingerprint, "|", kEvaluationTables)));
+  } else if (const std::string fp =
+                 hex64(fnv1a64(cat(file_fnv1a64_hex(gt), "|", latents_fingerprint, "|", kEvaluationTables)));
              stage_is_current(out / "eval" / "stage.json", fp) && fs::exists(out / "eval" / "eval.md")) {
     log_info("run: evaluate: up to date (reused): " + (out / "eval" / "eval.md").string());
     record["evaluate"] = {{"status", "reused"}, {"tables", (out / "eval" / "eval.md").string()}};
