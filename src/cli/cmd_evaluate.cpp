@@ -115,6 +115,8 @@ int cmd_evaluate(int argc, char** argv) {
   options.gt_point_radius = args.get_double("gt-point-radius");
   options.write_view_images = !args.flag_set("no-images");
   options.labels_dir = args.get("labels");
+  if (!options.labels_dir.empty() && !fs::is_directory(options.labels_dir))
+    fail(options.labels_dir, "--labels: not a directory (the `citylangsplat raycast` output for these views)");
   const fs::path out = args.get("out");
   fs::create_directories(out);
 

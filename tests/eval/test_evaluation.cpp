@@ -327,4 +327,10 @@ TEST(Evaluation, CliWritesJsonAndMarkdownForTwoModels) {
   // Usage errors: no model, a malformed one.
   EXPECT_EQ(test::run_cli("-q evaluate --scene " + (f.dir / "scene").string() + " --out " + out.string()).status, 2);
   EXPECT_EQ(test::run_cli("-q evaluate --scene " + (f.dir / "scene").string() + " --model x --out " + out.string()).status, 2);
+  // Label maps that are not there: named before any model is evaluated.
+  const auto no_labels = test::run_cli("-q evaluate --scene " + (f.dir / "scene").string() + " --model good=" +
+                                       (f.dir / "model_good").string() + " --labels " + (f.dir / "nowhere").string() +
+                                       " --out " + out.string());
+  EXPECT_EQ(no_labels.status, 1);
+  EXPECT_NE(no_labels.err.find("nowhere"), std::string::npos) << no_labels.err;
 }
