@@ -17,6 +17,7 @@
 #include "eval/evaluation.h"
 #include "features/feature_provider.h"
 #include "language/language_model.h"
+#include "raycast/label_map_io.h"
 #include "scene/scene.h"
 
 namespace fs = std::filesystem;
@@ -87,7 +88,7 @@ int cmd_evaluate(int argc, char** argv) {
       .option("taxonomy", "", "taxonomy JSON (default: the built-in one)")
       .option("gt-point-radius", "0", "GT projection footprint radius in scene units (0 = from the cloud's spacing)")
       .option("labels", "", "raycast label maps of these views (`citylangsplat raycast` output): adds 2D scores on the GT "
-              "the city model covers (M = 1) and the label maps themselves as a reference row, the CityGML ceiling")
+              "the city model covers (M = 1) and the label maps themselves as a reference row")
       .option("resolution", "1", "3DGS-style downscaling factor of the views: 1, 2, 4 or 8", "r")
       .flag("no-images", "do not write the per-view GT/prediction PNGs");
   std::vector<char*> rest_argv{argv[0]};
@@ -115,8 +116,14 @@ int cmd_evaluate(int argc, char** argv) {
   options.gt_point_radius = args.get_double("gt-point-radius");
   options.write_view_images = !args.flag_set("no-images");
   options.labels_dir = args.get("labels");
-  if (!options.labels_dir.empty() && !fs::is_directory(options.labels_dir))
-    fail(options.labels_dir, "--labels: not a directory (the `citylangsplat raycast` output for these views)");
+  if (!options.labels_dir.empty()) {
+    if (!fs::is_directory(options.labels_dir))
+      fail(options.labels_dir, "--labels: not a directory (the `citylangsplat raycast` output for these views)");
+    check_label_legend(options.labels_dir, taxonomy);
+    for (const auto& m : models)
+      if (m.first == kLabelMapsMethod)
+        throw UsageError(std::string("evaluate: the name '") + kLabelMapsMethod + "' is the label maps' row; name the model otherwise");
+  }
   const fs::path out = args.get("out");
   fs::create_directories(out);
 

@@ -9,33 +9,11 @@
 #include "core/log.h"
 #include "features/feature_provider.h"
 #include "features/feature_stage.h"
+#include "raycast/label_map_io.h"
 #include "scene/scene.h"
 
 namespace cls {
 namespace fs = std::filesystem;
-
-namespace {
-
-// The label maps' legend must describe the taxonomy the features are made with.
-void check_legend(const fs::path& labels_dir, const Taxonomy& taxonomy) {
-  const fs::path legend = labels_dir / "legend.json";
-  if (!fs::is_regular_file(legend)) return;  // hand-made label maps may have none
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(read_text_file(legend));
-  } catch (const nlohmann::json::exception& e) {
-    fail(legend.string(), std::string("not valid JSON: ") + e.what());
-  }
-  if (!j.is_array() || j.size() != taxonomy.classes.size())
-    fail(legend.string(), "the label maps were made with a different taxonomy (" + std::to_string(j.size()) +
-                              " classes, this one has " + std::to_string(taxonomy.classes.size()) + "); pass --taxonomy");
-  for (size_t k = 0; k < j.size(); ++k)
-    if (j[k].value("name", std::string()) != taxonomy.classes[k].name)
-      fail(legend.string(), "class " + std::to_string(k) + " is '" + j[k].value("name", std::string()) +
-                                "' but the taxonomy says '" + taxonomy.classes[k].name + "'; pass --taxonomy");
-}
-
-}  // namespace
 
 int cmd_features(int argc, char** argv) {
   Args args("features",
@@ -103,7 +81,7 @@ int cmd_features(int argc, char** argv) {
   const Taxonomy taxonomy = args.has("taxonomy") ? Taxonomy::load(args.get("taxonomy")) : Taxonomy::builtin();
   if (!fs::is_directory(options.labels_dir))
     fail(options.labels_dir.string(), "label map directory not found (make it with `citylangsplat raycast`)");
-  check_legend(options.labels_dir, taxonomy);
+  check_label_legend(options.labels_dir, taxonomy);
   SceneOptions scene_options;
   scene_options.resolution_factor = factor;
   const Scene scene = load_scene(args.get("scene"), scene_options);

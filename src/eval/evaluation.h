@@ -38,15 +38,17 @@ struct EvaluationOptions {
 nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, FeatureProvider& provider,
                               const Taxonomy& taxonomy, const EvaluationOptions& options);
 
-// The label maps themselves as a 2D prediction, scored against the same GT: each pixel takes its finest
-// level's class among the evaluated ones, pixels with none are not scored. This is the most the CityGML
-// supervision can give a method in 2D (its alignment, level of detail and the GT projection's own
-// errors limit it), so a method's scores can be read against it. 2D only: no "3d" fields.
 // The tables' layout version: `run` recomputes an evaluation written by another version.
-inline constexpr const char* kEvaluationTables = "2026-11-22 ceilings";
+inline constexpr const char* kEvaluationTables = "2026-11-22 references";
 
 // The label maps' row name in the tables.
 inline constexpr const char* kLabelMapsMethod = "city-model-labels";
+
+// The label maps themselves as a 2D prediction, scored against the same GT: each pixel takes its finest
+// level's class among the evaluated ones; pixels with none are not scored. A reference for what exact
+// CityGML labels score against this GT (their alignment, level of detail and the GT projection's own
+// errors limit it); not a strict bound for a method, which may gain where the projection errs its way.
+// 2D only: no "3d" fields; "reference": true.
 nlohmann::json evaluate_label_maps(const Scene& scene, const Taxonomy& taxonomy, const EvaluationOptions& options);
 
 // The class prototypes (paper 4.3): per class the mean of the provider's text features of its phrase

@@ -1,6 +1,6 @@
 #include "eval/metrics_3d.h"
 
-#include <limits>
+#include <algorithm>
 #include <stdexcept>
 
 #include "eval/kd_tree.h"
@@ -52,23 +52,27 @@ Scores3d score_3d(const std::vector<Vec3d>& gt_points, const std::vector<int32_t
   return s;
 }
 
-std::vector<int32_t> nearest_gt_labels(const std::vector<Vec3d>& centres, const std::vector<Vec3d>& gt_points,
-                                       const std::vector<int32_t>& gt_labels) {
+std::vector<int32_t> best_centre_labels(const std::vector<Vec3d>& gt_points, const std::vector<int32_t>& gt_labels,
+                                        const std::vector<Vec3d>& centres, int num_classes, double radius) {
   if (gt_points.size() != gt_labels.size())
-    throw std::invalid_argument("nearest_gt_labels: GT points and labels differ in size");
-  std::vector<Vec3d> labelled;
+    throw std::invalid_argument("best_centre_labels: GT points and labels differ in size");
+  std::vector<Vec3d> evaluated;
   std::vector<int32_t> labels;
   for (size_t i = 0; i < gt_points.size(); ++i)
     if (gt_labels[i] >= 0) {
-      labelled.push_back(gt_points[i]);
+      evaluated.push_back(gt_points[i]);
       labels.push_back(gt_labels[i]);
     }
+  const PointMatching m = match_points(evaluated, centres, radius);
+  const size_t K = size_t(std::max(num_classes, 1));
+  std::vector<int64_t> votes(centres.size() * K, 0);
+  for (size_t i = 0; i < evaluated.size(); ++i)
+    if (m.match[i] >= 0) ++votes[size_t(m.match[i]) * K + size_t(labels[i])];
   std::vector<int32_t> out(centres.size(), 0);
-  if (labelled.empty()) return out;
-  const KdTree tree(std::move(labelled));
-#pragma omp parallel for schedule(static)
-  for (int64_t i = 0; i < int64_t(centres.size()); ++i)
-    out[size_t(i)] = labels[size_t(tree.nearest(centres[size_t(i)], std::numeric_limits<double>::infinity()).index)];
+  for (size_t c = 0; c < centres.size(); ++c) {
+    const int64_t* v = votes.data() + c * K;
+    out[c] = int32_t(std::max_element(v, v + K) - v);  // the first maximum: ties go to the lower class
+  }
   return out;
 }
 

@@ -32,9 +32,11 @@ Scores3d score_3d(const std::vector<Vec3d>& gt_points, const std::vector<int32_t
                   const std::vector<Vec3d>& centres, const std::vector<int32_t>& centre_labels, int num_classes,
                   double radius);
 
-// The centres' labels of a perfect field, the geometry's ceiling of the 3D scores: each centre takes the
-// class of its nearest GT point with a label >= 0 (ties: the lower index); all 0 if no GT point has one.
-std::vector<int32_t> nearest_gt_labels(const std::vector<Vec3d>& centres, const std::vector<Vec3d>& gt_points,
-                                       const std::vector<int32_t>& gt_labels);
+// The labelling of the centres that gets the most matched GT points right: each centre takes the majority
+// class of the GT points matched to it (ties: the lower class; a centre no GT point matches gets 0). Its
+// accuracy is the most any field on these centres can reach under this matching (its mIoU is not a
+// strict bound, but close). Arguments as for score_3d.
+std::vector<int32_t> best_centre_labels(const std::vector<Vec3d>& gt_points, const std::vector<int32_t>& gt_labels,
+                                        const std::vector<Vec3d>& centres, int num_classes, double radius);
 
 }  // namespace cls

@@ -136,9 +136,17 @@ std::string adam_name(int level) { return "latents_l" + std::to_string(level); }
 
 // Everything that must agree between a checkpoint and the run that resumes it.
 nlohmann::json run_config(const LanguageTrainOptions& o, int64_t n, int latent, size_t views) {
-  return {{"seed", o.seed},           {"baseline", o.baseline}, {"lambda_sam", o.lambda_sam},
-          {"lambda_citygml", o.lambda_citygml}, {"lr", o.lr}, {"gaussians", n},
-          {"latent_dim", latent},     {"views", views}, {"iterations", o.iterations}};
+  // The baseline's objective has no lambdas: record the weights it uses, so that --lambda-* do not
+  // keep its checkpoint from resuming.
+  return {{"seed", o.seed},
+          {"baseline", o.baseline},
+          {"lambda_sam", o.baseline ? 1.0 : o.lambda_sam},
+          {"lambda_citygml", o.baseline ? 0.0 : o.lambda_citygml},
+          {"lr", o.lr},
+          {"gaussians", n},
+          {"latent_dim", latent},
+          {"views", views},
+          {"iterations", o.iterations}};
 }
 
 struct TrainState {
@@ -335,7 +343,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
   nlohmann::json info = {{"method", o.baseline ? "langsplat" : "citylangsplat"},
                          {"iterations", o.iterations},
                          {"lr", o.lr},
-                         {"lambda_sam", o.lambda_sam},
+                         {"lambda_sam", o.baseline ? 1.0 : o.lambda_sam},
                          {"lambda_citygml", o.baseline ? 0.0 : o.lambda_citygml},
                          {"features", fs::absolute(o.features_dir).string()},
                          {"provider", provider},

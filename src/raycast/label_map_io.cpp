@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
@@ -46,6 +47,24 @@ cv::Mat read_label_png(const fs::path& p, int type, int h, int w) {
     fail(p.string(), "is " + std::to_string(m.cols) + " x " + std::to_string(m.rows) + " but the view's image is " +
                          std::to_string(w) + " x " + std::to_string(h) + " (raycast with the same --resolution)");
   return m;
+}
+
+void check_label_legend(const fs::path& labels_dir, const Taxonomy& taxonomy) {
+  const fs::path legend = labels_dir / "legend.json";
+  if (!fs::is_regular_file(legend)) return;
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(read_text_file(legend));
+  } catch (const nlohmann::json::exception& e) {
+    fail(legend.string(), std::string("not valid JSON: ") + e.what());
+  }
+  if (!j.is_array() || j.size() != taxonomy.classes.size())
+    fail(legend.string(), "the label maps were made with a different taxonomy (" + std::to_string(j.size()) +
+                              " classes, this one has " + std::to_string(taxonomy.classes.size()) + "); pass --taxonomy");
+  for (size_t k = 0; k < j.size(); ++k)
+    if (!j[k].is_object() || j[k].value("name", std::string()) != taxonomy.classes[k].name)
+      fail(legend.string(), "class " + std::to_string(k) + " is " + j[k].dump() + " but the taxonomy says '" +
+                                taxonomy.classes[k].name + "'; pass --taxonomy");
 }
 
 void write_png_u16(const fs::path& path, const std::vector<uint16_t>& data, int width, int height) {

@@ -23,6 +23,11 @@ void write_pfm(const std::filesystem::path& path, const std::vector<float>& data
 // width w and height h; cls::Error naming the file if it is missing, unreadable, of another type or size.
 cv::Mat read_label_png(const std::filesystem::path& path, int type, int h, int w);
 
+// The label maps' legend.json (written by `raycast`) must describe `taxonomy`: same classes in the same
+// order, else the label ids would be read as other classes. cls::Error naming the legend otherwise; a
+// directory without legend.json (hand-made label maps) passes.
+void check_label_legend(const std::filesystem::path& labels_dir, const Taxonomy& taxonomy);
+
 struct FloatImage {
   int width = 0, height = 0;
   std::vector<float> data;  // row-major, top row first

@@ -135,33 +135,47 @@ TEST(KdTree, MatchesBruteForceOnRandomPoints) {
   EXPECT_EQ(KdTree({}).nearest({0, 0, 0}, 1.0).index, -1);
 }
 
-TEST(Metrics3d, NearestGtLabelsMatchBruteForce) {
-  // By hand: unlabelled points are skipped, ties go to the lower index.
-  const std::vector<Vec3d> gt{{0, 0, 0}, {1, 0, 0}, {0.5, 0, 0}, {3, 0, 0}};
-  const std::vector<int32_t> labels{2, 1, -1, 0};
-  EXPECT_EQ(nearest_gt_labels({{0.5, 0, 0}, {2.1, 0, 0}, {-5, 0, 0}}, gt, labels), (std::vector<int32_t>{2, 0, 2}));
-  EXPECT_EQ(nearest_gt_labels({{0, 0, 0}}, gt, {-1, -1, -1, -1}), (std::vector<int32_t>{0}));
-  // Random: against a brute-force search.
+TEST(Metrics3d, BestCentreLabelsAreTheMajorityOfTheMatchedPoints) {
+  // One class-0 point right at centre 0, five class-1 points around it, two class-0 points at centre 1:
+  // the class of the nearest GT point would label centre 0 wrongly for five points.
+  const std::vector<Vec3d> centres{{0, 0, 0}, {5, 0, 0}, {9, 9, 9}};
+  std::vector<Vec3d> gt{{0.01, 0, 0}, {5, 0.05, 0}, {4.95, 0, 0}};
+  std::vector<int32_t> labels{0, 0, 0};
+  for (int i = 0; i < 5; ++i) {
+    gt.push_back({0.1, 0.02 * i, 0});
+    labels.push_back(1);
+  }
+  gt.push_back({0.05, 0, 0});  // not evaluated: no vote
+  labels.push_back(-1);
+  EXPECT_EQ(best_centre_labels(gt, labels, centres, 2, 0.2), (std::vector<int32_t>{1, 0, 0}));
+  // A tie goes to the lower class.
+  EXPECT_EQ(best_centre_labels({{0, 0, 0}, {0, 0, 0.1}}, {2, 1}, {{0, 0, 0}}, 3, 1.0), (std::vector<int32_t>{1}));
+
+  // Random: no labelling of the centres gets more matched points right (all 3^6 tried).
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(0, 1);
-  std::vector<Vec3d> pts, centres;
+  std::vector<Vec3d> pts, cs;
   std::vector<int32_t> cls_of;
-  for (int i = 0; i < 1500; ++i) {
-    pts.push_back({u(rng), u(rng), u(rng)});
-    cls_of.push_back(i % 7 == 0 ? -1 : i % 4);
+  for (int i = 0; i < 200; ++i) {
+    pts.push_back({u(rng), u(rng), 0});
+    cls_of.push_back(i % 9 == 0 ? -1 : int32_t(rng() % 3));
   }
-  for (int i = 0; i < 300; ++i) centres.push_back({1.4 * u(rng) - 0.2, u(rng), u(rng)});
-  const std::vector<int32_t> got = nearest_gt_labels(centres, pts, cls_of);
-  for (size_t c = 0; c < centres.size(); ++c) {
-    double best = 1e300;
-    int32_t want = -1;
-    for (size_t i = 0; i < pts.size(); ++i)
-      if (cls_of[i] >= 0 && norm(pts[i] - centres[c]) < best) {
-        best = norm(pts[i] - centres[c]);
-        want = cls_of[i];
-      }
-    ASSERT_EQ(got[c], want) << c;
+  for (int i = 0; i < 6; ++i) cs.push_back({u(rng), u(rng), 0.05});
+  auto correct = [&](const std::vector<int32_t>& lab) {
+    const Scores3d s = score_3d(pts, cls_of, cs, lab, 3, 0.3);
+    int64_t tp = 0;
+    for (int c = 0; c < 3; ++c) tp += s.confusion.at(c, c);
+    return tp;
+  };
+  const int64_t best = correct(best_centre_labels(pts, cls_of, cs, 3, 0.3));
+  int64_t brute = 0;
+  for (int code = 0; code < 729; ++code) {
+    std::vector<int32_t> lab(6);
+    for (int c = 0, x = code; c < 6; ++c, x /= 3) lab[size_t(c)] = x % 3;
+    brute = std::max(brute, correct(lab));
   }
+  EXPECT_EQ(best, brute);
+  EXPECT_GT(best, 0);
 }
 
 TEST(Metrics3d, HandComputedMatching) {
