@@ -60,6 +60,7 @@ std::vector<int32_t> best_centre_labels(const std::vector<Vec3d>& gt_points, con
   std::vector<int32_t> labels;
   for (size_t i = 0; i < gt_points.size(); ++i)
     if (gt_labels[i] >= 0) {
+      if (gt_labels[i] >= num_classes) throw std::invalid_argument("best_centre_labels: a GT label is not below num_classes");
       evaluated.push_back(gt_points[i]);
       labels.push_back(gt_labels[i]);
     }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <stdexcept>
 
 #include "eval/kd_tree.h"
 #include "eval/metrics_2d.h"
@@ -150,6 +151,7 @@ TEST(Metrics3d, BestCentreLabelsAreTheMajorityOfTheMatchedPoints) {
   EXPECT_EQ(best_centre_labels(gt, labels, centres, 2, 0.2), (std::vector<int32_t>{1, 0, 0}));
   // A tie goes to the lower class.
   EXPECT_EQ(best_centre_labels({{0, 0, 0}, {0, 0, 0.1}}, {2, 1}, {{0, 0, 0}}, 3, 1.0), (std::vector<int32_t>{1}));
+  EXPECT_THROW(best_centre_labels({{0, 0, 0}}, {3}, {{0, 0, 0}}, 3, 1.0), std::invalid_argument);
 
   // Random: no labelling of the centres gets more matched points right (all 3^6 tried).
   std::mt19937 rng(5);
