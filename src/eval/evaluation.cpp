@@ -393,11 +393,10 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
   std::vector<int32_t> gt_eval(ec.gt.size());
   for (size_t i = 0; i < ec.gt.size(); ++i) gt_eval[i] = ec.to_eval(ec.gt.labels[i]);
   auto scores_3d_json = [&](const std::vector<int32_t>& labels) {
-    const Scores3d s3 = score_3d(ec.gt.positions, labels, centres, centre_labels, K, options.match_radius);
+    const GtMatching matching = match_gt(ec.gt.positions, labels, centres, options.match_radius);
+    const Scores3d s3 = score_matched(matching, centre_labels, K);
     // What these Gaussians allow: the labelling that gets the most matched GT points right.
-    const Scores3d best = score_3d(ec.gt.positions, labels, centres,
-                                   best_centre_labels(ec.gt.positions, labels, centres, K, options.match_radius), K,
-                                   options.match_radius);
+    const Scores3d best = score_matched(matching, best_centre_labels(matching, K), K);
     nlohmann::json per_class = nlohmann::json::object();
     for (int k = 0; k < K; ++k) per_class[ec.names[k].get<std::string>()] = scores_json(s3.scores.per_class[size_t(k)]);
     return nlohmann::json{{"coverage", s3.coverage},

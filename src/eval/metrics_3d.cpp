@@ -28,53 +28,60 @@ PointMatching match_points(const std::vector<Vec3d>& gt_points, const std::vecto
   return m;
 }
 
-Scores3d score_3d(const std::vector<Vec3d>& gt_points, const std::vector<int32_t>& gt_labels,
-                  const std::vector<Vec3d>& centres, const std::vector<int32_t>& centre_labels, int num_classes,
-                  double radius) {
-  if (gt_points.size() != gt_labels.size()) throw std::invalid_argument("score_3d: GT points and labels differ in size");
-  if (centres.size() != centre_labels.size()) throw std::invalid_argument("score_3d: centres and labels differ in size");
+GtMatching match_gt(const std::vector<Vec3d>& gt_points, const std::vector<int32_t>& gt_labels,
+                    const std::vector<Vec3d>& centres, double radius) {
+  if (gt_points.size() != gt_labels.size()) throw std::invalid_argument("match_gt: GT points and labels differ in size");
+  GtMatching g;
+  g.num_centres = centres.size();
   std::vector<Vec3d> evaluated;
-  std::vector<int32_t> labels;
   for (size_t i = 0; i < gt_points.size(); ++i)
     if (gt_labels[i] >= 0) {
       evaluated.push_back(gt_points[i]);
-      labels.push_back(gt_labels[i]);
+      g.labels.push_back(gt_labels[i]);
     }
-  const PointMatching m = match_points(evaluated, centres, radius);
+  g.matching = match_points(evaluated, centres, radius);
+  return g;
+}
+
+Scores3d score_matched(const GtMatching& g, const std::vector<int32_t>& centre_labels, int num_classes) {
+  if (g.num_centres != centre_labels.size()) throw std::invalid_argument("score_3d: centres and labels differ in size");
+  const PointMatching& m = g.matching;
   Scores3d s{SegmentationScores{}, ConfusionMatrix(num_classes)};
-  for (size_t i = 0; i < evaluated.size(); ++i)
-    if (m.match[i] >= 0) s.confusion.add(labels[i], centre_labels[m.match[i]]);
+  for (size_t i = 0; i < g.labels.size(); ++i)
+    if (m.match[i] >= 0) s.confusion.add(g.labels[i], centre_labels[m.match[i]]);
   s.scores = segmentation_scores(s.confusion);
-  s.gt_points = int64_t(evaluated.size());
+  s.gt_points = int64_t(g.labels.size());
   s.matched = m.matched;
   s.coverage = m.coverage;
   s.mean_distance = m.mean_distance;
   return s;
 }
 
-std::vector<int32_t> best_centre_labels(const std::vector<Vec3d>& gt_points, const std::vector<int32_t>& gt_labels,
-                                        const std::vector<Vec3d>& centres, int num_classes, double radius) {
-  if (gt_points.size() != gt_labels.size())
-    throw std::invalid_argument("best_centre_labels: GT points and labels differ in size");
-  std::vector<Vec3d> evaluated;
-  std::vector<int32_t> labels;
-  for (size_t i = 0; i < gt_points.size(); ++i)
-    if (gt_labels[i] >= 0) {
-      if (gt_labels[i] >= num_classes) throw std::invalid_argument("best_centre_labels: a GT label is not below num_classes");
-      evaluated.push_back(gt_points[i]);
-      labels.push_back(gt_labels[i]);
-    }
-  const PointMatching m = match_points(evaluated, centres, radius);
+Scores3d score_3d(const std::vector<Vec3d>& gt_points, const std::vector<int32_t>& gt_labels,
+                  const std::vector<Vec3d>& centres, const std::vector<int32_t>& centre_labels, int num_classes,
+                  double radius) {
+  if (centres.size() != centre_labels.size()) throw std::invalid_argument("score_3d: centres and labels differ in size");
+  return score_matched(match_gt(gt_points, gt_labels, centres, radius), centre_labels, num_classes);
+}
+
+std::vector<int32_t> best_centre_labels(const GtMatching& g, int num_classes) {
   const size_t K = size_t(std::max(num_classes, 1));
-  std::vector<int64_t> votes(centres.size() * K, 0);
-  for (size_t i = 0; i < evaluated.size(); ++i)
-    if (m.match[i] >= 0) ++votes[size_t(m.match[i]) * K + size_t(labels[i])];
-  std::vector<int32_t> out(centres.size(), 0);
-  for (size_t c = 0; c < centres.size(); ++c) {
+  std::vector<int64_t> votes(g.num_centres * K, 0);
+  for (size_t i = 0; i < g.labels.size(); ++i) {
+    if (g.labels[i] >= num_classes) throw std::invalid_argument("best_centre_labels: a GT label is not below num_classes");
+    if (g.matching.match[i] >= 0) ++votes[size_t(g.matching.match[i]) * K + size_t(g.labels[i])];
+  }
+  std::vector<int32_t> out(g.num_centres, 0);
+  for (size_t c = 0; c < g.num_centres; ++c) {
     const int64_t* v = votes.data() + c * K;
     out[c] = int32_t(std::max_element(v, v + K) - v);  // the first maximum: ties go to the lower class
   }
   return out;
+}
+
+std::vector<int32_t> best_centre_labels(const std::vector<Vec3d>& gt_points, const std::vector<int32_t>& gt_labels,
+                                        const std::vector<Vec3d>& centres, int num_classes, double radius) {
+  return best_centre_labels(match_gt(gt_points, gt_labels, centres, radius), num_classes);
 }
 
 }  // namespace cls

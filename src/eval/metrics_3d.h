@@ -26,6 +26,18 @@ struct Scores3d {
   double coverage = 0, mean_distance = 0;
 };
 
+// The GT points with a label >= 0 matched once to the centres, so that several labellings of the same
+// centres are scored without matching again.
+struct GtMatching {
+  std::vector<int32_t> labels;  // per evaluated GT point (gt_labels >= 0), in order
+  PointMatching matching;       // per evaluated GT point
+  size_t num_centres = 0;
+};
+GtMatching match_gt(const std::vector<Vec3d>& gt_points, const std::vector<int32_t>& gt_labels,
+                    const std::vector<Vec3d>& centres, double radius);
+// score_3d of a matching: centre_labels per centre, in [0, K).
+Scores3d score_matched(const GtMatching& matching, const std::vector<int32_t>& centre_labels, int num_classes);
+
 // gt_labels: per GT point, class index in [0, K) or -1 (not evaluated: such points are left out entirely,
 // from the coverage too); centre_labels: per centre, class index in [0, K).
 Scores3d score_3d(const std::vector<Vec3d>& gt_points, const std::vector<int32_t>& gt_labels,
@@ -36,6 +48,7 @@ Scores3d score_3d(const std::vector<Vec3d>& gt_points, const std::vector<int32_t
 // class of the GT points matched to it (ties: the lower class; a centre no GT point matches gets 0). Its
 // accuracy is the most any field on these centres can reach under this matching (its mIoU is not a
 // strict bound, but close). Arguments as for score_3d.
+std::vector<int32_t> best_centre_labels(const GtMatching& matching, int num_classes);
 std::vector<int32_t> best_centre_labels(const std::vector<Vec3d>& gt_points, const std::vector<int32_t>& gt_labels,
                                         const std::vector<Vec3d>& centres, int num_classes, double radius);
 
