@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "bench_timer.h"
-#include "cli/args.h"
+#include "core/args.h"
 #include "core/error.h"
 #include "models/sam/sam_config.h"
 #include "models/sam/sam_predictor.h"

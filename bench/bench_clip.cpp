@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "bench_timer.h"
-#include "cli/args.h"
+#include "core/args.h"
 #include "core/error.h"
 #include "models/clip/clip_model.h"
 #include "models/clip/region_crops.h"

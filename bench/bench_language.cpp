@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "bench_timer.h"
-#include "cli/args.h"
+#include "core/args.h"
 #include "core/error.h"
 #include "language/autoencoder.h"
 #include "splat/rasterize.h"

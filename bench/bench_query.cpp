@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "bench_timer.h"
-#include "cli/args.h"
+#include "core/args.h"
 #include "core/error.h"
 #include "query/relevance.h"
 

@@ -13,7 +13,7 @@
 
 #include "citymodel/citygml_reader.h"
 #include "bench_timer.h"
-#include "cli/args.h"
+#include "core/args.h"
 #include "core/error.h"
 #include "raycast/label_maps.h"
 #include "raycast/look_at.h"

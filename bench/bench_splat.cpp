@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "bench_timer.h"
-#include "cli/args.h"
+#include "core/args.h"
 #include "core/error.h"
 #include "splat/rasterize_cpu.h"
 

@@ -4,7 +4,7 @@
 
 #include "citymodel/city_model.h"
 #include "citymodel/scene_city_model.h"
-#include "cli/args.h"
+#include "core/args.h"
 #include "core/error.h"
 
 namespace cls {

@@ -3,7 +3,7 @@
 #include <cstring>
 #include <string>
 
-#include "cli/args.h"
+#include "core/args.h"
 #include "cli/commands.h"
 #include "citymodel/city_model.h"
 #include "citymodel/city_transform.h"

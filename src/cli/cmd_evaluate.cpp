@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/args.h"
+#include "core/args.h"
 #include "cli/commands.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -142,7 +142,6 @@ int cmd_evaluate(int argc, char** argv) {
     log_info("evaluate: " + name + " (" + dir + ")");
     options.out_dir = (out / name).string();
     nlohmann::json r = evaluate_model(scene, model, *provider, taxonomy, options);
-    r["model_dir"] = dir;
     log_info(cat("  2D mIoU ", r["2d"]["miou"].get<double>(), ", 3D mIoU ", r["3d"]["miou"].get<double>()));
     results.emplace_back(name, std::move(r));
   }
@@ -151,15 +150,8 @@ int cmd_evaluate(int argc, char** argv) {
     options.out_dir = (out / kLabelMapsMethod).string();
     results.emplace_back(kLabelMapsMethod, evaluate_label_maps(scene, taxonomy, options));
   }
-  nlohmann::json all = nlohmann::json::object();
-  nlohmann::json order = nlohmann::json::array();
-  for (const auto& [name, r] : results) {
-    all[name] = r;
-    order.push_back(name);
-  }
-  write_text_atomic(out / "eval.json", nlohmann::json{{"methods", order}, {"results", all}}.dump(2) + "\n");
-  write_text_atomic(out / "eval.md", "# Evaluation\n\nScene: " + args.get("scene") + "; GT: " + options.gt_points +
-                                         "\n\n" + evaluation_tables_markdown(results));
+  const std::string warning = provider ? provider_warning(provider->name()) : "";
+  write_evaluation(out, results, args.get("scene"), options.gt_points, warning);
   log_info("evaluate: wrote " + (out / "eval.json").string() + " and " + (out / "eval.md").string());
   return 0;
 }

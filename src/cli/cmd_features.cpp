@@ -2,7 +2,7 @@
 #include <filesystem>
 #include <string>
 
-#include "cli/args.h"
+#include "core/args.h"
 #include "cli/commands.h"
 #include "core/atomic_file.h"
 #include "core/error.h"

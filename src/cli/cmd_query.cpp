@@ -2,7 +2,7 @@
 #include <sstream>
 #include <string>
 
-#include "cli/args.h"
+#include "core/args.h"
 #include "cli/commands.h"
 #include "core/error.h"
 #include "query/query_job.h"

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/args.h"
+#include "core/args.h"
 #include "cli/city_mesh_inputs.h"
 #include "cli/commands.h"
 #include "core/error.h"

@@ -2,7 +2,7 @@
 #include <string>
 
 #include "citymodel/city_model.h"
-#include "cli/args.h"
+#include "core/args.h"
 #include "cli/commands.h"
 #include "core/error.h"
 #include "synth/synth_job.h"

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <string>
 
-#include "cli/args.h"
+#include "core/args.h"
 #include "cli/commands.h"
 #include "core/error.h"
 #include "core/interrupt.h"

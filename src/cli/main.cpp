@@ -7,6 +7,7 @@
 
 #include "cli/commands.h"
 #include "core/error.h"
+#include "core/exit_codes.h"
 #include "core/log.h"
 
 namespace {
@@ -44,7 +45,8 @@ void usage(FILE* out) {
                "  -v, --verbose   more output\n"
                "  -q, --quiet     only errors\n"
                "  --version       print the version\n"
-               "\n'citylangsplat <command> --help' shows a command's options and defaults.\n");
+               "\n'citylangsplat <command> --help' shows a command's options and defaults.\n%s\n",
+               cls::kExitCodesHelp);
 }
 
 }  // namespace
@@ -70,7 +72,7 @@ int main(int argc, char** argv) {
   }
   if (args.size() < 2) {
     usage(stderr);
-    return 2;
+    return cls::kExitUsage;
   }
   for (const auto& c : kCommands) {
     if (std::strcmp(c.name, args[1]) != 0) continue;
@@ -78,16 +80,16 @@ int main(int argc, char** argv) {
       return c.fn(static_cast<int>(args.size()) - 1, args.data() + 1);
     } catch (const cls::UsageError& e) {
       std::fprintf(stderr, "error: %s\n", e.what());
-      return 2;
+      return cls::kExitUsage;
     } catch (const cls::Error& e) {
       std::fprintf(stderr, "error: %s\n", e.what());
-      return 1;
+      return cls::kExitError;
     } catch (const std::exception& e) {
       std::fprintf(stderr, "internal error: %s\n", e.what());
-      return 3;
+      return cls::kExitInternal;
     }
   }
   std::fprintf(stderr, "error: unknown command '%s'\n\n", args[1]);
   usage(stderr);
-  return 2;
+  return cls::kExitUsage;
 }

@@ -2,9 +2,9 @@
 // SIGINT / SIGTERM as a request to stop: long jobs (training) poll interrupt_requested() at a safe
 // point, write a checkpoint and exit with kInterruptedExit. A second signal while the first is being
 // handled restores the default action, so a user can always force-quit with another Ctrl-C.
-namespace cls {
+#include "core/exit_codes.h"
 
-constexpr int kInterruptedExit = 130;  // the shell's 128 + SIGINT
+namespace cls {
 
 // Installs the handlers (idempotent; async-signal-safe: the handler only sets a flag).
 void install_interrupt_handlers();

@@ -601,3 +601,26 @@ std::string evaluation_tables_markdown(const std::vector<std::pair<std::string, 
 }
 
 }  // namespace cls
+
+namespace cls {
+
+std::string write_evaluation(const std::filesystem::path& out_dir,
+                             const std::vector<std::pair<std::string, nlohmann::json>>& methods,
+                             const std::string& scene, const std::string& gt_points, const std::string& warning) {
+  nlohmann::json results = nlohmann::json::object(), order = nlohmann::json::array();
+  for (const auto& [name, r] : methods) {
+    results[name] = r;
+    order.push_back(name);
+  }
+  nlohmann::json all = {{"methods", order}, {"results", results}};
+  if (!warning.empty()) all["warning"] = warning;
+  std::string md = "# Evaluation\n\nScene: " + scene + "; GT: " + gt_points + "\n\n";
+  if (!warning.empty()) md += "> " + warning + "\n\n";
+  md += evaluation_tables_markdown(methods);
+  std::filesystem::create_directories(out_dir);
+  write_text_atomic(out_dir / "eval.json", all.dump(2) + "\n");
+  write_text_atomic(out_dir / "eval.md", md);
+  return md;
+}
+
+}  // namespace cls

@@ -2,6 +2,7 @@
 // The paper's evaluation (section 4): 2D against ground-truth label images projected from a labelled
 // point cloud, 3D by nearest-neighbour matching of Gaussian centres; tables in the paper's format.
 #include <ATen/core/Tensor.h>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include <string>
@@ -57,5 +58,12 @@ at::Tensor class_prototypes(FeatureProvider& provider, const Taxonomy& taxonomy,
 
 // The paper's Tables 1-3 side by side for several methods (name -> evaluate_model's JSON), Markdown.
 std::string evaluation_tables_markdown(const std::vector<std::pair<std::string, nlohmann::json>>& methods);
+
+// The evaluation's files, the same for `evaluate` and `run` (docs/evaluation.md): OUT/eval.json
+// {"methods": [names in order], "results": {name: JSON}, "warning": <text, when not empty>} and OUT/eval.md
+// (scene, GT, the warning, the tables). Both atomic; returns the Markdown.
+std::string write_evaluation(const std::filesystem::path& out_dir,
+                             const std::vector<std::pair<std::string, nlohmann::json>>& methods,
+                             const std::string& scene, const std::string& gt_points, const std::string& warning);
 
 }  // namespace cls

@@ -17,3 +17,16 @@ std::unique_ptr<FeatureProvider> make_feature_provider(const nlohmann::json& spe
 }
 
 }  // namespace cls
+
+namespace cls {
+
+std::string provider_warning(const std::string& provider_name) {
+  if (provider_name == "synthetic")
+    return "mechanics: synthetic features, not CLIP (docs/features.md): a benchmark of the pipeline's mechanics, "
+           "not a result of the method on real images";
+  if (provider_name == "clip-tiny")
+    return "mechanics: tiny random CLIP/SAM models, a smoke test of the code path; every score is meaningless";
+  return "";
+}
+
+}  // namespace cls

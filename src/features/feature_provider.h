@@ -58,4 +58,8 @@ class FeatureProvider {
 // missing weights (the message says how to get them: `citylangsplat models download ...`).
 std::unique_ptr<FeatureProvider> make_feature_provider(const nlohmann::json& spec, const Taxonomy& taxonomy);
 
+// What every output of a provider other than real CLIP says about itself ("" for "clip"): features that
+// are not CLIP's make a benchmark of the mechanics, never a result of the method.
+std::string provider_warning(const std::string& provider_name);
+
 }  // namespace cls

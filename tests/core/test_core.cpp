@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "cli/args.h"
+#include "core/args.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/math.h"

@@ -8,6 +8,7 @@
 
 #include "cli_runner.h"
 #include "core/atomic_file.h"
+#include "core/exit_codes.h"
 
 namespace fs = std::filesystem;
 using cls::test::run_cli;
@@ -31,19 +32,25 @@ const fs::path& scene_dir() {
 
 nlohmann::json read_json(const fs::path& p) { return nlohmann::json::parse(cls::read_text_file(p)); }
 
-}  // namespace
-
-TEST(RunCli, LabelMapsAgreeWithTheSyntheticGroundTruth) {
-  const fs::path out = scene_dir().string() + "_out1";
-  fs::remove_all(out);
-  // No weights anywhere the registry looks: the run stops before the features, saying how to get them.
+// No weights anywhere the model registry looks (for this test process and the commands it runs).
+void hide_model_weights() {
   const fs::path no_models = scene_dir().string() + "_no_models";
   fs::create_directories(no_models);
   ::setenv("HOME", no_models.c_str(), 1);
   ::setenv("XDG_CACHE_HOME", no_models.c_str(), 1);
   ::unsetenv("CITYLANGSPLAT_MODELS");
-  const auto r = run_cli("run " + scene_dir().string() + " --out " + out.string());
-  ASSERT_EQ(r.status, 0) << r.err;
+}
+
+}  // namespace
+
+TEST(RunCli, LabelMapsAgreeWithTheSyntheticGroundTruth) {
+  const fs::path out = scene_dir().string() + "_out1";
+  fs::remove_all(out);
+  // --models real without weights: the run stops before the features with its own exit status,
+  // saying how to get them.
+  hide_model_weights();
+  const auto r = run_cli("run " + scene_dir().string() + " --models real --out " + out.string());
+  ASSERT_EQ(r.status, cls::kExitMissingWeights) << r.err;
   EXPECT_NE(r.err.find("stopped before the features"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("models download"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("--models tiny"), std::string::npos) << r.err;
@@ -80,10 +87,12 @@ TEST(RunCli, LabelMapsAgreeWithTheSyntheticGroundTruth) {
 TEST(RunCli, SecondRunReusesLabelsAndAChangedTransformRedoesThem) {
   const fs::path out = scene_dir().string() + "_out2";
   fs::remove_all(out);
-  ASSERT_EQ(run_cli("-q run " + scene_dir().string() + " --out " + out.string()).status, 0);
+  const std::string run = "run " + scene_dir().string() + " --models real --out " + out.string();
+  hide_model_weights();
+  ASSERT_EQ(run_cli("-q " + run).status, cls::kExitMissingWeights);
   const auto stamp_time = fs::last_write_time(out / "labels" / "stage.json");
-  const auto again = run_cli("run " + scene_dir().string() + " --out " + out.string());
-  ASSERT_EQ(again.status, 0) << again.err;
+  const auto again = run_cli(run);
+  ASSERT_EQ(again.status, cls::kExitMissingWeights) << again.err;
   EXPECT_EQ(read_json(out / "run.json")["labels"]["status"], "reused");
   EXPECT_EQ(fs::last_write_time(out / "labels" / "stage.json"), stamp_time);
 
@@ -91,13 +100,11 @@ TEST(RunCli, SecondRunReusesLabelsAndAChangedTransformRedoesThem) {
   const fs::path moved = out / "moved_transform.json";
   std::string text = cls::read_text_file(scene_dir() / "city" / "transform.json");
   cls::write_text_atomic(moved, text);
-  const auto copied = run_cli("-q run " + scene_dir().string() + " --out " + out.string() + " --city-transform " +
-                            moved.string());
-  ASSERT_EQ(copied.status, 0) << copied.err;
+  const auto copied = run_cli("-q " + run + " --city-transform " + moved.string());
+  ASSERT_EQ(copied.status, cls::kExitMissingWeights) << copied.err;
   EXPECT_EQ(read_json(out / "run.json")["labels"]["status"], "reused");  // same bytes: still current
   cls::write_text_atomic(moved, text + " ");                              // same meaning, other bytes
-  ASSERT_EQ(run_cli("-q run " + scene_dir().string() + " --out " + out.string() + " --city-transform " +
-                    moved.string()).status, 0);
+  ASSERT_EQ(run_cli("-q " + run + " --city-transform " + moved.string()).status, cls::kExitMissingWeights);
   EXPECT_EQ(read_json(out / "run.json")["labels"]["status"], "done");
 }
 
@@ -153,6 +160,24 @@ TEST(RunCli, TinyModelsRunEveryStageOnTheBundledExampleAndASecondRunReusesThem) 
   EXPECT_NE(tables.find("| city-model-labels |"), std::string::npos) << tables;
   EXPECT_NE(tables.find("Table 1b"), std::string::npos) << tables;
   EXPECT_NE(cls::read_text_file(out / "features" / "features.json").find("meaningless"), std::string::npos);
+  // run.json lists the stages in the order they ran, each with its wall time.
+  ASSERT_TRUE(record["stages"].is_array());
+  EXPECT_EQ(record["stages"].front(), "labels");
+  for (const auto& stage : record["stages"]) {
+    const std::string name = stage.get<std::string>();
+    const size_t slash = name.find('/');
+    const auto& entry = slash == std::string::npos ? record[name] : record[name.substr(0, slash)][name.substr(slash + 1)];
+    EXPECT_GE(entry["seconds"].get<double>(), 0.0) << name;
+  }
+  // One evaluation writer: `evaluate` on the run's own models and label maps writes the same bytes.
+  const fs::path eval_again = base / "eval_again";
+  const auto evaluated = run_cli("-q evaluate --scene " + (base / "fzk-haus").string() + " --model citylangsplat=" +
+                                 (out / "language" / "citylangsplat").string() + " --model langsplat=" +
+                                 (out / "language" / "langsplat").string() + " --labels " + (out / "labels").string() +
+                                 " --out " + eval_again.string());
+  ASSERT_EQ(evaluated.status, 0) << evaluated.err;
+  EXPECT_EQ(cls::read_text_file(eval_again / "eval.json"), cls::read_text_file(out / "eval" / "eval.json"));
+  EXPECT_TRUE(read_json(eval_again / "eval.json")["methods"].is_array());
 
   const auto second = run_cli(cmd);
   ASSERT_EQ(second.status, 0) << second.err;
@@ -174,11 +199,18 @@ TEST(RunCli, ChangedInputsRedoExactlyTheStagesThatDependOnThem) {
   fs::remove_all(scene);
   fs::copy(scene_dir(), scene, fs::copy_options::recursive);
   const fs::path out = scene / "out";
-  const std::string cmd = "-q run " + scene.string() + " --models synthetic --rgb-iterations 5 "
-                          "--language-iterations 2 --out " + out.string();
-  ASSERT_EQ(run_cli(cmd).status, 0);
+  // The default --models auto without weights runs every stage with synthetic features and says so.
+  hide_model_weights();
+  const std::string cmd = "run " + scene.string() + " --rgb-iterations 5 --language-iterations 2 --out " + out.string();
+  const auto first = run_cli(cmd);
+  ASSERT_EQ(first.status, 0) << first.err;
+  EXPECT_NE(first.err.find("no CLIP/SAM weights found"), std::string::npos) << first.err;
+  EXPECT_NE(first.err.find("synthetic features, not CLIP"), std::string::npos) << first.err;
   ASSERT_EQ(run_cli(cmd).status, 0);
   auto record = read_json(out / "run.json");
+  EXPECT_EQ(record["models"], "synthetic");
+  EXPECT_NE(record["warning"].get<std::string>().find("synthetic features, not CLIP"), std::string::npos);
+  EXPECT_EQ(record["settings"]["models"], "auto");
   for (const char* stage : {"labels", "features", "autoencoder", "train-rgb", "evaluate"})
     EXPECT_EQ(record[stage]["status"], "reused") << stage;
 

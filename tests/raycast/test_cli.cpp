@@ -12,6 +12,7 @@
 #include "citymodel/city_model.h"
 #include "citymodel/city_transform.h"
 #include "core/atomic_file.h"
+#include "core/exit_codes.h"
 #include "raycast/label_maps.h"
 #include "raycast/look_at.h"
 #include "scene/colmap.h"
@@ -159,12 +160,20 @@ TEST_F(CliScene, AlignCheckReportsTheShareOnTheMesh) {
   EXPECT_TRUE(j["aligned"].get<bool>());
   EXPECT_EQ(r.err.find("misaligned"), std::string::npos) << r.err;
 
+  // --min-fraction: 80 of the 100 points lie on the mesh, so 0.8 passes and 0.81 fails with exit 5.
+  r = test::run_cli("align-check " + scene_args() + " -d 0.5 --json --min-fraction 0.8");
+  EXPECT_EQ(r.status, 0) << r.err;
+  r = test::run_cli("align-check " + scene_args() + " -d 0.5 --json --min-fraction 0.81");
+  EXPECT_EQ(r.status, kExitMisaligned) << r.err;
+  EXPECT_FALSE(nlohmann::json::parse(r.out)["aligned"].get<bool>());
+  EXPECT_NE(r.err.find("--min-fraction 0.81"), std::string::npos) << r.err;
+
   // The model shifted by 30 m: nothing lies on it any more, and the command says so.
   CityTransform shifted = read_city_transform((dir_ / "transform.json").string());
   shifted.matrix[0][3] += 30;
   write_city_transform((dir_ / "transform.json").string(), shifted);
   r = test::run_cli("align-check " + scene_args() + " --json");
-  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_EQ(r.status, kExitMisaligned) << r.err;  // below the default --min-fraction
   const auto bad = nlohmann::json::parse(r.out);
   EXPECT_EQ(bad["fraction_within"].get<double>(), 0.0);
   EXPECT_FALSE(bad["aligned"].get<bool>());

@@ -1,0 +1,54 @@
+#include "pipeline/fingerprints.h"
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "core/atomic_file.h"
+#include "core/hash.h"
+
+namespace cls {
+namespace fs = std::filesystem;
+namespace {
+
+uint64_t views_fingerprint(const Scene& scene, uint64_t h) {
+  for (const SceneView& v : scene.views) {
+    const PinholeCamera& c = v.camera;
+    char buf[512];
+    std::snprintf(buf, sizeof buf, "%s|%.17g %.17g %.17g %.17g %d %d|", v.name.c_str(), c.fx, c.fy, c.cx, c.cy,
+                  c.width, c.height);
+    std::string s = buf;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) s += std::to_string(v.pose.R.m[i][j]) + " ";
+      s += std::to_string(v.pose.t[i]) + ";";
+    }
+    h = fnv1a64(s, h);
+  }
+  return h;
+}
+
+}  // namespace
+
+std::string labels_fingerprint(const PipelineConfig& config, const Scene& scene) {
+  uint64_t h = fnv1a64(read_text_file(config.city));
+  if (!config.city_transform.empty()) h = fnv1a64(read_text_file(config.city_transform), h);
+  if (!config.city_options.taxonomy_path.empty()) h = fnv1a64(read_text_file(config.city_options.taxonomy_path), h);
+  h = fnv1a64(std::to_string(config.city_options.lod), h);
+  return hex64(views_fingerprint(scene, h));
+}
+
+std::string images_fingerprint(const Scene& scene) {
+  uint64_t h = views_fingerprint(scene, fnv1a64("images"));
+  for (const SceneView& v : scene.views) h = fnv1a64(read_text_file(v.image_path), h);
+  return hex64(h);
+}
+
+std::string features_fingerprint(const fs::path& features_dir) {
+  const std::string text = read_text_file(features_dir / "features.json");
+  uint64_t h = fnv1a64(text);
+  const nlohmann::json index = nlohmann::json::parse(text);  // named: a temporary would dangle in the loop
+  for (const auto& view : index.at("views"))
+    h = fnv1a64(read_text_file(features_dir / (view.at("features").get<std::string>() + "_gml.json")), h);
+  return hex64(h);
+}
+
+}  // namespace cls
