@@ -13,6 +13,7 @@
 #include "cli/commands.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/strings.h"
 #include "core/log.h"
 #include "eval/evaluation.h"
 #include "features/feature_provider.h"
@@ -24,19 +25,6 @@ namespace fs = std::filesystem;
 
 namespace cls {
 namespace {
-
-std::vector<std::string> split_commas(const std::string& s) {
-  std::vector<std::string> out;
-  size_t b = 0;
-  while (b <= s.size()) {
-    const size_t e = s.find(',', b);
-    const std::string part = s.substr(b, e == std::string::npos ? std::string::npos : e - b);
-    if (!part.empty()) out.push_back(part);
-    if (e == std::string::npos) break;
-    b = e + 1;
-  }
-  return out;
-}
 
 nlohmann::json provider_spec(const std::string& text) {
   const std::string json = fs::exists(text) ? read_text_file(text) : text;

@@ -1,23 +1,13 @@
 // citylangsplat query: open-vocabulary text queries on a trained language field.
-#include <sstream>
 #include <string>
 
 #include "core/args.h"
 #include "cli/commands.h"
 #include "core/error.h"
+#include "core/strings.h"
 #include "query/query_job.h"
 
 namespace cls {
-
-namespace {
-std::vector<std::string> split_commas(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  for (std::string item; std::getline(ss, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
-}  // namespace
 
 int cmd_query(int argc, char** argv) {
   Args args("query",

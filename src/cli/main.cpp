@@ -32,6 +32,7 @@ const Command kCommands[] = {
     {"train-language", cls::cmd_train_language, "train the language field on a frozen photometric model (paper 3.3)"},
     {"query", cls::cmd_query, "query a language model with text: Gaussian scores, selections, relevance maps"},
     {"evaluate", cls::cmd_evaluate, "evaluate language models against a labelled point cloud (2D and 3D)"},
+    {"render", cls::cmd_render, "render a model: RGB vs photo (PSNR/SSIM), depth, features, relevance, labels, orbit video"},
 };
 
 void usage(FILE* out) {

@@ -16,6 +16,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/image_file.h"
 #include "core/log.h"
 #include "core/progress.h"
 #include "eval/gt_projection.h"
@@ -92,24 +93,6 @@ std::vector<int> available_levels(const LanguageModel& model) {
     if (model.latents[size_t(l - 1)].defined()) levels.push_back(l);
   if (levels.empty()) throw Error("evaluate: the language model has no latents");
   return levels;
-}
-
-// Taxonomy colour per evaluated index; black = no GT, dark grey = ignored prediction.
-cv::Mat colourise(const std::vector<int32_t>& labels, int H, int W, const std::vector<std::array<unsigned char, 3>>& colours,
-                  const cv::Vec3b& none) {
-  cv::Mat img(H, W, CV_8UC3);
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x) {
-      const int32_t l = labels[size_t(y) * W + x];
-      img.at<cv::Vec3b>(y, x) = l < 0 ? none : cv::Vec3b(colours[l][2], colours[l][1], colours[l][0]);  // BGR
-    }
-  return img;
-}
-
-void write_png(const fs::path& path, const cv::Mat& img) {
-  write_atomic(path, [&](const fs::path& tmp) {
-    if (!cv::imwrite(tmp.string(), img)) fail(path.string(), "cannot write PNG");
-  });
 }
 
 nlohmann::json scores_json(const ClassScores& s) {
@@ -301,8 +284,8 @@ nlohmann::json evaluate_2d(const Scene& scene, const EvaluatedClasses& ec, const
     views.push_back(record);
     if (!view_dir.empty() && options.write_view_images) {
       const std::string stem = fs::path(v.name).stem().string();
-      write_png(view_dir / (stem + "_gt.png"), colourise(gt_labels, H, W, ec.colours, cv::Vec3b(0, 0, 0)));
-      write_png(view_dir / (stem + "_pred.png"), colourise(pred, H, W, ec.colours, cv::Vec3b(64, 64, 64)));
+      write_image(view_dir / (stem + "_gt.png"), colourise(gt_labels, H, W, ec.colours, cv::Vec3b(0, 0, 0)));
+      write_image(view_dir / (stem + "_pred.png"), colourise(pred, H, W, ec.colours, cv::Vec3b(64, 64, 64)));
     }
     progress.advance();
   }

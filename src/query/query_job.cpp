@@ -21,7 +21,9 @@
 #include "query/relevance.h"
 #include "query/relevance_image.h"
 #include "query/selection.h"
+#include "query/text_queries.h"
 #include "scene/scene.h"
+#include "scene/view_selection.h"
 #include "splat/ply_gaussians.h"
 
 namespace cls {
@@ -40,64 +42,6 @@ int parse_level(const std::string& level) {
   if (level == "best") return 0;
   if (level == "1" || level == "2" || level == "3") return level[0] - '0';
   throw UsageError("query: --level must be 1, 2, 3 or best, got '" + level + "'");
-}
-
-// A view name as a file stem: sub-folders joined with '_', extension dropped.
-std::string view_stem(const std::string& name) {
-  std::string s = fs::path(name).replace_extension().string();
-  std::replace(s.begin(), s.end(), '/', '_');
-  return s;
-}
-
-std::vector<const SceneView*> pick_views(const Scene& scene, const std::vector<std::string>& names) {
-  std::vector<const SceneView*> out;
-  if (names.empty()) {
-    for (const auto& v : scene.views) out.push_back(&v);
-    return out;
-  }
-  for (const auto& n : names) {
-    const SceneView* found = nullptr;
-    for (const auto& v : scene.views)
-      if (v.name == n || fs::path(v.name).replace_extension().string() == n) found = &v;
-    if (!found) {
-      std::string known;
-      for (size_t i = 0; i < scene.views.size() && i < 5; ++i) known += (i ? ", " : "") + scene.views[i].name;
-      if (scene.views.size() > 5) known += ", ...";
-      throw UsageError("query: no view named '" + n + "' in " + scene.root + " (views: " + known + ")");
-    }
-    out.push_back(found);
-  }
-  return out;
-}
-
-// --taxonomy, else what model.json records (a legend array, or a path), else the built-in one.
-Taxonomy taxonomy_for(const QueryOptions& o, const json& info, const std::string& model_json) {
-  if (!o.taxonomy_path.empty()) return Taxonomy::load(o.taxonomy_path);
-  if (info.contains("taxonomy") && info["taxonomy"].is_array()) return Taxonomy::from_legend(info["taxonomy"].dump(), model_json);
-  if (info.contains("taxonomy") && info["taxonomy"].is_string()) {
-    const std::string path = info["taxonomy"].get<std::string>();
-    if (!path.empty()) {
-      if (!fs::exists(path)) fail(model_json, "records taxonomy " + path + ", which does not exist (pass --taxonomy)");
-      return Taxonomy::load(path);
-    }
-  }
-  return Taxonomy::builtin();
-}
-
-// The scene directory recorded with the model: model.json "scene", else the features stage's
-// features.json "scene" (model.json "features" names that directory); "" if neither.
-std::string recorded_scene(const json& info) {
-  if (info.contains("scene") && info["scene"].is_string()) return info["scene"].get<std::string>();
-  if (!info.contains("features") || !info["features"].is_string()) return "";
-  const fs::path features_json = fs::path(info["features"].get<std::string>()) / "features.json";
-  if (!fs::exists(features_json)) return "";
-  try {
-    const json fj = json::parse(read_text_file(features_json));
-    if (fj.contains("scene") && fj["scene"].is_string()) return fj["scene"].get<std::string>();
-  } catch (const json::exception& e) {
-    fail(features_json.string(), std::string("not valid JSON: ") + e.what());
-  }
-  return "";
 }
 
 c10::Device parse_device(const std::string& name) {
@@ -173,19 +117,12 @@ json run_query(const QueryOptions& o) {
     SceneOptions scene_options;
     scene_options.check_images = false;
     scene = load_scene(scene_dir, scene_options);
-    views = pick_views(scene, o.views);
+    views = find_views(scene, o.views, "query");
   }
   fs::create_directories(out);
 
   // The text side: the model's own provider and encoder.
-  if (!model.info.contains("provider") || !model.info["provider"].is_object())
-    fail(model_json, "no \"provider\" spec recorded (the feature provider the model was trained with)");
-  const Taxonomy taxonomy = taxonomy_for(o, model.info, model_json);
-  const auto provider = make_feature_provider(model.info["provider"], taxonomy);
-  const int D = model.autoencoder.config().input_dim;
-  if (provider->dim() != D)
-    fail(model_json, "provider '" + provider->name() + "' gives " + std::to_string(provider->dim()) +
-                         "-d features, the autoencoder expects " + std::to_string(D));
+  const auto provider = model_provider(model, model_json, model_taxonomy(model.info, model_json, o.taxonomy_path));
   const at::Tensor text_features = provider->text_features(texts).to(device, torch::kFloat32);  // K x D
   const at::Tensor query_latents = model.autoencoder.encode(text_features);               // K x L
   const std::vector<std::string> slugs = unique_slugs(texts);
@@ -197,18 +134,11 @@ json run_query(const QueryOptions& o) {
   std::vector<int> level_of(K);
   std::vector<at::Tensor> score_of(K);
   for (int64_t k = 0; k < K; ++k) {
-    std::array<at::Tensor, 3> per_level;
+    const LevelScores levels = score_levels(latents_on_device, query_latents[k]);
     json level_max = json::object();
-    int best = 1;
-    double best_max = -2;
-    for (int l = 1; l <= 3; ++l) {
-      per_level[l - 1] = gaussian_scores(latents_on_device[l - 1], query_latents[k]).cpu();
-      const double mx = per_level[l - 1].numel() ? per_level[l - 1].max().item<double>() : -1.0;
-      level_max[std::to_string(l)] = mx;
-      if (mx > best_max) best_max = mx, best = l;  // ties keep the lower level
-    }
-    level_of[k] = fixed_level ? fixed_level : best;
-    score_of[k] = per_level[level_of[k] - 1];
+    for (int l = 1; l <= 3; ++l) level_max[std::to_string(l)] = levels.max[l - 1];
+    level_of[k] = fixed_level ? fixed_level : levels.best;
+    score_of[k] = levels.scores[level_of[k] - 1];
     scored.extras.push_back({"score_" + slugs[k], score_of[k]});
 
     const at::Tensor sel = o.use_top_k ? select_top_k(score_of[k], o.top_k) : select_by_threshold(score_of[k], o.threshold);

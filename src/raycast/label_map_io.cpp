@@ -11,6 +11,7 @@
 #include "core/atomic_file.h"
 #include "core/endian.h"
 #include "core/error.h"
+#include "core/image_file.h"
 #include "core/log.h"
 
 namespace cls {
@@ -20,19 +21,6 @@ namespace {
 void check_size(const fs::path& path, size_t size, int width, int height) {
   if (width <= 0 || height <= 0 || size != static_cast<size_t>(width) * height)
     fail(path.string(), cat("cannot write ", size, " values as a ", width, "x", height, " image"));
-}
-
-// cv::imwrite through write_atomic; OpenCV's exceptions become cls::Error naming the file.
-void write_image(const fs::path& path, const cv::Mat& image) {
-  write_atomic(path, [&](const fs::path& tmp) {
-    bool ok = false;
-    try {
-      ok = cv::imwrite(tmp.string(), image);
-    } catch (const cv::Exception& e) {
-      fail(path.string(), cat("cannot write image: ", e.what()));
-    }
-    if (!ok) fail(path.string(), "cannot write image");
-  });
 }
 
 }  // namespace
@@ -142,6 +130,17 @@ FloatImage read_pfm(const fs::path& path) {
       std::memcpy(&img.data[static_cast<size_t>(j) * img.width + i], b, 4);
     }
   }
+  return img;
+}
+
+cv::Mat colourise(const std::vector<int32_t>& labels, int H, int W, const std::vector<std::array<unsigned char, 3>>& colours,
+                  const cv::Vec3b& none) {
+  cv::Mat img(H, W, CV_8UC3);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const int32_t l = labels[size_t(y) * W + x];
+      img.at<cv::Vec3b>(y, x) = l < 0 ? none : cv::Vec3b(colours[l][2], colours[l][1], colours[l][0]);  // BGR
+    }
   return img;
 }
 

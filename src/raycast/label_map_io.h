@@ -1,9 +1,10 @@
 #pragma once
 // Files of a view's label maps: 16-/8-bit PNG, PFM depth and a colour preview. Every writer goes
 // through write_atomic, so a reader never sees a half-written file.
+#include <array>
 #include <cstdint>
 #include <filesystem>
-#include <opencv2/core/mat.hpp>
+#include <opencv2/core.hpp>
 #include <vector>
 
 #include "citymodel/taxonomy.h"
@@ -35,6 +36,11 @@ struct FloatImage {
 // Reads a single-channel PFM of either byte order; cls::Error naming the file if it is malformed
 // or truncated.
 FloatImage read_pfm(const std::filesystem::path& path);
+
+// Label ids (row-major H x W, -1 or any negative = none) as a BGR image: colours[id] is the RGB colour
+// of id, `none` the BGR colour where there is no label.
+cv::Mat colourise(const std::vector<int32_t>& labels, int H, int W, const std::vector<std::array<unsigned char, 3>>& colours,
+                  const cv::Vec3b& none);
 
 // RGB preview: level-1 class colours, darkened where the level-1 class changes, black outlines
 // where the building changes, dark grey where nothing is hit, mid grey for unlabelled hits.

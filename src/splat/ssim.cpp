@@ -2,6 +2,7 @@
 
 #include <torch/torch.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
@@ -55,5 +56,12 @@ at::Tensor ssim(const at::Tensor& a, const at::Tensor& b) {
 }
 
 at::Tensor dssim_loss(const at::Tensor& a, const at::Tensor& b) { return 1 - ssim(a, b); }
+
+double psnr(const at::Tensor& a, const at::Tensor& b) {
+  if (a.sizes() != b.sizes())
+    throw Error("psnr: images of different shapes " + c10::str(a.sizes()) + " and " + c10::str(b.sizes()));
+  const double mse = (a - b).pow(2).mean().item<double>();
+  return 20 * std::log10(1.0 / std::sqrt(std::max(mse, 1e-20)));
+}
 
 }  // namespace cls

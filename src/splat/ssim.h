@@ -17,4 +17,8 @@ at::Tensor ssim(const at::Tensor& a, const at::Tensor& b);
 // D-SSIM term of the 3DGS loss: 1 - ssim(a, b).
 at::Tensor dssim_loss(const at::Tensor& a, const at::Tensor& b);
 
+// PSNR in dB for a peak of 1 (3DGS's image_utils.psnr): 20 log10(1 / sqrt(MSE)), the MSE over all
+// pixels and channels of two same-shaped images, floored at 1e-20 so that identical images give 200 dB.
+double psnr(const at::Tensor& a, const at::Tensor& b);
+
 }  // namespace cls

@@ -11,17 +11,18 @@
 #include <random>
 #include <sstream>
 
-#include <opencv2/imgproc.hpp>
-
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/interrupt.h"
 #include "core/log.h"
 #include "core/progress.h"
 #include "scene/image_loader.h"
+#include "scene/view_selection.h"
 #include "splat/adam.h"
 #include "splat/checkpoint.h"
 #include "splat/densify.h"
+#include "splat/image_tensor.h"
+#include "splat/model_layout.h"
 #include "splat/ply_gaussians.h"
 #include "splat/rasterize.h"
 #include "splat/ssim.h"
@@ -38,13 +39,6 @@ struct View {
   const SceneView* view = nullptr;
   at::Tensor image;  // H x W x 3 float RGB in [0, 1]
 };
-
-at::Tensor to_rgb_tensor(const cv::Mat& bgr) {
-  cv::Mat rgb;
-  cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
-  at::Tensor t = torch::from_blob(rgb.data, {rgb.rows, rgb.cols, 3}, torch::kUInt8).clone();
-  return t.to(torch::kFloat32).div_(255.0f);
-}
 
 // getNerfppNorm: 1.1 x the largest distance of a camera centre from the centres' mean.
 double scene_extent(const std::vector<View>& views) {
@@ -99,11 +93,6 @@ double exponential_lr(int step, double lr_init, double lr_final, int max_steps) 
   if (lr_init == 0 && lr_final == 0) return 0;
   const double t = max_steps > 0 ? std::clamp(double(step) / max_steps, 0.0, 1.0) : 1.0;
   return std::exp(std::log(lr_init) * (1 - t) + std::log(lr_final) * t);
-}
-
-double psnr_of(const at::Tensor& image, const at::Tensor& gt) {
-  const double mse = (image - gt).pow(2).mean().item<double>();
-  return 20 * std::log10(1.0 / std::sqrt(std::max(mse, 1e-20)));
 }
 
 const char* const kGroups[] = {"means", "log_scales", "quats", "opacity_logits", "sh_dc", "sh_rest"};
@@ -250,19 +239,16 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
   if (scene.views.empty()) throw Error(scene.root + ": the scene has no views");
   if (scene.points.empty()) throw Error(scene.root + ": the scene has no sparse points to start from");
 
-  // Views sorted by name; every test_every-th (index % test_every == 0) held out, as 3DGS's llffhold.
-  std::vector<const SceneView*> sorted;
-  for (const SceneView& v : scene.views) sorted.push_back(&v);
-  std::stable_sort(sorted.begin(), sorted.end(), [](const SceneView* a, const SceneView* b) { return a->name < b->name; });
+  const ViewSplit split = split_views(scene, options.test_every);
   std::vector<View> train, test;
   {
     ImageLoader loader;
-    Progress progress("load images", sorted.size(), "images");
-    for (size_t i = 0; i < sorted.size(); ++i) {
-      View v{sorted[i], to_rgb_tensor(loader.load(*sorted[i]))};
-      (options.test_every > 0 && i % size_t(options.test_every) == 0 ? test : train).push_back(std::move(v));
-      progress.advance();
-    }
+    Progress progress("load images", scene.views.size(), "images");
+    for (const auto& [from, to] : {std::pair(&split.train, &train), std::pair(&split.test, &test)})
+      for (const SceneView* sv : *from) {
+        to->push_back(View{sv, image_to_tensor(loader.load(*sv))});
+        progress.advance();
+      }
   }
   if (train.empty()) throw Error(scene.root + ": no training views left after holding out every " +
                                  std::to_string(options.test_every) + "th view");
@@ -389,7 +375,7 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
 
       char detail[160];
       std::snprintf(detail, sizeof detail, "it %d loss %.4f PSNR %.2f dB %lld Gaussians", it, state.ema_loss,
-                    psnr_of(image.detach().clamp(0, 1), view.image),
+                    psnr(image.detach().clamp(0, 1), view.image),
                     static_cast<long long>(adam.group("means").param.size(0)));
       progress.set_detail(detail);
       progress.advance();
@@ -424,7 +410,7 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
   double psnr_sum = 0, ssim_sum = 0;
   for (const View& v : eval) {
     const at::Tensor image = render(g, state.active_sh_degree, *v.view, fixed_background, {}).clamp(0, 1);
-    psnr_sum += psnr_of(image, v.image);
+    psnr_sum += psnr(image, v.image);
     ssim_sum += ssim(image, v.image).item<double>();
   }
   report.test_views = int(test.size());
@@ -438,7 +424,10 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
   out.opacity_logits = g.opacity_logits.detach();
   out.sh_dc = g.sh_dc.detach();
   out.sh_rest = g.sh_rest.detach();
-  write_gaussians_ply((fs::path(options.out_dir) / "point_cloud.ply").string(), out);
+  const fs::path ply = fs::path(options.out_dir) / "point_cloud.ply";
+  write_gaussians_ply(ply.string(), out);
+  write_model_layout(options.out_dir, ply, scene,
+                     {report.iterations, options.sh_degree, options.test_every, options.white_background});
   const nlohmann::json summary = {{"iterations", report.iterations},
                                   {"gaussians", report.gaussians},
                                   {"test_psnr", report.test_psnr},

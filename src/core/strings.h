@@ -1,0 +1,10 @@
+#pragma once
+#include <string>
+#include <vector>
+
+namespace cls {
+
+// The non-empty items of a comma-separated list ("a,,b," -> {"a", "b"}).
+std::vector<std::string> split_commas(const std::string& s);
+
+}  // namespace cls

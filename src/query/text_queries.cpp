@@ -1,0 +1,63 @@
+#include "query/text_queries.h"
+
+#include <filesystem>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "query/relevance.h"
+
+namespace cls {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+Taxonomy model_taxonomy(const json& info, const std::string& model_json, const std::string& override_path) {
+  if (!override_path.empty()) return Taxonomy::load(override_path);
+  if (info.contains("taxonomy") && info["taxonomy"].is_array()) return Taxonomy::from_legend(info["taxonomy"].dump(), model_json);
+  if (info.contains("taxonomy") && info["taxonomy"].is_string()) {
+    const std::string path = info["taxonomy"].get<std::string>();
+    if (!path.empty()) {
+      if (!fs::exists(path)) fail(model_json, "records taxonomy " + path + ", which does not exist (pass --taxonomy)");
+      return Taxonomy::load(path);
+    }
+  }
+  return Taxonomy::builtin();
+}
+
+std::string recorded_scene(const json& info) {
+  if (info.contains("scene") && info["scene"].is_string()) return info["scene"].get<std::string>();
+  if (!info.contains("features") || !info["features"].is_string()) return "";
+  const fs::path features_json = fs::path(info["features"].get<std::string>()) / "features.json";
+  if (!fs::exists(features_json)) return "";
+  try {
+    const json fj = json::parse(read_text_file(features_json));
+    if (fj.contains("scene") && fj["scene"].is_string()) return fj["scene"].get<std::string>();
+  } catch (const json::exception& e) {
+    fail(features_json.string(), std::string("not valid JSON: ") + e.what());
+  }
+  return "";
+}
+
+std::unique_ptr<FeatureProvider> model_provider(const LanguageModel& model, const std::string& model_json,
+                                                const Taxonomy& taxonomy) {
+  if (!model.info.contains("provider") || !model.info["provider"].is_object())
+    fail(model_json, "no \"provider\" spec recorded (the feature provider the model was trained with)");
+  auto provider = make_feature_provider(model.info["provider"], taxonomy);
+  const int D = model.autoencoder.config().input_dim;
+  if (provider->dim() != D)
+    fail(model_json, "provider '" + provider->name() + "' gives " + std::to_string(provider->dim()) +
+                         "-d features, the autoencoder expects " + std::to_string(D));
+  return provider;
+}
+
+LevelScores score_levels(const std::array<at::Tensor, 3>& latents, const at::Tensor& query_latent) {
+  LevelScores s;
+  double best_max = -2;
+  for (int l = 1; l <= 3; ++l) {
+    s.scores[l - 1] = gaussian_scores(latents[l - 1], query_latent).cpu();
+    s.max[l - 1] = s.scores[l - 1].numel() ? s.scores[l - 1].max().item<double>() : -1.0;
+    if (s.max[l - 1] > best_max) best_max = s.max[l - 1], s.best = l;  // ties keep the lower level
+  }
+  return s;
+}
+
+}  // namespace cls

@@ -1,0 +1,39 @@
+#pragma once
+// The text side of a trained language model, shared by `query` and `render`: the taxonomy and the
+// feature provider recorded in model.json, and the level that answers a query best.
+#include <ATen/core/Tensor.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <memory>
+#include <string>
+
+#include "citymodel/taxonomy.h"
+#include "features/feature_provider.h"
+#include "language/language_model.h"
+
+namespace cls {
+
+// `override_path` if given, else what model.json records (a legend array, or a path), else the
+// built-in taxonomy. cls::Error naming `model_json` for a recorded path that does not exist.
+Taxonomy model_taxonomy(const nlohmann::json& info, const std::string& model_json, const std::string& override_path);
+
+// The scene directory recorded with the model: model.json "scene", else the features stage's
+// features.json "scene" (model.json "features" names that directory); "" if neither.
+std::string recorded_scene(const nlohmann::json& info);
+
+// The model's own feature provider (model.json "provider"), checked against the autoencoder's input
+// size. cls::Error naming `model_json` when the spec is missing or the sizes differ.
+std::unique_ptr<FeatureProvider> model_provider(const LanguageModel& model, const std::string& model_json,
+                                                const Taxonomy& taxonomy);
+
+// Per-Gaussian scores of one query latent at each level (gaussian_scores, on the CPU), their maxima, and
+// LangSplat's choice: the level with the highest maximum score (ties: the lower level).
+struct LevelScores {
+  std::array<at::Tensor, 3> scores;  // level 1..3 at index 0..2, N
+  std::array<double, 3> max{};       // -1 for an empty model
+  int best = 1;
+};
+LevelScores score_levels(const std::array<at::Tensor, 3>& latents, const at::Tensor& query_latent);
+
+}  // namespace cls
