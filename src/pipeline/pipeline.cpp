@@ -19,6 +19,7 @@
 #include "query/query_job.h"
 #include "raycast/alignment.h"
 #include "raycast/label_export.h"
+#include "render/render_job.h"
 #include "splat/train_rgb.h"
 
 namespace cls {
@@ -188,9 +189,29 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
     if (stopped_in("train-rgb", r)) return result;
   }
 
+  // Pictures of the photometric model: the held-out views beside their photos (PSNR, SSIM) and depth.
+  const fs::path render_dir = out / "render";
+  const std::string geometry_fp = file_fnv1a64_hex(geometry);
+  const StageReport rendered = run_stage(
+      {"render", render_dir / "stage.json", {render_dir / "render.json"},
+       hex64(fnv1a64(cat(geometry_fp, "|", images_fp, "|", c.resolution))), {{"dir", render_dir.string()}}, [&] {
+         RenderOptions o;
+         o.model = c.rgb_model.empty() ? geometry.parent_path().string() : geometry.string();
+         o.scene_dir = c.scene_dir.string();
+         o.out_dir = render_dir.string();
+         o.what = {"rgb", "depth"};
+         o.resolution = c.resolution;
+         const nlohmann::json r = render_views(o);
+         log_info(cat("run: render: ", r["views"].size(), " held-out views, mean PSNR ", r.value("mean_psnr", 0.0),
+                      " dB (", render_dir.string(), ")"));
+         return done({{"dir", render_dir.string()}, {"mean_psnr", r.value("mean_psnr", 0.0)},
+                      {"mean_ssim", r.value("mean_ssim", 0.0)}});
+       }});
+  record.add("render", rendered);
+  if (stopped_by_signal("render")) return result;
+
   // Language fields (3.3): CityLangSplat, and LangSplat's objective on identical inputs.
   const auto methods = language_methods(c);
-  const std::string geometry_fp = file_fnv1a64_hex(geometry);
   const std::string ae_fp = file_fnv1a64_hex(ae_path);
   for (const auto& [method, dir] : methods) {
     LanguageTrainOptions o;
