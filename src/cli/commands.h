@@ -14,4 +14,5 @@ int cmd_train_rgb(int argc, char** argv);   // photometric 3DGS training
 int cmd_train_language(int argc, char** argv);  // language field training (paper 3.3)
 int cmd_query(int argc, char** argv);       // open-vocabulary text queries on a language model
 int cmd_evaluate(int argc, char** argv);    // the paper's evaluation (section 4)
+int cmd_report(int argc, char** argv);      // the HTML report of a run directory
 }  // namespace cls

@@ -31,6 +31,7 @@ const Command kCommands[] = {
     {"train-language", cls::cmd_train_language, "train the language field on a frozen photometric model (paper 3.3)"},
     {"query", cls::cmd_query, "query a language model with text: Gaussian scores, selections, relevance maps"},
     {"evaluate", cls::cmd_evaluate, "evaluate language models against a labelled point cloud (2D and 3D)"},
+    {"report", cls::cmd_report, "write a run directory's HTML report (report/index.html) and print its path"},
 };
 
 void usage(FILE* out) {
