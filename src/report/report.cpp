@@ -198,8 +198,8 @@ void header(Page& page, const json& run) {
   if (run.contains("provider")) row("Feature provider", run["provider"].dump());
   if (const auto a = run.find("align_check"); a != run.end() && a->is_object())
     row("Alignment check", fixed(100 * a->value("fraction_within", NAN), 1) + "% of the sparse points within " +
-                               number_text(a->value("threshold", json())) + " of the city model (median " +
-                               fixed(a->value("median", NAN), 3) + ")");
+                               number_text(a->value("threshold", json())) + " m of the city model (median " +
+                               fixed(a->value("median", NAN), 3) + " m)");
   std::time_t now = std::time(nullptr);
   char when[64];
   std::strftime(when, sizeof when, "%Y-%m-%d %H:%M", std::localtime(&now));
