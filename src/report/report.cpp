@@ -138,7 +138,7 @@ class Page {
 
   // A figure of one image of the run (`rel`), or the line that says it is missing.
   std::string figure(const fs::path& rel, const std::string& caption, const char* img_class = "") const {
-    if (!has(rel)) return "<p class=\"missing\">" + html_escape("no " + rel.generic_string()) + "</p>";
+    if (!fs::is_regular_file(run_ / rel)) return "<p class=\"missing\">" + html_escape("no " + rel.generic_string()) + "</p>";
     return "<figure><img class=\"" + std::string(img_class) + "\" src=\"../" + url_of(rel) + "\" alt=\"" +
            html_escape(caption) + "\"><figcaption>" + html_escape(caption) + "</figcaption></figure>";
   }

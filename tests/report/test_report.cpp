@@ -204,7 +204,10 @@ TEST(Report, PartialRunSaysWhatIsMissingInsteadOfBrokenImages) {
   // a missing or broken run.json is an error naming it.
   write_text_atomic(dir.path / "eval" / "eval.json", "{\"methods\": [");
   write_text_atomic(dir.path / "language" / "langsplat" / "metrics.jsonl", R"({"level": "one", "iteration": 1})");
+  test::sample::write_json(dir.path / "render" / "render.json", {{"views", {{{"name", "a.png"}, {"split", "test"}}}}});
   const std::string odd = read_text_file(write_report(dir.path));
+  EXPECT_NE(odd.find("no render/</p>"), std::string::npos) << "a view without files: no image of a directory";
+  EXPECT_NE(odd.find("a.png: PSNR - dB"), std::string::npos);
   EXPECT_NE(odd.find("eval/eval.json: not readable as JSON"), std::string::npos);
   EXPECT_NE(odd.find("<h2 id=\"language\">Language fields</h2>\n<p class=\"missing\">this section could not be written"),
             std::string::npos);
