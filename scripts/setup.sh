@@ -7,7 +7,8 @@ cd "$(dirname "$0")/.."
 
 PACKAGES=(build-essential cmake ninja-build pkg-config
           libembree-dev libpugixml-dev nlohmann-json3-dev libopencv-dev libglu1-mesa-dev
-          libgtest-dev libtorch-dev libopenblas0-pthread libcurl4-openssl-dev zlib1g-dev libicu-dev)
+          libgtest-dev libtorch-dev libopenblas0-pthread libcurl4-openssl-dev zlib1g-dev libicu-dev
+          chromium chromium-driver python3-selenium python3-pil)  # the last four: the report's browser test
 
 missing=()
 for p in "${PACKAGES[@]}"; do

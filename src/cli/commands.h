@@ -15,4 +15,5 @@ int cmd_train_language(int argc, char** argv);  // language field training (pape
 int cmd_query(int argc, char** argv);       // open-vocabulary text queries on a language model
 int cmd_evaluate(int argc, char** argv);    // the paper's evaluation (section 4)
 int cmd_render(int argc, char** argv);      // pictures and videos of a trained model
+int cmd_report(int argc, char** argv);      // the HTML report of a run directory
 }  // namespace cls

@@ -33,6 +33,7 @@ const Command kCommands[] = {
     {"query", cls::cmd_query, "query a language model with text: Gaussian scores, selections, relevance maps"},
     {"evaluate", cls::cmd_evaluate, "evaluate language models against a labelled point cloud (2D and 3D)"},
     {"render", cls::cmd_render, "render a model: RGB vs photo (PSNR/SSIM), depth, features, relevance, labels, orbit video"},
+    {"report", cls::cmd_report, "write a run directory's HTML report (report/index.html) and print its path"},
 };
 
 void usage(FILE* out) {

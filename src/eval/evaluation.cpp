@@ -6,13 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <map>
 #include <opencv2/imgcodecs.hpp>
 #include <set>
-#include <sstream>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -25,6 +23,7 @@
 #include "eval/metrics_3d.h"
 #include "raycast/label_export.h"
 #include "raycast/label_map_io.h"
+#include "eval/evaluation_tables.h"
 #include "query/relevance.h"
 
 namespace fs = std::filesystem;
@@ -133,18 +132,6 @@ at::Tensor gaussian_cosines(const LanguageModel& model, int level, const at::Ten
     out.slice(0, b, e).copy_(unit_rows(d).matmul(p.t()));
   }
   return out;
-}
-
-std::string pct(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", 100.0 * v);
-  return buf;
-}
-
-std::string fixed2(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", v);
-  return buf;
 }
 
 }  // namespace
@@ -440,147 +427,8 @@ nlohmann::json evaluate_label_maps(const Scene& scene, const Taxonomy& taxonomy,
   return result;
 }
 
-namespace {
-
-// A reference row (the label maps) is shown but neither bolded nor compared against.
-bool is_reference(const nlohmann::json& j) { return j.is_object() && j.value("reference", false); }
-
-// Whether methods[m]'s value v is strictly better than every other (non-reference) method's; ties stay plain.
-bool strictly_best(const std::vector<std::pair<std::string, nlohmann::json>>& methods, size_t m, double v,
-                   const std::function<double(size_t)>& value_of, bool higher_better) {
-  if (is_reference(methods[m].second) || std::isnan(v)) return false;
-  int compared = 0;
-  for (size_t o = 0; o < methods.size(); ++o) {
-    if (o == m || is_reference(methods[o].second)) continue;
-    const double w = value_of(o);
-    if (std::isnan(w)) continue;
-    ++compared;
-    if (!(higher_better ? v > w + 1e-12 : v < w - 1e-12)) return false;
-  }
-  return compared > 0;
-}
-
-// One Markdown row; the best value of each metric group among the methods in bold.
-struct Column {
-  std::string header;
-  std::function<double(const nlohmann::json&)> value;
-  bool percent = true;
-  bool higher_better = true;
-  bool compared = true;  // false: a reference value, never bold
-};
-
-std::string table(const std::vector<std::pair<std::string, nlohmann::json>>& methods, const std::vector<Column>& cols) {
-  std::ostringstream md;
-  md << "| Method |";
-  for (const Column& c : cols) md << " " << c.header << " |";
-  md << "\n|---|";
-  for (size_t i = 0; i < cols.size(); ++i) md << "---:|";
-  md << "\n";
-  for (size_t m = 0; m < methods.size(); ++m) {
-    md << "| " << methods[m].first << " |";
-    for (const Column& c : cols) {
-      const double v = c.value(methods[m].second);
-      const bool best = c.compared && strictly_best(
-                                          methods, m, v, [&](size_t o) { return c.value(methods[o].second); },
-                                          c.higher_better);
-      if (std::isnan(v)) {  // the method has no such score (the label maps have no 3D)
-        md << " - |";
-        continue;
-      }
-      const std::string text = c.percent ? pct(v) : fixed2(v);
-      md << " " << (best ? "**" + text + "**" : text) << " |";
-    }
-    md << "\n";
-  }
-  return md.str();
-}
-
-double get(const nlohmann::json& j, const std::string& a, const std::string& b) {
-  return j.contains(a) && j[a].contains(b) ? j[a][b].get<double>() : std::nan("");
-}
-
-// The mIoU of the best labelling of the Gaussians (`group`.best_labelling.miou).
-double best_labelling(const nlohmann::json& j, const std::string& group) {
-  return j.contains(group) ? get(j[group], "best_labelling", "miou") : std::nan("");
-}
-
-}  // namespace
-
 std::string evaluation_tables_markdown(const std::vector<std::pair<std::string, nlohmann::json>>& methods) {
-  std::ostringstream md;
-  md << "### Table 1: 2D (projected GT; percentages)\n\n"
-        "Cov. GT: pixels with a valid GT label; Cov.: valid GT pixels with a prediction above the threshold; "
-        "scores over those.\n\n";
-  md << table(methods, {{"Cov. GT", [](const nlohmann::json& j) { return get(j, "2d", "gt_coverage"); }},
-                        {"Cov.", [](const nlohmann::json& j) { return get(j, "2d", "coverage"); }},
-                        {"mIoU", [](const nlohmann::json& j) { return get(j, "2d", "miou"); }},
-                        {"wIoU", [](const nlohmann::json& j) { return get(j, "2d", "wiou"); }},
-                        {"Acc", [](const nlohmann::json& j) { return get(j, "2d", "accuracy"); }}});
-  if (std::any_of(methods.begin(), methods.end(), [](const auto& m) { return m.second.contains("2d_covered"); })) {
-    md << "\n### Table 1b: 2D on the GT pixels the city model covers (coverage M = 1)\n\n";
-    md << table(methods, {{"Cov. GT", [](const nlohmann::json& j) { return get(j, "2d_covered", "gt_coverage"); }},
-                          {"Cov.", [](const nlohmann::json& j) { return get(j, "2d_covered", "coverage"); }},
-                          {"mIoU", [](const nlohmann::json& j) { return get(j, "2d_covered", "miou"); }},
-                          {"wIoU", [](const nlohmann::json& j) { return get(j, "2d_covered", "wiou"); }},
-                          {"Acc", [](const nlohmann::json& j) { return get(j, "2d_covered", "accuracy"); }}});
-  }
-  md << "\n### Table 2: 3D (nearest Gaussian centre)\n\n"
-        "Cov.: GT points with a Gaussian centre within the radius (%); Dist.: mean match distance (scene units); "
-        "best labelling: the mIoU when every Gaussian holds the majority class of the GT points matched to it "
-        "(the labelling with the highest accuracy these Gaussians allow; a reference, not compared).\n\n";
-  md << table(methods, {{"Cov.", [](const nlohmann::json& j) { return get(j, "3d", "coverage"); }},
-                        {"Dist.", [](const nlohmann::json& j) { return get(j, "3d", "mean_distance"); }, false, false},
-                        {"mIoU", [](const nlohmann::json& j) { return get(j, "3d", "miou"); }},
-                        {"wIoU", [](const nlohmann::json& j) { return get(j, "3d", "wiou"); }},
-                        {"mIoU, best labelling", [](const nlohmann::json& j) { return best_labelling(j, "3d"); }, true, true, false}});
-  md << "\n### Table 2b: 3D over the GT points visible in some view\n\n";
-  md << table(methods, {{"Cov.", [](const nlohmann::json& j) { return get(j, "3d_visible", "coverage"); }},
-                        {"Dist.", [](const nlohmann::json& j) { return get(j, "3d_visible", "mean_distance"); }, false, false},
-                        {"mIoU", [](const nlohmann::json& j) { return get(j, "3d_visible", "miou"); }},
-                        {"wIoU", [](const nlohmann::json& j) { return get(j, "3d_visible", "wiou"); }},
-                        {"mIoU, best labelling", [](const nlohmann::json& j) { return best_labelling(j, "3d_visible"); }, true, true,
-                         false}});
-  // Table 3: classes of every method, in first-seen order.
-  std::vector<std::string> classes;
-  for (const auto& m : methods)
-    if (m.second.contains("classes"))
-      for (const auto& c : m.second["classes"])
-        if (std::find(classes.begin(), classes.end(), c.get<std::string>()) == classes.end()) classes.push_back(c);
-  md << "\n### Table 3: per class, 2D (per image, averaged over the images that contain the class; percentages)\n\n";
-  md << "| Class |";
-  for (const auto& m : methods) md << " " << m.first << " IoU | Precision | Recall |";
-  md << "\n|---|";
-  for (size_t i = 0; i < methods.size(); ++i) md << "---:|---:|---:|";
-  md << "\n";
-  for (const std::string& c : classes) {
-    md << "| " << c << " |";
-    auto class_scores = [&](size_t m) -> const nlohmann::json* {
-      const nlohmann::json& j = methods[m].second;
-      return j.contains("2d") && j["2d"].contains("per_class") && j["2d"]["per_class"].contains(c)
-                 ? &j["2d"]["per_class"][c]
-                 : nullptr;
-    };
-    for (size_t m = 0; m < methods.size(); ++m) {
-      const nlohmann::json* pc = class_scores(m);
-      for (const char* metric : {"iou", "precision", "recall"}) {
-        if (!pc) {
-          md << " - |";
-          continue;
-        }
-        const double v = (*pc)[metric].get<double>();
-        const bool best = strictly_best(
-            methods, m, v,
-            [&](size_t o) {
-              const nlohmann::json* other = class_scores(o);
-              return other ? (*other)[metric].get<double>() : std::nan("");
-            },
-            true);
-        md << " " << (best ? "**" + pct(v) + "**" : pct(v)) << " |";
-      }
-    }
-    md << "\n";
-  }
-  return md.str();
+  return tables_markdown(evaluation_tables(methods));
 }
 
 }  // namespace cls

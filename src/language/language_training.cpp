@@ -31,6 +31,7 @@
 #include "core/error.h"
 #include "core/interrupt.h"
 #include "core/log.h"
+#include "core/metrics_log.h"
 #include "core/progress.h"
 #include "features/view_features.h"
 #include "language/language_loss.h"
@@ -248,6 +249,17 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
     log_info(cat("language training: no checkpoint at ", checkpoint_path, "; starting from scratch"));
   }
 
+  // The curves: a row every metrics_every iterations of a level and at its last. A resume drops the rows
+  // a killed run wrote after its checkpoint and continues the clock of the last row kept.
+  const fs::path metrics_path = fs::path(o.out_dir) / "metrics.jsonl";
+  auto up_to_checkpoint = [&](const nlohmann::json& row) {
+    const int level = row.value("level", 0);
+    return level < s.level || (level == s.level && row.value("iteration", int64_t(0)) <= s.iteration);
+  };
+  MetricsLog metrics = restored ? MetricsLog::resume(metrics_path, up_to_checkpoint) : MetricsLog::start(metrics_path);
+  const int64_t metrics_every = metrics_interval(o.iterations);
+  const double earlier_seconds = metrics.last().is_object() ? metrics.last().value("seconds", 0.0) : 0.0;
+
   LanguageTrainReport report;
   const LanguageLossWeights weights{o.lambda_sam, o.lambda_citygml, o.baseline};
   for (int level = s.level; level <= kLevels; ++level) {
@@ -314,6 +326,13 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
         progress.set_detail(detail);
       }
       progress.advance();
+      if (s.iteration % metrics_every == 0 || s.iteration == o.iterations) {
+        nlohmann::json row = {{"level", level}, {"iteration", s.iteration}, {"loss", value},
+                              {"l_sam", loss.sam.item<double>()}, {"l_sam_gml", loss.sam_gml.item<double>()}};
+        if (!o.baseline) row["l_citygml"] = loss.citygml.item<double>();  // the baseline has no CityGML term
+        row["seconds"] = earlier_seconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        metrics.append(row);
+      }
       if (s.iteration % log_every == 0 || s.iteration == o.iterations)
         log_verbose(cat("language level ", level, " iteration ", s.iteration, "/", o.iterations, " loss ", s.ema_loss,
                         " (SAM ", loss.sam.item<double>(), ", SAM-GML ", loss.sam_gml.item<double>(), ", CityGML ",

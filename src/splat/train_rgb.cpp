@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "core/interrupt.h"
 #include "core/log.h"
+#include "core/metrics_log.h"
 #include "core/progress.h"
 #include "scene/image_loader.h"
 #include "scene/view_selection.h"
@@ -218,6 +219,22 @@ at::Tensor render(const GaussianModel& g, int sh_degree, const SceneView& v, con
   return out.image;
 }
 
+struct ImageScores {
+  double psnr = 0, ssim = 0;
+};
+
+// Mean PSNR and SSIM of the renders of `views`, clamped to [0, 1].
+ImageScores mean_scores(const GaussianModel& g, int sh_degree, const std::vector<View>& views,
+                        const at::Tensor& background) {
+  ImageScores sum;
+  for (const View& v : views) {
+    const at::Tensor image = render(g, sh_degree, *v.view, background, {}).clamp(0, 1);
+    sum.psnr += psnr(image, v.image);
+    sum.ssim += ssim(image, v.image).item<double>();
+  }
+  return {sum.psnr / double(views.size()), sum.ssim / double(views.size())};
+}
+
 void check_options(const RgbTrainOptions& o) {
   auto bad = [](const std::string& what) { throw Error("train-rgb: " + what); };
   if (o.out_dir.empty()) bad("no output directory");
@@ -299,6 +316,13 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
     snapshot.seconds = state.seconds + session_seconds();
     save_checkpoint(ckpt, adam, stats, snapshot, options);
   };
+  // The curves: a row every metrics_every iterations and at the last; the held-out views are rendered
+  // on every 10th row and the last. A resume drops the rows a killed run wrote after its checkpoint.
+  const fs::path metrics_path = fs::path(options.out_dir) / "metrics.jsonl";
+  auto up_to_checkpoint = [&](const nlohmann::json& row) { return row.value("iteration", 0) <= start_iteration; };
+  MetricsLog metrics =
+      options.resume ? MetricsLog::resume(metrics_path, up_to_checkpoint) : MetricsLog::start(metrics_path);
+  const int metrics_every = int(metrics_interval(options.iterations));
   {
     Progress progress("train-rgb", uint64_t(std::max(0, options.iterations - start_iteration)), "it");
     for (int it = start_iteration + 1; it <= options.iterations; ++it) {
@@ -329,7 +353,7 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
       const int64_t n = g.size();
       at::Tensor means2d = torch::zeros({n, 2}).set_requires_grad(true);
       at::Tensor radii;
-      at::Tensor loss_value, image;
+      at::Tensor loss_value, l1_value, image;
       {
         torch::AutoGradMode grad_mode(true);
         const auto t0 = std::chrono::steady_clock::now();
@@ -341,6 +365,7 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
         loss.backward();
         const auto t3 = std::chrono::steady_clock::now();
         loss_value = loss.detach();
+        l1_value = l1.detach();
         timing.render += std::chrono::duration<double>(t1 - t0).count();
         timing.loss += std::chrono::duration<double>(t2 - t1).count();
         timing.backward += std::chrono::duration<double>(t3 - t2).count();
@@ -373,10 +398,22 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
       adam.zero_grad();
       timing.iterations += 1;
 
+      const double train_psnr = psnr(image.detach().clamp(0, 1), view.image);
+      const int64_t gaussians = adam.group("means").param.size(0);
+      if (it % metrics_every == 0 || it == options.iterations) {
+        nlohmann::json row = {{"iteration", it}, {"loss", loss_d}, {"l1", l1_value.item<double>()},
+                              {"psnr", train_psnr}, {"gaussians", gaussians}, {"sh_degree", state.active_sh_degree},
+                              {"seconds", state.seconds + session_seconds()}};
+        if (!test.empty() && (it % (10 * metrics_every) == 0 || it == options.iterations)) {
+          const ImageScores s = mean_scores(model_from_adam(adam), state.active_sh_degree, test, fixed_background);
+          row["test_psnr"] = s.psnr;
+          row["test_ssim"] = s.ssim;
+        }
+        metrics.append(row);
+      }
       char detail[160];
       std::snprintf(detail, sizeof detail, "it %d loss %.4f PSNR %.2f dB %lld Gaussians", it, state.ema_loss,
-                    psnr(image.detach().clamp(0, 1), view.image),
-                    static_cast<long long>(adam.group("means").param.size(0)));
+                    train_psnr, static_cast<long long>(gaussians));
       progress.set_detail(detail);
       progress.advance();
       report.iterations = it;
@@ -406,16 +443,10 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
 
   // Held-out evaluation (train views when nothing is held out), renders clamped to [0, 1].
   const GaussianModel g = model_from_adam(adam);
-  const std::vector<View>& eval = test.empty() ? train : test;
-  double psnr_sum = 0, ssim_sum = 0;
-  for (const View& v : eval) {
-    const at::Tensor image = render(g, state.active_sh_degree, *v.view, fixed_background, {}).clamp(0, 1);
-    psnr_sum += psnr(image, v.image);
-    ssim_sum += ssim(image, v.image).item<double>();
-  }
+  const ImageScores scores = mean_scores(g, state.active_sh_degree, test.empty() ? train : test, fixed_background);
   report.test_views = int(test.size());
-  report.test_psnr = psnr_sum / double(eval.size());
-  report.test_ssim = ssim_sum / double(eval.size());
+  report.test_psnr = scores.psnr;
+  report.test_ssim = scores.ssim;
 
   GaussianModel out;
   out.means = g.means.detach();

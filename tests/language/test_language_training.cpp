@@ -17,6 +17,7 @@
 
 #include "core/error.h"
 #include "core/interrupt.h"
+#include "core/metrics_log.h"
 #include "features/view_features.h"
 #include "language/language_loss.h"
 #include "language/language_model.h"
@@ -194,6 +195,9 @@ TEST(LanguageTraining, BaselineIgnoresCityGmlTargets) {
   train_language(t.scene, t.options);
   const LanguageModel a = load_language_model(t.options.out_dir);
   EXPECT_EQ(a.info["method"], "langsplat");
+  const std::vector<nlohmann::json> rows = read_metrics(fs::path(t.options.out_dir) / "metrics.jsonl");
+  ASSERT_EQ(rows.size(), 3u * 60);
+  EXPECT_FALSE(rows[0].contains("l_citygml")) << "the baseline has no CityGML term";
   // Other CityGML features: the baseline trains to the same latents, bit for bit.
   t.gml_f = unit_rows(6, 99);
   t.write_features();
@@ -221,6 +225,10 @@ TEST(LanguageTraining, ResumeEqualsUninterruptedRun) {
   EXPECT_TRUE(stopped.interrupted);
   EXPECT_EQ(stopped.iterations, 33);
   EXPECT_FALSE(fs::exists(fs::path(t.options.out_dir) / "model.json"));
+  // Rows a killed run would have written after its checkpoint: the resume drops them.
+  const fs::path curve = fs::path(t.options.out_dir) / "metrics.jsonl";
+  std::ofstream(curve, std::ios::app) << R"({"level": 2, "iteration": 14, "loss": 9})" << "\n"
+                                      << R"({"level": 3, "iteration": 1, "loss": 9})" << "\n";
   t.options.stop_after = 0;
   t.options.resume = true;
   const LanguageTrainReport rest = train_language(t.scene, t.options);
@@ -228,6 +236,18 @@ TEST(LanguageTraining, ResumeEqualsUninterruptedRun) {
   EXPECT_EQ(rest.iterations, 60 - 33);
   const LanguageModel resumed = load_language_model(t.options.out_dir);
   for (int l = 0; l < 3; ++l) EXPECT_TRUE(at::equal(full.latents[l], resumed.latents[l])) << "level " << l + 1;
+  // The curve: a row per iteration of each level (interval 1 below 600), the resumed one equal to the
+  // uninterrupted one but for the clock.
+  const std::vector<nlohmann::json> full_rows = read_metrics(t.dir.path / "model" / "metrics.jsonl");
+  const std::vector<nlohmann::json> resumed_rows = read_metrics(curve);
+  ASSERT_EQ(full_rows.size(), 60u);
+  ASSERT_EQ(resumed_rows.size(), 60u);
+  for (size_t i = 0; i < 60; ++i) {
+    EXPECT_EQ(full_rows[i]["level"], int(i) / 20 + 1);
+    EXPECT_EQ(full_rows[i]["iteration"], int(i) % 20 + 1);
+    for (const char* key : {"level", "iteration", "loss", "l_sam", "l_sam_gml", "l_citygml"})
+      EXPECT_EQ(full_rows[i][key], resumed_rows[i][key]) << key << ", row " << i;
+  }
 
   // An interrupt (the signal flag) stops at the next iteration with a checkpoint.
   t.options.out_dir = (t.dir.path / "signalled").string();

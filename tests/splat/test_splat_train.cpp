@@ -20,6 +20,7 @@
 
 #include "cli_runner.h"
 #include "core/atomic_file.h"
+#include "core/metrics_log.h"
 #include "scene/scene.h"
 #include "splat/ply_gaussians.h"
 
@@ -121,6 +122,23 @@ const fs::path& straight_run() {
   return out;
 }
 
+// The training curve (metrics.jsonl): a row per iteration (the interval is 1 below 600 iterations), the
+// held-out scores on every 10th row and the last; the last equal to summary.json's.
+std::vector<nlohmann::json> expect_curve(const fs::path& out, int iterations) {
+  const std::vector<nlohmann::json> rows = cls::read_metrics(out / "metrics.jsonl");
+  EXPECT_EQ(rows.size(), size_t(iterations));
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const int it = int(i) + 1;
+    EXPECT_EQ(rows[i]["iteration"], it);
+    for (const char* key : {"loss", "l1", "psnr", "gaussians", "sh_degree", "seconds"})
+      EXPECT_TRUE(rows[i].contains(key)) << key << " missing at iteration " << it;
+    EXPECT_EQ(rows[i].contains("test_psnr"), it % 10 == 0 || it == iterations) << "iteration " << it;
+  }
+  if (!rows.empty())
+    EXPECT_EQ(rows.back()["test_psnr"].get<double>(), read_json(out / "summary.json")["test_psnr"].get<double>());
+  return rows;
+}
+
 void expect_same_result(const fs::path& a, const fs::path& b) {
   ASSERT_TRUE(fs::exists(a / "point_cloud.ply"));
   ASSERT_TRUE(fs::exists(b / "point_cloud.ply"));
@@ -131,6 +149,15 @@ void expect_same_result(const fs::path& a, const fs::path& b) {
   EXPECT_EQ(sa["gaussians"], sb["gaussians"]);
   EXPECT_EQ(sa["iterations"], 160);
   EXPECT_EQ(sb["iterations"], 160);
+  // The resumed curve is that of one uninterrupted run: the rows a killed run wrote after its last
+  // checkpoint were dropped; values are bit-identical, only the clock differs.
+  const std::vector<nlohmann::json> ra = expect_curve(a, 160), rb = expect_curve(b, 160);
+  for (size_t i = 0; i < std::min(ra.size(), rb.size()); ++i) {
+    nlohmann::json x = ra[i], y = rb[i];
+    x.erase("seconds");
+    y.erase("seconds");
+    EXPECT_EQ(x, y) << "row " << i;
+  }
 }
 
 }  // namespace
@@ -155,6 +182,8 @@ TEST(TrainRgbCli, HeldOutPsnrRisesAndOutputsAreWritten) {
   EXPECT_NE(ply.find("property float f_rest_44"), std::string::npos);
   EXPECT_NE(ply.find("element vertex " + std::to_string(s1["gaussians"].get<int64_t>())), std::string::npos);
   EXPECT_TRUE(fs::exists(trained / "checkpoints" / "checkpoint.safetensors"));
+  expect_curve(trained, 250);
+  expect_curve(untrained, 0);
 }
 
 // Zero iterations: the written model is the initialisation (create_from_pcd), checked against the

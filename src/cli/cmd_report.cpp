@@ -1,0 +1,22 @@
+// citylangsplat report RUN_DIR: (re)writes RUN_DIR/report/index.html from what the run directory holds
+// (`run` writes it at its end; this command refreshes it, e.g. after `render` or `evaluate`).
+#include <cstdio>
+
+#include "core/args.h"
+#include "cli/commands.h"
+#include "report/report.h"
+
+namespace cls {
+
+int cmd_report(int argc, char** argv) {
+  Args args("report",
+            "Write RUN_DIR/report/index.html: a static page (opens from disk, no server or network) with the stages, "
+            "settings, label maps, training curves, test renders, evaluation tables and relevance maps of a "
+            "`citylangsplat run` output directory. Prints the page's path. See docs/report.md.");
+  args.positional("RUN_DIR", "a `citylangsplat run` output directory (holds run.json)");
+  if (!args.parse(argc, argv)) return 0;
+  std::printf("%s\n", write_report(args.get("RUN_DIR")).string().c_str());
+  return 0;
+}
+
+}  // namespace cls
