@@ -85,6 +85,7 @@ int cmd_run(int argc, char** argv) {
   if (r.outcome == PipelineOutcome::MissingWeights)
     std::fprintf(stderr, "run: stopped before the features (exit %d): %s\nResults so far: %s\n",
                  kExitMissingWeights, r.message.c_str(), r.run_json.string().c_str());
+  std::printf("Report: %s\n", r.report.string().c_str());
   return exit_code(r.outcome);
 }
 

@@ -20,6 +20,7 @@
 #include "raycast/alignment.h"
 #include "raycast/label_export.h"
 #include "render/render_job.h"
+#include "report/report.h"
 #include "splat/train_rgb.h"
 
 namespace cls {
@@ -80,6 +81,14 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
   RunRecord record(out / "run.json", header);
   PipelineResult result;
   result.run_json = record.file();
+  // Every run ends with its report, also one that stopped early: it shows what was done.
+  auto finish = [&] {
+    record.set("report", (out / "report" / "index.html").string());
+    record.save();
+    result.report = write_report(out);
+    log_info("run: report: " + result.report.string());
+    return result;
+  };
   // Stages that do not poll the signal flag themselves finish their step; the run stops after them.
   auto stopped_by_signal = [&](const char* after_stage) {
     if (!interrupt_requested()) return false;
@@ -123,7 +132,7 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
     record.add("features", {"stopped: no model weights", 0, {{"reason", source.missing_weights}}});
     result.outcome = PipelineOutcome::MissingWeights;
     result.message = source.missing_weights;
-    return result;
+    return finish();
   }
   const std::string images_fp = images_fingerprint(scene);
   const fs::path features_dir = out / "features";
@@ -144,7 +153,7 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
                       features_dir.string(), ")"));
          return done({{"dir", features_dir.string()}, {"computed_views", computed}});
        }});
-  if (stopped_in("features", features)) return result;
+  if (stopped_in("features", features)) return finish();
   const std::string features_fp = features_fingerprint(features_dir);
 
   // The shared autoencoder (3.2), trained on the SAM features only.
@@ -162,7 +171,7 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
                                        r.holdout_cosine));
                           return done({{"file", ae_path.string()}, {"holdout_cosine", r.holdout_cosine}});
                         }}));
-  if (stopped_by_signal("autoencoder")) return result;
+  if (stopped_by_signal("autoencoder")) return finish();
 
   // The photometric model (or an imported 3DGS PLY).
   fs::path geometry;
@@ -186,7 +195,7 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
       return done({{"ply", geometry.string()}, {"test_psnr", t.test_psnr}, {"test_ssim", t.test_ssim},
                    {"gaussians", t.gaussians}, {"iterations", t.iterations}});
     }});
-    if (stopped_in("train-rgb", r)) return result;
+    if (stopped_in("train-rgb", r)) return finish();
   }
 
   // Pictures of the photometric model: the held-out views beside their photos (PSNR, SSIM) and depth.
@@ -208,7 +217,7 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
                       {"mean_ssim", r.value("mean_ssim", 0.0)}});
        }});
   record.add("render", rendered);
-  if (stopped_by_signal("render")) return result;
+  if (stopped_by_signal("render")) return finish();
 
   // Language fields (3.3): CityLangSplat, and LangSplat's objective on identical inputs.
   const auto methods = language_methods(c);
@@ -237,7 +246,7 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
                                                     " iterations per level in ", lr.seconds, " s"));
                                        return done({{"dir", dir.string()}});
                                      }});
-    if (stopped_in("train-language/" + method, r)) return result;
+    if (stopped_in("train-language/" + method, r)) return finish();
   }
   std::string latents_fp;
   for (const auto& [method, dir] : methods) latents_fp += method + ":" + file_fnv1a64_hex(dir / "latents.safetensors") + ";";
@@ -263,7 +272,7 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
   }
   log_info("run: query: scores and selections for " + std::to_string(class_names.size()) + " classes in " +
            (out / "query").string());
-  if (stopped_by_signal("query")) return result;
+  if (stopped_by_signal("query")) return finish();
 
   // Evaluation (section 4) when the scene has a labelled point cloud.
   const fs::path gt = c.scene_dir / "gt" / "points.ply";
@@ -294,9 +303,9 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
                                         return done(files);
                                       }}));
   }
-  if (stopped_by_signal("evaluate")) return result;
+  if (stopped_by_signal("evaluate")) return finish();
   log_info("run: done. Results: " + record.file().string());
-  return result;
+  return finish();
 }
 
 }  // namespace cls

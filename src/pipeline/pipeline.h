@@ -21,6 +21,7 @@ enum class PipelineOutcome {
 struct PipelineResult {
   PipelineOutcome outcome = PipelineOutcome::Finished;
   std::filesystem::path run_json;  // OUT/run.json
+  std::filesystem::path report;    // OUT/report/index.html (docs/report.md), written by every run
   std::string message;             // MissingWeights: what is missing and how to get it
 };
 

@@ -144,7 +144,7 @@ TEST(RunCli, TinyModelsRunEveryStageOnTheBundledExampleAndASecondRunReusesThem) 
   ASSERT_EQ(first.status, 0) << first.err;
   EXPECT_NE(first.err.find("tiny random"), std::string::npos);
   const auto record = read_json(out / "run.json");
-  for (const char* stage : {"labels", "features", "autoencoder", "train-rgb", "evaluate"})
+  for (const char* stage : {"labels", "features", "autoencoder", "train-rgb", "render", "evaluate"})
     EXPECT_EQ(record[stage]["status"], "done") << stage;
   for (const char* method : {"citylangsplat", "langsplat"}) {
     EXPECT_EQ(record["train-language"][method]["status"], "done") << method;
@@ -160,6 +160,15 @@ TEST(RunCli, TinyModelsRunEveryStageOnTheBundledExampleAndASecondRunReusesThem) 
   EXPECT_NE(tables.find("| city-model-labels |"), std::string::npos) << tables;
   EXPECT_NE(tables.find("Table 1b"), std::string::npos) << tables;
   EXPECT_NE(cls::read_text_file(out / "features" / "features.json").find("meaningless"), std::string::npos);
+  // The run ends with its report, whose path it prints last; the page passes the real-browser check
+  // (tests/report/browser_check.py: every image decoded, no console error, the tables and charts of a
+  // complete report, the warning banner) where Chromium is installed, and says it skipped otherwise.
+  const fs::path index = out / "report" / "index.html";
+  EXPECT_NE(first.out.find("Report: " + index.string() + "\n"), std::string::npos) << first.out;
+  const std::string browser = "/usr/bin/python3 '" CLS_TEST_DATA "/../tests/report/browser_check.py' '" +
+                              index.string() + "' --screenshot '" + (base / "report.png").string() + "'";
+  const int browser_status = WEXITSTATUS(std::system(browser.c_str()));
+  if (browser_status != 77) EXPECT_EQ(browser_status, 0) << browser;
   // run.json lists the stages in the order they ran, each with its wall time.
   ASSERT_TRUE(record["stages"].is_array());
   EXPECT_EQ(record["stages"].front(), "labels");
@@ -182,7 +191,7 @@ TEST(RunCli, TinyModelsRunEveryStageOnTheBundledExampleAndASecondRunReusesThem) 
   const auto second = run_cli(cmd);
   ASSERT_EQ(second.status, 0) << second.err;
   const auto again = read_json(out / "run.json");
-  for (const char* stage : {"labels", "features", "autoencoder", "train-rgb", "evaluate"})
+  for (const char* stage : {"labels", "features", "autoencoder", "train-rgb", "render", "evaluate"})
     EXPECT_EQ(again[stage]["status"], "reused") << stage;
   for (const char* method : {"citylangsplat", "langsplat"}) {
     EXPECT_EQ(again["train-language"][method]["status"], "reused") << method;
