@@ -46,7 +46,7 @@ int cmd_run(int argc, char** argv) {
       .option("rgb-iterations", "", "photometric iterations (default: real 30000; tiny 100; synthetic 1500)")
       .option("language-iterations", "",
               "language iterations per level (default: real 30000; tiny 20; synthetic 300)")
-      .option("autoencoder-epochs", "", "autoencoder epochs (default: real 100; tiny 5; synthetic 10)")
+      .option("autoencoder-epochs", "", "autoencoder epochs (default: real 100; tiny 5; synthetic 40)")
       .option("lambda-sam", "1.0", "weight of the SAM term in covered pixels")
       .option("lambda-citygml", "0.5", "weight of the CityGML term")
       .flag("no-baseline", "do not train the LangSplat baseline");

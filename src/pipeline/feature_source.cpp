@@ -48,7 +48,7 @@ FeatureSource resolve_feature_source(const PipelineConfig& config, const Taxonom
   if (choice == ModelsChoice::Tiny) use_schedule(s, 100, 20, 5);
   // The bundled example finishes every stage in about a quarter of an hour on 2 cores with these
   // (docs/benchmarks.md, "Main command").
-  if (choice == ModelsChoice::Synthetic) use_schedule(s, 1500, 300, 10);
+  if (choice == ModelsChoice::Synthetic) use_schedule(s, 1500, 300, 40);
   if (s.provider) s.warning = provider_warning(s.provider->name());
   if (config.rgb_iterations > 0) s.rgb_iterations = config.rgb_iterations;
   if (config.language_iterations > 0) s.language_iterations = config.language_iterations;

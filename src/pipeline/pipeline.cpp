@@ -75,9 +75,10 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
   if (source.provider) header["provider"] = source.provider->spec();
   if (!source.warning.empty()) header["warning"] = source.warning;
   if (!source.note.empty()) header["note"] = source.note;
-  header["schedule"] = {{"rgb_iterations", source.rgb_iterations},
-                        {"language_iterations", source.language_iterations},
-                        {"autoencoder_epochs", source.autoencoder_epochs}};
+  // The settings as they ran: the schedule's counts, not the "0 = default" of the config.
+  header["settings"]["rgb_iterations"] = source.rgb_iterations;
+  header["settings"]["language_iterations"] = source.language_iterations;
+  header["settings"]["autoencoder_epochs"] = source.autoencoder_epochs;
   RunRecord record(out / "run.json", header);
   PipelineResult result;
   result.run_json = record.file();

@@ -29,8 +29,18 @@ namespace {
 constexpr size_t kMaxViews = 12;
 
 // The stages in `run`'s order, for a run.json that does not list them ("stages").
-const char* const kStageOrder[] = {"labels", "features", "autoencoder", "train-rgb", "train-language", "query",
-                                   "evaluate"};
+const char* const kStageOrder[] = {"labels", "features", "autoencoder", "train-rgb", "render", "train-language",
+                                   "query", "evaluate"};
+
+// A stage's record: run.json[name], or for a stage run once per method ("train-language/langsplat",
+// docs/pipeline.md) run.json["train-language"]["langsplat"]; null when absent.
+json stage_record(const json& run, const std::string& name) {
+  const size_t slash = name.find('/');
+  if (slash == std::string::npos) return run.contains(name) ? run[name] : json();
+  const json& group = run.contains(name.substr(0, slash)) ? run[name.substr(0, slash)] : json();
+  const std::string method = name.substr(slash + 1);
+  return group.is_object() && group.contains(method) ? group[method] : json();
+}
 
 const char* const kStyle = R"css(
 body{font:14px/1.45 system-ui,-apple-system,"Segoe UI",Roboto,sans-serif;margin:0;color:#1d232a;background:#fff}
@@ -245,7 +255,7 @@ void stages(Page& page, const json& run) {
                 << "</td></tr>\n";
     };
     for (const std::string& name : names) {
-      const json stage = run.contains(name) ? run[name] : json();
+      const json stage = stage_record(run, name);
       // Per-method stages (train-language, query): {"citylangsplat": {...}, "langsplat": {...}}.
       const bool per_method = stage.is_object() && !stage.empty() && !stage.contains("status") &&
                               std::all_of(stage.begin(), stage.end(), [](const json& v) { return v.is_object(); });

@@ -76,7 +76,6 @@ inline void write_sample_run(const std::filesystem::path& dir, const std::string
               {"models", models},
               {"provider", {{"provider", models == "real" ? "clip" : models}, {"seed", 1}}},
               {"settings", {{"resolution", 1}, {"alpha", 0.5}, {"regions", "class"}, {"rgb-iterations", 50}}},
-              {"stages", {"labels", "features", "autoencoder", "train-rgb", "train-language", "query", "evaluate"}},
               {"align_check", {{"fraction_within", 0.97}, {"median", 0.02}, {"threshold", 0.5}}},
               {"labels", {{"status", "done"}, {"seconds", 1.5}, {"dir", (dir / "labels").string()}, {"mean_coverage", 0.8}}},
               {"features", {{"status", "reused"}, {"seconds", 0.1}, {"computed_views", 0}}},
@@ -85,10 +84,18 @@ inline void write_sample_run(const std::filesystem::path& dir, const std::string
               {"evaluate", {{"status", "done"}, {"seconds", 3.2}}}};
   if (models == "synthetic") run["warning"] = "mechanics: synthetic features, not CLIP";
   if (models == "tiny") run["warning"] = "mechanics: tiny random models, scores meaningless";
+  // "stages" as run_pipeline writes it: a stage run per method is "<stage>/<method>" (docs/pipeline.md).
+  json stages = {"labels", "features", "autoencoder", "train-rgb"};
   for (const std::string& m : methods) {
     run["train-language"][m] = {{"status", "done"}, {"seconds", 60.0}, {"dir", (dir / "language" / m).string()}};
-    run["query"][m] = {{"status", "done"}, {"seconds", 2.0}};
+    stages.push_back("train-language/" + m);
   }
+  for (const std::string& m : methods) {
+    run["query"][m] = {{"status", "done"}, {"seconds", 2.0}};
+    stages.push_back("query/" + m);
+  }
+  stages.push_back("evaluate");
+  run["stages"] = stages;
   write_json(dir / "run.json", run);
 
   write_json(dir / "labels" / "legend.json",

@@ -164,7 +164,9 @@ TEST(Report, CompleteRunShowsEverySectionWithResolvingImages) {
   EXPECT_EQ(count_of(html, "<svg class=\"chart\""), 5u) << "loss, PSNR, Gaussians and one per language method";
   EXPECT_NE(html.find("src=\"../labels/view%20002%20%23b/preview.png\""), std::string::npos);
   EXPECT_NE(html.find("<td><b>70.00</b></td>"), std::string::npos) << "Table 1b: langsplat's 2D mIoU is best";
-  EXPECT_NE(html.find("train-language · langsplat"), std::string::npos);
+  EXPECT_NE(html.find("<td>train-language/langsplat</td><td class=\"status-ok\">done</td><td>1 min 00 s</td>"), std::string::npos)
+      << "a per-method stage is found under run.json[\"train-language\"][\"langsplat\"]";
+  EXPECT_EQ(html.find("not recorded"), std::string::npos);
   EXPECT_NE(html.find("14 min 54 s"), std::string::npos) << "the total of the stages' times";
   EXPECT_NE(html.find("dir: labels"), std::string::npos) << "paths inside the run shown relative to it";
   EXPECT_EQ(html.find("class=\"missing\""), std::string::npos) << "nothing is missing in a complete run";
