@@ -2,8 +2,9 @@
 // (`run` writes it at its end; this command refreshes it, e.g. after `render` or `evaluate`).
 #include <cstdio>
 
-#include "core/args.h"
 #include "cli/commands.h"
+#include "core/args.h"
+#include "core/exit_codes.h"
 #include "report/report.h"
 
 namespace cls {
@@ -14,9 +15,9 @@ int cmd_report(int argc, char** argv) {
             "settings, label maps, training curves, test renders, evaluation tables and relevance maps of a "
             "`citylangsplat run` output directory. Prints the page's path. See docs/report.md.");
   args.positional("RUN_DIR", "a `citylangsplat run` output directory (holds run.json)");
-  if (!args.parse(argc, argv)) return 0;
+  if (!args.parse(argc, argv)) return kExitOk;
   std::printf("%s\n", write_report(args.get("RUN_DIR")).string().c_str());
-  return 0;
+  return kExitOk;
 }
 
 }  // namespace cls

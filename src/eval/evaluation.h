@@ -40,7 +40,7 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
                               const Taxonomy& taxonomy, const EvaluationOptions& options);
 
 // The tables' layout version: `run` recomputes an evaluation written by another version.
-inline constexpr const char* kEvaluationTables = "2026-11-22 references";
+inline constexpr const char* kEvaluationTables = "2026-11-24 one writer";
 
 // The label maps' row name in the tables.
 inline constexpr const char* kLabelMapsMethod = "city-model-labels";

@@ -16,10 +16,6 @@ std::unique_ptr<FeatureProvider> make_feature_provider(const nlohmann::json& spe
   throw UsageError("unknown feature provider '" + name + "' (known: synthetic, clip, clip-tiny)");
 }
 
-}  // namespace cls
-
-namespace cls {
-
 std::string provider_warning(const std::string& provider_name) {
   if (provider_name == "synthetic")
     return "mechanics: synthetic features, not CLIP (docs/features.md): a benchmark of the pipeline's mechanics, "

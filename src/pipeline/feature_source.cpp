@@ -22,6 +22,10 @@ FeatureSource resolve_feature_source(const PipelineConfig& config, const Taxonom
   FeatureSource s;
   nlohmann::json spec;
   ModelsChoice choice = config.models;
+  // Weight files named on the command line are a request for the real models: a typo or a broken file
+  // must fail, not turn quietly into a synthetic run.
+  if (choice == ModelsChoice::Auto && (!config.clip_weights.empty() || !config.sam_weights.empty()))
+    choice = ModelsChoice::Real;
   if (choice == ModelsChoice::Real || choice == ModelsChoice::Auto) {
     spec = {{"provider", "clip"}};
     if (!config.clip_weights.empty()) spec["clip"] = config.clip_weights;

@@ -206,7 +206,8 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
       {"render", render_dir / "stage.json", {render_dir / "render.json"},
        hex64(fnv1a64(cat(geometry_fp, "|", images_fp, "|", c.resolution))), {{"dir", render_dir.string()}}, [&] {
          RenderOptions o;
-         o.model = c.rgb_model.empty() ? geometry.parent_path().string() : geometry.string();
+         // The PLY itself: the folder's highest point_cloud/iteration_N may be left from an earlier schedule.
+         o.model = geometry.string();
          o.scene_dir = c.scene_dir.string();
          o.out_dir = render_dir.string();
          o.what = {"rgb", "depth"};
@@ -254,12 +255,16 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
 
   // Queries for the taxonomy's classes (scores and selections per Gaussian, maps of the first view).
   std::vector<std::string> class_names;
-  for (const SemanticClass& k : city.taxonomy.classes) class_names.push_back(k.name);
+  std::string class_list;
+  for (const SemanticClass& k : city.taxonomy.classes) {
+    class_names.push_back(k.name);
+    class_list += k.name + "\n";
+  }
   for (const auto& [method, dir] : methods) {
     const fs::path qdir = out / "query" / method;
     record.add("query/" + method,
                run_stage({"query (" + method + ")", qdir / "stage.json", {qdir / "query.json"},
-                          hex64(fnv1a64(cat(latents_fp, "|", method, "|", class_names.size()))),
+                          hex64(fnv1a64(cat(latents_fp, "|", method, "|", class_list))),
                           {{"dir", qdir.string()}}, [&, dir = dir] {
                             QueryOptions q;
                             q.model_dir = dir.string();

@@ -29,7 +29,7 @@ void PipelineConfig::validate() const {
     throw UsageError("run: --resolution must be 1, 2, 4 or 8");
   if (regions != "class" && regions != "instance") throw UsageError("run: --regions must be class or instance");
   if (rgb_iterations < 0 || language_iterations < 0 || autoencoder_epochs < 0)
-    throw UsageError("run: iteration and epoch counts must be >= 1 (0: the feature source's default)");
+    throw UsageError("run: iteration and epoch counts must not be negative (0: the feature source's default)");
   if (!(alpha >= 0 && alpha <= 1)) throw UsageError("run: --alpha must be in [0, 1]");
   if (!(align_distance >= 0)) throw UsageError("run: --align-distance must be >= 0");
   if (city.empty())

@@ -336,7 +336,13 @@ json render_views(const RenderOptions& o) {
           const fs::path maps = labels.map_dirs[size_t(view - scene.views.data())];
           for (int l = 1; l <= 3; ++l) {
             const std::string level = "level" + std::to_string(l);
-            const cv::Mat ids = read_label_png(maps / (level + ".png"), CV_16UC1, H, W);
+            const fs::path file = maps / (level + ".png");
+            const cv::Mat ids = read_label_png(file, CV_16UC1, H, W);
+            double max_label = 0;
+            cv::minMaxLoc(ids, nullptr, &max_label);
+            if (max_label > double(labels.colours.size()))
+              fail(file.string(), cat("label ", max_label, " is not in the legend's ", labels.colours.size(),
+                                      " classes (label maps of another taxonomy?)"));
             const std::string name = l == 1 ? "labels" : "labels_" + level;
             write_image(dir / (name + ".png"), colourise(to_ids(ids, 1), H, W, labels.colours, cv::Vec3b(0, 0, 0)));
             files[name] = rel + name + ".png";

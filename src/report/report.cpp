@@ -146,9 +146,13 @@ class Page {
     return fs::path(p).is_absolute() && !rel.empty() && *rel.begin() != ".." ? rel.generic_string() : p;
   }
 
-  // A figure of one image of the run (`rel`), or the line that says it is missing.
+  // A figure of one image of the run (`rel`), or the line that says it is missing. Paths come from the
+  // run's JSON files: one that is absolute or leaves the run directory is never shown.
   std::string figure(const fs::path& rel, const std::string& caption, const char* img_class = "") const {
-    if (!fs::is_regular_file(run_ / rel)) return "<p class=\"missing\">" + html_escape("no " + rel.generic_string()) + "</p>";
+    const fs::path normal = rel.lexically_normal();
+    const bool inside = !rel.is_absolute() && !normal.empty() && *normal.begin() != "..";
+    if (!inside || !fs::is_regular_file(run_ / rel))
+      return "<p class=\"missing\">" + html_escape("no " + rel.generic_string()) + "</p>";
     return "<figure><img class=\"" + std::string(img_class) + "\" src=\"../" + url_of(rel) + "\" alt=\"" +
            html_escape(caption) + "\"><figcaption>" + html_escape(caption) + "</figcaption></figure>";
   }
@@ -368,9 +372,20 @@ void photometric(Page& page) {
   page.html << "</div>\n";
 }
 
-void language(Page& page) {
+// The methods of a per-method stage ("train-language", "query"): those run.json records for it, so that
+// leftovers of an earlier run in the same directory are not shown; the folder's sub-directories when
+// run.json records none.
+std::vector<std::string> methods_of(const Page& page, const json& run, const char* stage, const char* folder) {
+  std::vector<std::string> methods;
+  if (run.contains(stage) && run[stage].is_object())
+    for (const auto& [method, entry] : run[stage].items())
+      if (entry.is_object()) methods.push_back(method);
+  return methods.empty() ? page.subdirectories(folder) : methods;
+}
+
+void language(Page& page, const json& run) {
   std::vector<std::string> svgs;
-  for (const std::string& method : page.subdirectories("language")) {
+  for (const std::string& method : methods_of(page, run, "train-language", "language")) {
     const std::vector<json> rows = page.read_rows(fs::path("language") / method / "metrics.jsonl");
     if (rows.empty()) continue;
     std::vector<ChartSeries> levels;
@@ -387,9 +402,9 @@ void language(Page& page) {
   page.note("The loss of the view trained at each logged iteration; the levels are trained one after the other.");
 }
 
-void queries(Page& page) {
+void queries(Page& page, const json& run) {
   std::vector<std::pair<std::string, json>> methods;  // method -> query.json
-  for (const std::string& m : page.subdirectories("query")) {
+  for (const std::string& m : methods_of(page, run, "query", "query")) {
     const json q = page.read_json(fs::path("query") / m / "query.json");
     if (q.is_object() && q.contains("queries") && q["queries"].is_array()) methods.emplace_back(m, q);
   }
@@ -562,8 +577,8 @@ fs::path write_report(const fs::path& run_dir) {
     label_maps(p, legend);
   });
   section(page, "rgb", "Photometric model", photometric);
-  section(page, "language", "Language fields", language);
-  section(page, "queries", "Queries: relevance maps", queries);
+  section(page, "language", "Language fields", [&](Page& p) { language(p, run); });
+  section(page, "queries", "Queries: relevance maps", [&](Page& p) { queries(p, run); });
   section(page, "evaluation", "Evaluation", [&](Page& p) { evaluation(p, run, legend); });
   page.html << "</main>\n</body>\n</html>\n";
   const fs::path out = run_dir / "report" / "index.html";

@@ -59,6 +59,12 @@ TEST(RunCli, LabelMapsAgreeWithTheSyntheticGroundTruth) {
   EXPECT_EQ(record["features"]["status"], "stopped: no model weights");
   EXPECT_FALSE(fs::exists(out / "features"));
   EXPECT_TRUE(fs::exists(out / "labels" / "legend.json"));
+  EXPECT_TRUE(fs::exists(out / "report" / "index.html")) << "a run that stopped early has its report too";
+  // Weight files named with the default --models auto are a request for the real models: a wrong path
+  // fails the same way instead of falling back to synthetic features.
+  const auto named = run_cli("run " + scene_dir().string() + " --clip /nonexistent/clip.bin --out " + out.string());
+  EXPECT_EQ(named.status, cls::kExitMissingWeights) << named.err;
+  EXPECT_NE(named.err.find("/nonexistent/clip.bin"), std::string::npos) << named.err;
   // The synthetic ground truth (rendered with clutter by the generator) carries the level-1 class
   // wherever the city model is visible; the label map must agree there. Clutter only removes GT
   // labels, so pixels with GT 0 are not compared.
@@ -234,7 +240,8 @@ TEST(RunCli, ChangedInputsRedoExactlyTheStagesThatDependOnThem) {
   EXPECT_EQ(record["labels"]["status"], "reused");
   EXPECT_EQ(record["features"]["status"], "done");
   EXPECT_EQ(record["features"]["computed_views"], 1);
-  for (const char* stage : {"autoencoder", "train-rgb", "evaluate"}) EXPECT_EQ(record[stage]["status"], "done") << stage;
+  for (const char* stage : {"autoencoder", "train-rgb", "render", "evaluate"})
+    EXPECT_EQ(record[stage]["status"], "done") << stage;
   EXPECT_EQ(record["train-language"]["citylangsplat"]["status"], "done");
 
   // The city transform's bytes (same meaning).
@@ -244,6 +251,7 @@ TEST(RunCli, ChangedInputsRedoExactlyTheStagesThatDependOnThem) {
   record = read_json(out / "run.json");
   EXPECT_EQ(record["labels"]["status"], "done");
   EXPECT_EQ(record["train-rgb"]["status"], "reused");
+  EXPECT_EQ(record["render"]["status"], "reused");  // pictures of the photometric model only
 
   // Another CityGML weight retrains CityLangSplat only: the baseline's objective has no lambdas.
   ASSERT_EQ(run_cli(cmd + " --lambda-citygml 0.25").status, 0);

@@ -20,6 +20,7 @@ CHROMEDRIVER = "/usr/bin/chromedriver"
 
 # What a complete report shows (tests/report/sample_run.h makes one): CSS selector -> minimum count.
 COMPLETE_REPORT = {
+    "img": 8,  # label previews, photo/render pairs, relevance maps, GT/prediction images
     "table#stages-table": 1,
     "table#settings": 1,
     "table#table-1": 1,

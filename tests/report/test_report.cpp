@@ -180,6 +180,26 @@ TEST(Report, CompleteRunShowsEverySectionWithResolvingImages) {
   EXPECT_EQ(read_text_file(write_report(real.path)).find("class=\"warning\""), std::string::npos);
 }
 
+// Leftovers of an earlier run in the same directory (a method that this run did not train) are not
+// shown, and image paths from the run's JSON files never point outside the run directory.
+TEST(Report, ShowsOnlyTheRunsMethodsAndNoImageOutsideTheRun) {
+  TempDir dir;
+  const fs::path run = dir.path / "run", outside = dir.path / "outside.png";
+  test::write_sample_run(run, "synthetic");
+  test::sample::write_png(outside, 7);
+  for (const char* d : {"language", "query"})
+    fs::copy(run / d / "langsplat", run / d / "stale", fs::copy_options::recursive);
+  test::sample::write_json(run / "render" / "render.json",
+                           {{"views", {{{"name", "a.png"}, {"split", "test"},
+                                        {"files", {{"photo", "../outside.png"}, {"rgb", outside.string()}}}}}}});
+  const std::string html = read_text_file(write_report(run));
+  EXPECT_EQ(html.find("stale"), std::string::npos) << "only the methods run.json records";
+  EXPECT_NE(html.find("<th>langsplat</th>"), std::string::npos);
+  EXPECT_EQ(html.find("src=\"../render/../outside.png\""), std::string::npos);
+  EXPECT_EQ(html.find("src=\"" + outside.string()), std::string::npos);
+  EXPECT_NE(html.find("no render/../outside.png"), std::string::npos) << "said missing instead";
+}
+
 TEST(Report, PartialRunSaysWhatIsMissingInsteadOfBrokenImages) {
   TempDir dir;
   test::write_sample_run(dir.path, "tiny");
