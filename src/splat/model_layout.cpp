@@ -51,6 +51,11 @@ fs::path write_model_layout(const fs::path& dir, const fs::path& ply, const Scen
     fs::create_hard_link(ply, tmp, ec);
     if (ec && !fs::copy_file(ply, tmp, ec)) fail(ply.string(), "cannot link or copy to " + target.string() + ": " + ec.message());
   });
+  // One model per folder: an iteration_M left by an earlier, longer schedule would be the "latest" that
+  // viewers (and latest_layout_ply) open instead of this one.
+  for (const auto& e : fs::directory_iterator(target.parent_path().parent_path()))
+    if (e.path() != target.parent_path() && e.path().filename().string().rfind("iteration_", 0) == 0)
+      fs::remove_all(e.path());
   write_text_atomic(dir / "cameras.json", cameras_json(scene, o.test_every).dump() + "\n");
   // What 3DGS's train.py writes (str(Namespace(**vars(args)))), reduced to the fields viewers read.
   const std::string cfg = "Namespace(data_device='cpu', eval=" + std::string(o.test_every > 0 ? "True" : "False") +

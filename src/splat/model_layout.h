@@ -32,7 +32,8 @@ struct ModelLayoutOptions {
 };
 
 // Writes the layout into `dir` for the PLY at `ply` (hard-linked into point_cloud/iteration_N/, copied
-// where the file system has no hard links); every file atomically. Returns the layout's PLY path.
+// where the file system has no hard links); every file atomically. Other point_cloud/iteration_* folders
+// are removed: one model per folder. Returns the layout's PLY path.
 std::filesystem::path write_model_layout(const std::filesystem::path& dir, const std::filesystem::path& ply,
                                          const Scene& scene, const ModelLayoutOptions& options);
 

@@ -84,8 +84,19 @@ TEST(ModelLayout, WritesThePlyAndCamerasAndFindsTheLatestIteration) {
   EXPECT_NE(cfg.find("sh_degree=3"), std::string::npos) << cfg;
   EXPECT_NE(cfg.find("source_path='/tmp/some_scene'"), std::string::npos) << cfg;
 
-  // Numeric, not lexicographic: iteration_100 beats iteration_30; directories without a PLY do not count.
+  // A new layout replaces the folder's other iterations, also a higher one left by a longer earlier
+  // schedule, which viewers (and latest_layout_ply) would open instead.
   write_model_layout(tmp.path, ply, scene, {100, 3, 8, false});
+  EXPECT_FALSE(fs::exists(tmp.path / "point_cloud" / "iteration_30"));
+  write_model_layout(tmp.path, ply, scene, {20, 3, 8, false});
+  EXPECT_EQ(latest_layout_ply(tmp.path), tmp.path / "point_cloud" / "iteration_20" / "point_cloud.ply");
+  EXPECT_FALSE(fs::exists(tmp.path / "point_cloud" / "iteration_100"));
+
+  // Numeric, not lexicographic: iteration_100 beats iteration_30 (folders other tools wrote);
+  // directories without a PLY do not count.
+  write_model_layout(tmp.path, ply, scene, {100, 3, 8, false});
+  fs::create_directories(tmp.path / "point_cloud" / "iteration_30");
+  write_text_atomic(tmp.path / "point_cloud" / "iteration_30" / "point_cloud.ply", "");
   fs::create_directories(tmp.path / "point_cloud" / "iteration_500");
   fs::create_directories(tmp.path / "point_cloud" / "iteration_700x");
   write_text_atomic(tmp.path / "point_cloud" / "iteration_700x" / "point_cloud.ply", "");
