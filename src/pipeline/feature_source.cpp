@@ -50,7 +50,7 @@ FeatureSource resolve_feature_source(const PipelineConfig& config, const Taxonom
   if (!s.provider && s.missing_weights.empty()) s.provider = make_feature_provider(spec, taxonomy);
   s.models = choice;
   if (choice == ModelsChoice::Tiny) use_schedule(s, 100, 20, 5);
-  // The bundled example finishes every stage in about a quarter of an hour on 2 cores with these
+  // The bundled example finishes every stage in about 12 minutes on 2 cores with these
   // (docs/benchmarks.md, "Main command").
   if (choice == ModelsChoice::Synthetic) use_schedule(s, 1500, 300, 40);
   if (s.provider) s.warning = provider_warning(s.provider->name());
