@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <ATen/ATen.h>
+#include <nlohmann/json.hpp>
 
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "models/clip/clip_loader.h"
 #include "models/clip/clip_model.h"
@@ -127,14 +129,17 @@ TEST(ClipModel, InferredConfigMatchesTheFixtureConfig) {
   std::map<std::string, std::vector<int64_t>> shapes;
   for (const auto& [name, t] : f.state) shapes[name] = t.sizes().vec();
   const ClipConfig c = infer_clip_config(shapes, Activation::QuickGelu);
-  EXPECT_EQ(c.arch.vision_width, 128);
-  EXPECT_EQ(c.arch.vision_layers, 2);
-  EXPECT_EQ(c.arch.vision_patch_size, 16);
-  EXPECT_EQ(c.arch.image_resolution, 64);
-  EXPECT_EQ(c.arch.embed_dim, 32);
-  EXPECT_EQ(c.arch.transformer_width, 32);
-  EXPECT_EQ(c.arch.transformer_layers, 2);
-  EXPECT_EQ(c.vision_heads, 2);  // 128 / 64; the text heads (4) are not derivable, as in build_model()
+  // What the reference recorded (config.json, read here as plain JSON, not by the code under test).
+  const auto recorded = nlohmann::json::parse(cls::read_text_file(fixture_dir("tiny_quickgelu") + "/config.json"));
+  EXPECT_EQ(c.arch.vision_width, recorded.at("vision_width").get<int>());
+  EXPECT_EQ(c.arch.vision_layers, recorded.at("vision_layers").get<int>());
+  EXPECT_EQ(c.arch.vision_patch_size, recorded.at("vision_patch_size").get<int>());
+  EXPECT_EQ(c.arch.image_resolution, recorded.at("image_resolution").get<int>());
+  EXPECT_EQ(c.arch.embed_dim, recorded.at("embed_dim").get<int>());
+  EXPECT_EQ(c.arch.transformer_width, recorded.at("transformer_width").get<int>());
+  EXPECT_EQ(c.arch.transformer_layers, recorded.at("transformer_layers").get<int>());
+  // width / 64 as build_model() derives it; the text heads are not derivable from the shapes.
+  EXPECT_EQ(c.vision_heads, recorded.at("vision_heads").get<int>());
 }
 
 TEST(ClipModel, BadWeightsAreReportedByNameBeforeCompute) {

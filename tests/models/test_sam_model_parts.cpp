@@ -48,7 +48,7 @@ TEST(SamResize, PillowBilinearDownscaleAntiAliases) {
 TEST(SamResize, ApplyCoordsMatchesPromptsJson) {
   const auto prompts = nlohmann::json::parse(read_text_file(sam_fixture("prompts.json")));
   ResizeLongestSide t;
-  const std::pair<int, int> hw{302, 403};
+  const std::pair<int, int> hw{prompts.at("image_size_hw")[0].get<int>(), prompts.at("image_size_hw")[1].get<int>()};
   for (const auto& set : prompts.at("prompt_sets")) {
     if (set.contains("point_coords")) {
       for (size_t i = 0; i < set["point_coords"].size(); ++i) {
