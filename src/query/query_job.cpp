@@ -2,7 +2,6 @@
 
 #include <ATen/Context.h>
 #include <ATen/core/grad_mode.h>
-#include <opencv2/imgcodecs.hpp>
 #include <torch/types.h>
 
 #include <algorithm>
@@ -13,6 +12,7 @@
 #include "citymodel/taxonomy.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/image_file.h"
 #include "core/log.h"
 #include "core/npy.h"
 #include "core/progress.h"
@@ -72,10 +72,7 @@ void write_map(const fs::path& dir, const std::string& stem, const at::Tensor& m
   const std::vector<float> values(m.data_ptr<float>(), m.data_ptr<float>() + m.numel());
   const fs::path npy = dir / (stem + ".npy"), png = dir / (stem + ".png");
   write_npy(npy, make_npy<float>({m.size(0), m.size(1)}, values));
-  const cv::Mat img = colour_map(m, MapRange{range[0], range[1]});
-  write_atomic(png, [&](const fs::path& tmp) {
-    if (!cv::imwrite(tmp.string(), img)) fail(png.string(), "cannot write the PNG");
-  });
+  write_image(png, colour_map(m, MapRange{range[0], range[1]}));
   files.push_back(fs::relative(png, out_root).string());
   files.push_back(fs::relative(npy, out_root).string());
 }
@@ -174,9 +171,7 @@ json run_query(const QueryOptions& o) {
 
     const fs::path maps_dir = out / "maps";
     fs::create_directories(maps_dir);
-    write_atomic(maps_dir / "legend_turbo.png", [&](const fs::path& tmp) {
-      if (!cv::imwrite(tmp.string(), colour_legend())) fail((maps_dir / "legend_turbo.png").string(), "cannot write");
-    });
+    write_image(maps_dir / "legend_turbo.png", colour_legend());
     for (int64_t k = 0; k < K; ++k) fs::create_directories(maps_dir / slugs[k]);
     Progress progress("relevance maps", views.size() * texts_of_level.size(), "renders");
     for (const SceneView* view : views) {

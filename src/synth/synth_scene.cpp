@@ -2,10 +2,8 @@
 
 #include <filesystem>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "core/atomic_file.h"
-#include "core/error.h"
+#include "core/image_file.h"
 #include "core/log.h"
 #include "core/progress.h"
 #include "synth/sparse_points.h"
@@ -48,21 +46,13 @@ SynthScene render_synth_scene(const SemanticMesh& mesh, const Taxonomy& taxonomy
   return scene;
 }
 
-namespace {
-void write_png(const fs::path& path, const cv::Mat& image) {
-  write_atomic(path, [&](const fs::path& tmp) {
-    if (!cv::imwrite(tmp.string(), image)) fail(path.string(), "cannot write PNG");
-  });
-}
-}  // namespace
-
 void write_synth_outputs(const std::string& dir, const SynthScene& scene, const Taxonomy& taxonomy) {
   const fs::path root(dir);
   Progress progress("synth: write", scene.views.size(), "views");
   for (size_t v = 0; v < scene.views.size(); ++v) {
     const fs::path name(scene.views[v].name);
-    write_png(root / "images" / name, scene.rendered[v].image);
-    write_png(root / "gt" / "labels" / (name.stem().string() + ".png"), scene.rendered[v].labels);
+    write_image(root / "images" / name, scene.rendered[v].image);
+    write_image(root / "gt" / "labels" / (name.stem().string() + ".png"), scene.rendered[v].labels);
     progress.advance();
   }
   progress.finish();
