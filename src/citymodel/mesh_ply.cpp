@@ -6,6 +6,7 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <sstream>
 
 #include "core/atomic_file.h"
 #include "core/endian.h"
@@ -31,6 +32,24 @@ std::string one_line(std::string s) {
   return s;
 }
 
+// The property lines of both elements, as written and as the reader expects them.
+const char* const kVertexProperties = "property float x\nproperty float y\nproperty float z\n";
+const char* const kFaceProperties =
+    "property list uchar int vertex_indices\n"
+    "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+    "property int class_l1\nproperty int class_l2\nproperty int class_l3\nproperty int building\n";
+constexpr size_t kFaceBytes = 1 + 3 * 4 + 3 + 4 * 4;
+
+template <class T>
+T get_le(const char* p) {
+  unsigned char bytes[sizeof(T)];
+  std::memcpy(bytes, p, sizeof(T));
+  if (!host_is_little_endian()) std::reverse(bytes, bytes + sizeof(T));
+  T value;
+  std::memcpy(&value, bytes, sizeof(T));
+  return value;
+}
+
 }  // namespace
 
 void write_mesh_ply(const std::string& path, const SemanticMesh& mesh, const Taxonomy& taxonomy,
@@ -49,13 +68,8 @@ void write_mesh_ply(const std::string& path, const SemanticMesh& mesh, const Tax
   header += "comment origin " + std::string(origin) + "\n";
   header += transform ? "comment frame scene (city transform applied; source = inverse transform)\n"
                       : "comment frame local (source coordinate = vertex + origin)\n";
-  header += "element vertex " + std::to_string(mesh.vertices.size()) + "\n";
-  header += "property float x\nproperty float y\nproperty float z\n";
-  header += "element face " + std::to_string(mesh.num_triangles()) + "\n";
-  header += "property list uchar int vertex_indices\n";
-  header += "property uchar red\nproperty uchar green\nproperty uchar blue\n";
-  header += "property int class_l1\nproperty int class_l2\nproperty int class_l3\nproperty int building\n";
-  header += "end_header\n";
+  header += "element vertex " + std::to_string(mesh.vertices.size()) + "\n" + kVertexProperties;
+  header += "element face " + std::to_string(mesh.num_triangles()) + "\n" + kFaceProperties + "end_header\n";
 
   std::string body;
   body.reserve(mesh.vertices.size() * 12 + mesh.num_triangles() * 32);
@@ -91,6 +105,50 @@ void write_mesh_ply(const std::string& path, const SemanticMesh& mesh, const Tax
     if (!out) fail(path, "write failed");
   });
   log_info(cat("wrote ", path, ": ", mesh.vertices.size(), " vertices, ", mesh.num_triangles(), " triangles"));
+}
+
+MeshPly read_mesh_ply(const std::string& path) {
+  const std::string bytes = read_text_file(path);
+  const size_t end = bytes.find("end_header\n");
+  if (bytes.rfind("ply\nformat binary_little_endian 1.0\n", 0) != 0 || end == std::string::npos)
+    fail(path, "not a binary little-endian PLY");
+  // The header without its comments must be exactly write_mesh_ply's, up to the counts.
+  std::string header, line;
+  size_t vertices = 0, faces = 0;
+  std::istringstream in(bytes.substr(0, end));
+  while (std::getline(in, line)) {
+    if (line.rfind("comment ", 0) == 0) continue;
+    if (std::sscanf(line.c_str(), "element vertex %zu", &vertices) == 1) line = "element vertex N";
+    else if (std::sscanf(line.c_str(), "element face %zu", &faces) == 1) line = "element face N";
+    header += line + "\n";
+  }
+  const std::string expected = std::string("ply\nformat binary_little_endian 1.0\nelement vertex N\n") +
+                               kVertexProperties + "element face N\n" + kFaceProperties;
+  if (header != expected) fail(path, "not a semantic-mesh PLY of `citymodel export` / `raycast` (other properties)");
+  const size_t body = end + std::strlen("end_header\n");
+  if (vertices > (bytes.size() - body) / 12 || bytes.size() - body != vertices * 12 + faces * kFaceBytes)
+    fail(path, cat("truncated or oversized: ", bytes.size() - body, " bytes of data for ", vertices, " vertices and ",
+                   faces, " faces"));
+  MeshPly mesh;
+  const char* p = bytes.data() + body;
+  mesh.vertices.resize(vertices);
+  for (Vec3f& v : mesh.vertices) {
+    v = {get_le<float>(p), get_le<float>(p + 4), get_le<float>(p + 8)};
+    p += 12;
+  }
+  mesh.triangles.resize(faces);
+  mesh.colours.resize(faces);
+  for (size_t f = 0; f < faces; ++f, p += kFaceBytes) {
+    if (static_cast<uint8_t>(p[0]) != 3) fail(path, cat("face ", f, " is not a triangle"));
+    for (int k = 0; k < 3; ++k) {
+      const int32_t index = get_le<int32_t>(p + 1 + 4 * k);
+      if (index < 0 || static_cast<size_t>(index) >= vertices)
+        fail(path, cat("face ", f, " refers to vertex ", index, " of ", vertices));
+      mesh.triangles[f][k] = index;
+    }
+    for (int k = 0; k < 3; ++k) mesh.colours[f][k] = static_cast<uint8_t>(p[13 + k]);
+  }
+  return mesh;
 }
 
 }  // namespace cls

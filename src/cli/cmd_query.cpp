@@ -26,7 +26,9 @@ int cmd_query(int argc, char** argv) {
       .option("scene", "", "scene directory for the maps (empty: the one recorded in model.json)")
       .option("taxonomy", "", "taxonomy JSON for the feature provider (empty: model.json's, else the built-in one)")
       .option("device", "cpu", "where rendering, decoding and scoring run: cpu or cuda[:N] (needs a CUDA build)")
-      .flag("no-maps", "skip the relevance maps (scores and selections only)");
+      .flag("no-maps", "skip the relevance maps (scores and selections only)")
+      .flag("objects", "also answer with city objects: the CityGML/CityJSON objects ranked by the mean score of\n"
+                       "their Gaussians at the query's level (printed; OUT/objects_<slug>.json and .csv)");
   if (!args.parse(argc, argv)) return 0;
 
   QueryOptions o;
@@ -48,6 +50,7 @@ int cmd_query(int argc, char** argv) {
   o.scene_dir = args.get("scene");
   o.taxonomy_path = args.get("taxonomy");
   o.maps = !args.flag_set("no-maps");
+  o.objects = args.flag_set("objects");
   o.device = args.get("device");
   run_query(o);
   return 0;

@@ -8,6 +8,8 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/log.h"
+#include "language/provenance.h"
 #include "models/weights/safetensors.h"
 #include "splat/ply_gaussians.h"
 
@@ -42,6 +44,7 @@ void save_language_model(const std::string& dir, const LanguageModel& model) {
   write_gaussians_ply(file_in(dir, "point_cloud.ply"), geometry);
   write_safetensors(latents_path, entries, {{"format", "citylangsplat-latents"}});
   model.autoencoder.save(file_in(dir, "autoencoder.safetensors"));
+  if (!model.objects.objects.empty()) write_city_objects(file_in(dir, "city_objects.json"), model.objects);
   nlohmann::json info = model.info.is_object() ? model.info : nlohmann::json::object();
   info["levels"] = {1, 2, 3};
   info["gaussians"] = n;
@@ -66,7 +69,7 @@ LanguageModel load_language_model(const std::string& dir) {
   gaussians.features = at::Tensor();
   const std::string ae_path = file_in(dir, "autoencoder.safetensors");
   if (!fs::exists(ae_path)) fail(ae_path, "missing");
-  LanguageModel model{std::move(gaussians), {}, Autoencoder::load(ae_path), std::move(info)};
+  LanguageModel model{std::move(gaussians), {}, Autoencoder::load(ae_path), std::move(info), {}};
 
   const std::string latents_path = file_in(dir, "latents.safetensors");
   if (!fs::exists(latents_path)) fail(latents_path, "missing");
@@ -86,6 +89,16 @@ LanguageModel load_language_model(const std::string& dir) {
   if (model.info.contains("gaussians") && model.info["gaussians"] != n)
     fail(json_path, "records " + model.info["gaussians"].dump() + " Gaussians but point_cloud.ply has " +
                         std::to_string(n));
+  const std::string objects_path = file_in(dir, "city_objects.json");
+  if (fs::exists(objects_path)) {
+    model.objects = read_city_objects(objects_path);
+    const GaussianExtra* object = model.gaussians.extra(kObjectProperty);
+    if (!object || object->values.scalar_type() != at::kInt)
+      fail(ply_path, std::string("has no int property '") + kObjectProperty + "' although " + objects_path + " exists");
+    const int64_t objects = static_cast<int64_t>(model.objects.objects.size());
+    if (n > 0 && (object->values.min().item<int32_t>() < -1 || object->values.max().item<int32_t>() >= objects))
+      fail(ply_path, cat("property '", kObjectProperty, "' indexes beyond the ", objects, " objects of ", objects_path));
+  }
   return model;
 }
 

@@ -6,12 +6,15 @@
 //   point_cloud.ply           the frozen geometry (3DGS layout)
 //   latents.safetensors       "level1", "level2", "level3": N x latent float32
 //   autoencoder.safetensors   the shared autoencoder
+//   city_objects.json         the city objects the PLY's city_object property indexes (provenance.h),
+//                             when the label maps had object maps
 #include <ATen/core/Tensor.h>
 #include <nlohmann/json.hpp>
 
 #include <array>
 #include <string>
 
+#include "citymodel/city_objects.h"
 #include "language/autoencoder.h"
 #include "splat/gaussians.h"
 
@@ -22,6 +25,7 @@ struct LanguageModel {
   std::array<at::Tensor, 3> latents;  // level 1..3 at index 0..2, N x latent
   Autoencoder autoencoder;
   nlohmann::json info;                // model.json
+  CityObjects objects;                // empty without provenance
 };
 
 void save_language_model(const std::string& dir, const LanguageModel& model);  // each file atomic

@@ -36,6 +36,7 @@
 #include "features/view_features.h"
 #include "language/language_loss.h"
 #include "language/language_model.h"
+#include "language/provenance.h"
 #include "splat/adam.h"
 #include "splat/checkpoint.h"
 #include "splat/ply_gaussians.h"
@@ -176,6 +177,26 @@ void save_checkpoint(const std::string& path, const TrainState& s, const Adam& a
   write_checkpoint(path, c);
 }
 
+
+// The city objects of the label maps the features were made from, one per Gaussian (provenance.h).
+// Label maps without object maps (hand-made, or from before them) give a model without provenance.
+void attach_city_objects(LanguageModel& model, const Scene& scene, const fs::path& labels_dir) {
+  if (labels_dir.empty() || !fs::exists(labels_dir / "objects.json")) {
+    log_info("language training: no objects.json beside the label maps" +
+             (labels_dir.empty() ? std::string() : " (" + labels_dir.string() + ")") +
+             ": the model records no city object per Gaussian (`query --objects` and the viewer's object list need "
+             "label maps from this version's `raycast`)");
+    return;
+  }
+  const ProvenanceSettings settings;
+  const GaussianProvenance provenance = assign_provenance(model.gaussians, scene, labels_dir, settings);
+  attach_provenance(model.gaussians, provenance);
+  model.objects = read_city_objects(labels_dir / "objects.json");
+  model.info["provenance"] = provenance.summary(settings);
+  log_info(cat("language training: ", provenance.assigned, " of ", model.gaussians.size(),
+               " Gaussians lie on a city object (majority over ", provenance.views, " views)"));
+}
+
 }  // namespace
 
 LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOptions& o) {
@@ -199,6 +220,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
   const int latent = autoencoder.config().latent_dim();
 
   nlohmann::json provider = nullptr, taxonomy = nullptr;
+  fs::path labels_dir;  // for the city-object provenance
   const fs::path features_json = fs::path(o.features_dir) / "features.json";
   if (fs::exists(features_json)) {
     try {
@@ -206,6 +228,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
       if (fj.contains("provider")) provider = fj["provider"];
       else if (fj.contains("spec")) provider = fj["spec"];
       if (fj.contains("taxonomy")) taxonomy = fj["taxonomy"];  // the class legend, for query / evaluate
+      if (fj.contains("labels_dir")) labels_dir = fj["labels_dir"].get<std::string>();
     } catch (const nlohmann::json::exception& e) {
       fail(features_json.string(), std::string("not valid JSON: ") + e.what());
     }
@@ -373,8 +396,9 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
                          {"seed", o.seed},
                          {"final_loss", s.final_loss}};
   GaussianModel frozen = geometry;
-  LanguageModel model{std::move(frozen), {}, std::move(autoencoder), std::move(info)};
+  LanguageModel model{std::move(frozen), {}, std::move(autoencoder), std::move(info), {}};
   for (int l = 0; l < kLevels; ++l) model.latents[l] = s.latents[l].detach().cpu().contiguous();
+  attach_city_objects(model, scene, labels_dir);
   save_language_model(o.out_dir, model);
   // A final checkpoint at the end, so a `--resume` of a finished run only rewrites the model.
   save_checkpoint(checkpoint_path, s, adam, config);

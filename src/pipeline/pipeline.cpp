@@ -120,7 +120,7 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
 
   // Label maps (3.1).
   const std::string labels_fp = labels_fingerprint(c, scene);
-  record.add("labels", run_stage({"labels", labels_dir / "stage.json", {labels_dir / "legend.json"}, labels_fp,
+  record.add("labels", run_stage({"labels", labels_dir / "stage.json", {labels_dir / "objects.json", labels_dir / "legend.json"}, labels_fp,
                                   {{"dir", labels_dir.string()}}, [&] {
                                     const LabelExportSummary s = export_label_maps(scene, city, labels_dir);
                                     log_info(cat("run: labels: wrote ", s.views, " views to ", labels_dir.string(),
@@ -238,7 +238,7 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
     const std::string weights = o.baseline ? "langsplat" : cat(o.lambda_sam, "|", o.lambda_citygml);
     const std::string fp =
         hex64(fnv1a64(cat(geometry_fp, "|", ae_fp, "|", features_fp, "|", o.iterations, "|", weights)));
-    const StageReport r = run_stage({"train-language (" + method + ")", dir / "stage.json", {dir / "model.json"}, fp,
+    const StageReport r = run_stage({"train-language (" + method + ")", dir / "stage.json", {dir / "model.json", dir / "city_objects.json"}, fp,
                                      {{"dir", dir.string()}}, [&, method = method, dir = dir] {
                                        LanguageTrainOptions t = o;
                                        t.resume = resume_training(dir / "started.json", dir / "checkpoints", fp);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <filesystem>
+#include <iostream>
 #include <map>
 
 #include "citymodel/taxonomy.h"
@@ -18,6 +19,8 @@
 #include "core/progress.h"
 #include "features/feature_provider.h"
 #include "language/language_model.h"
+#include "language/provenance.h"
+#include "query/object_ranking.h"
 #include "query/relevance.h"
 #include "query/relevance_image.h"
 #include "query/selection.h"
@@ -77,6 +80,35 @@ void write_map(const fs::path& dir, const std::string& stem, const at::Tensor& m
   files.push_back(fs::relative(npy, out_root).string());
 }
 
+// The query's answer as city objects: OUT/objects_<slug>.json and .csv, the top rows printed.
+json write_object_ranking(const LanguageModel& model, const std::string& text, const std::string& slug, int level,
+                          const at::Tensor& scores, double threshold, const fs::path& out) {
+  const at::Tensor object_of = model.gaussians.extra(kObjectProperty)->values.contiguous();
+  const at::Tensor s = scores.to(torch::kCPU, torch::kFloat32).contiguous();
+  const at::Tensor means = model.gaussians.means.to(torch::kFloat32).contiguous();
+  ObjectRankingOptions options;
+  options.level = level;
+  options.threshold = threshold;
+  const std::vector<ObjectScore> ranking = rank_objects(model.objects, object_of.data_ptr<int32_t>(), s.data_ptr<float>(),
+                                                        means.data_ptr<float>(), s.numel(), options);
+  const json rows = object_ranking_json(model.objects, ranking);
+  const std::string json_file = "objects_" + slug + ".json", csv_file = "objects_" + slug + ".csv";
+  write_text_atomic(out / json_file, json{{"text", text},
+                                          {"level", level},
+                                          {"threshold", threshold},
+                                          {"min_gaussians", options.min_gaussians},
+                                          {"city_model", model.objects.source},
+                                          {"objects", rows}}
+                                         .dump(2) + "\n");
+  write_text_atomic(out / csv_file, object_ranking_csv(model.objects, ranking));
+  std::cout << "'" << text << "' (level " << level << "): " << ranking.size() << " city objects ranked by mean score\n";
+  for (size_t r = 0; r < rows.size() && r < 10; ++r)
+    std::cout << "  " << r + 1 << ". " << rows[r]["class"].get<std::string>() << " " << rows[r]["id"].get<std::string>()
+              << " (building " << rows[r]["building"].get<std::string>() << "): mean "
+              << rows[r]["mean_score"].get<double>() << " over " << rows[r]["gaussians"].get<int64_t>() << " Gaussians\n";
+  return {{"json", json_file}, {"csv", csv_file}, {"ranked", ranking.size()}, {"top", object_ranking_json(model.objects, ranking, 5)}};
+}
+
 }  // namespace
 
 json run_query(const QueryOptions& o) {
@@ -92,6 +124,9 @@ json run_query(const QueryOptions& o) {
 
   at::NoGradGuard no_grad;
   LanguageModel model = load_language_model(o.model_dir);
+  if (o.objects && model.objects.objects.empty())
+    fail(o.model_dir, "has no city object per Gaussian (city_objects.json): train it again from label maps of this "
+                      "version's `raycast` (they write objects.json and object.npy), or query without --objects");
   // Rendering, decoding and scoring run on `device`; the model's CPU tensors stay for writing PLYs.
   const c10::Device device = parse_device(o.device);
   model.autoencoder.to(device);
@@ -155,6 +190,8 @@ json run_query(const QueryOptions& o) {
                        {"score_property", "score_" + slugs[k]},
                        {"selection", selection},
                        {"maps", json::array()}});
+    if (o.objects)
+      queries.back()["objects"] = write_object_ranking(model, texts[k], slugs[k], level_of[k], score_of[k], o.threshold, out);
     log_info("query '" + texts[k] + "': level " + std::to_string(level_of[k]) + ", max score " +
              std::to_string(stats_of(score_of[k]).value("max", 0.0)) + ", " + std::to_string(sel.numel()) +
              " Gaussians selected");

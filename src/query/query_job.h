@@ -5,7 +5,8 @@
 // of OUT/scores.ply; a threshold or top-k selection per query as OUT/selection_<slug>.ply; per view
 // and query the rendered latents decoded to feature space, compared with the text feature: plain
 // cosine and LangSplat's relevancy, as turbo-coloured PNG and raw .npy (OUT/maps/<slug>/); and
-// OUT/query.json describing all of it. See docs/query.md.
+// OUT/query.json describing all of it; with `objects`, the answer as city objects ranked by the scores of
+// their Gaussians (OUT/objects_<slug>.json and .csv, the top rows printed). See docs/query.md.
 #include <nlohmann/json.hpp>
 
 #include <string>
@@ -25,6 +26,8 @@ struct QueryOptions {
   std::string scene_dir;        // empty: model.json "scene"
   std::string taxonomy_path;    // empty: model.json "taxonomy", else the built-in taxonomy
   bool maps = true;             // relevance maps (needs the scene)
+  bool objects = false;         // the city objects ranked by their Gaussians' scores (object_ranking.h):
+                                // printed, and OUT/objects_<slug>.json / .csv
   std::string device = "cpu";   // where rendering, decoding and scoring run: cpu or cuda[:N]
 };
 

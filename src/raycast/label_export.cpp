@@ -2,6 +2,8 @@
 
 #include <set>
 
+#include "citymodel/city_objects.h"
+#include "citymodel/mesh_ply.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
@@ -49,6 +51,8 @@ LabelExportSummary export_label_maps(const Scene& scene, const SceneCityModel& c
     progress.advance();
   }
   progress.finish();
+  write_city_objects(out / "objects.json", city_objects(city.mesh, city.taxonomy));
+  write_mesh_ply((out / "city_mesh.ply").string(), city.mesh, city.taxonomy, &city.transform);
   write_text_atomic(out / "legend.json", city.taxonomy.legend_json());
   LabelExportSummary summary;
   summary.views = scene.views.size();

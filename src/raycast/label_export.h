@@ -18,8 +18,10 @@ struct LabelExportSummary {
   double mean_coverage = 0;  // mean fraction of pixels with M_t = 1
 };
 
-// Writes OUT/<view>/{level1,level2,level3,building,coverage}.png, depth.pfm, preview.png for every
-// view, with progress, and OUT/legend.json last (its presence marks a finished export).
+// Writes OUT/<view>/{level1,level2,level3,building,coverage}.png, depth.pfm, object.npy, preview.png
+// for every view, with progress, then OUT/objects.json (the city objects object.npy indexes),
+// OUT/city_mesh.ply (the mesh in the scene frame, mesh_ply.h) and OUT/legend.json last (its presence
+// marks a finished export).
 LabelExportSummary export_label_maps(const Scene& scene, const SceneCityModel& city, const std::filesystem::path& out);
 
 }  // namespace cls

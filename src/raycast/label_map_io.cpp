@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "core/image_file.h"
 #include "core/log.h"
+#include "core/npy.h"
 
 namespace cls {
 namespace fs = std::filesystem;
@@ -77,6 +78,16 @@ void write_pfm(const fs::path& path, const std::vector<float>& data, int width, 
     out.close();
     if (!out) fail(path.string(), "write failed");
   });
+}
+
+std::vector<int32_t> read_object_map(const fs::path& path, int h, int w) {
+  if (!fs::exists(path))
+    fail(path.string(), "missing (label maps from before city-object maps; run `raycast` again)");
+  const NpyArray a = read_npy(path);
+  if (a.dtype != npy_descr<int32_t>() || a.shape != std::vector<int64_t>{h, w})
+    fail(path.string(), cat("expected int32 ", h, " x ", w, " (the view's size), got ", a.dtype, " of ", a.shape.size(),
+                            " dimensions"));
+  return std::vector<int32_t>(a.as<int32_t>(), a.as<int32_t>() + a.numel());
 }
 
 FloatImage read_pfm(const fs::path& path) {
@@ -177,6 +188,7 @@ void write_label_maps(const fs::path& dir, const LabelMaps& maps, const Taxonomy
   write_png_u16(dir / "building.png", maps.building, maps.width, maps.height);
   write_png_u8(dir / "coverage.png", maps.coverage, maps.width, maps.height);
   write_pfm(dir / "depth.pfm", maps.depth, maps.width, maps.height);
+  write_npy(dir / "object.npy", make_npy<int32_t>({maps.height, maps.width}, maps.object));
   write_preview(dir / "preview.png", maps, taxonomy);
 }
 

@@ -29,6 +29,10 @@ cv::Mat read_label_png(const std::filesystem::path& path, int type, int h, int w
 // directory without legend.json (hand-made label maps) passes.
 void check_label_legend(const std::filesystem::path& labels_dir, const Taxonomy& taxonomy);
 
+// Reads a view's object.npy: int32 H x W; cls::Error naming the file if it is missing or of another
+// type or size (label maps written before object maps existed: run `raycast` again).
+std::vector<int32_t> read_object_map(const std::filesystem::path& path, int h, int w);
+
 struct FloatImage {
   int width = 0, height = 0;
   std::vector<float> data;  // row-major, top row first
@@ -47,7 +51,7 @@ cv::Mat colourise(const std::vector<int32_t>& labels, int H, int W, const std::v
 void write_preview(const std::filesystem::path& path, const LabelMaps& maps, const Taxonomy& taxonomy);
 
 // The per-view files: level1.png, level2.png, level3.png, building.png, coverage.png, depth.pfm,
-// preview.png in `dir`.
+// object.npy (int32 H x W, index into the export's objects.json, -1 none), preview.png in `dir`.
 void write_label_maps(const std::filesystem::path& dir, const LabelMaps& maps, const Taxonomy& taxonomy);
 
 }  // namespace cls

@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include "citymodel/city_objects.h"
 #include "core/error.h"
 #include "core/log.h"
 
@@ -54,6 +55,7 @@ LabelTable::LabelTable(const SemanticMesh& mesh) {
     throw Error(cat(mesh.source_path, ": ", mesh.buildings.size(), " buildings; building.png (uint16) holds at most ",
                     kMaxLabel));
   const std::vector<int32_t> building = building_of_entities(mesh);
+  const std::vector<int32_t> object = finest_object_of_triangles(mesh);
   entries_.resize(n);
   for (size_t t = 0; t < n; ++t) {
     Entry& e = entries_[t];
@@ -66,6 +68,7 @@ LabelTable::LabelTable(const SemanticMesh& mesh) {
     const int32_t whole = mesh.tri_entity[t][2];
     const bool known = whole >= 0 && static_cast<size_t>(whole) < building.size() && building[whole] >= 0;
     e.building = known ? static_cast<uint16_t>(building[whole] + 1) : 0;
+    e.object = object[t];
   }
 }
 
@@ -76,6 +79,7 @@ void LabelTable::fill(const std::vector<RayHit>& hits, int width, int height, La
   out.height = height;
   for (auto& l : out.level) l.resize(n);
   out.building.resize(n);
+  out.object.resize(n);
   out.coverage.resize(n);
   out.depth.resize(n);
   // Raw pointers: the uint8_t coverage stores may alias anything, so through the vectors every
@@ -85,9 +89,10 @@ void LabelTable::fill(const std::vector<RayHit>& hits, int width, int height, La
   const size_t entries = entries_.size();
   uint16_t *l1 = out.level[0].data(), *l2 = out.level[1].data(), *l3 = out.level[2].data();
   uint16_t* building = out.building.data();
+  int32_t* object = out.object.data();
   uint8_t* coverage = out.coverage.data();
   float* depth = out.depth.data();
-  const Entry none{{0, 0, 0}, 0};
+  const Entry none{{0, 0, 0}, 0, -1};
 #pragma omp parallel for schedule(static)
   for (int64_t p = 0; p < static_cast<int64_t>(n); ++p) {
     const RayHit& h = in[p];
@@ -97,6 +102,7 @@ void LabelTable::fill(const std::vector<RayHit>& hits, int width, int height, La
     l2[p] = e.level[1];
     l3[p] = e.level[2];
     building[p] = e.building;
+    object[p] = e.object;
     coverage[p] = (e.level[0] | e.level[1] | e.level[2]) ? 255 : 0;
     depth[p] = hit ? h.depth : 0.0f;
   }

@@ -1,6 +1,6 @@
 #pragma once
 // Per-view label maps from one raycast (paper section 3.1): the class maps C^1, C^2, C^3, the
-// building instance map, the coverage mask M and the depth of the first hit.
+// building instance map, the city-object map, the coverage mask M and the depth of the first hit.
 //
 // The paper defines C^l(v) as the class of the front-most polygon at level l, and M(v) = 1 where
 // any level is valid. The mesh carries one class per level for every triangle
@@ -27,6 +27,7 @@ struct LabelMaps {
   int width = 0, height = 0;                   // all maps are row-major, width * height
   std::array<std::vector<uint16_t>, 3> level;  // level[l - 1]: 0 = no label, k = taxonomy class k - 1
   std::vector<uint16_t> building;              // index into SemanticMesh::buildings + 1; 0 = none
+  std::vector<int32_t> object;                 // the first hit's finest city object (city_objects.h); -1 = none
   std::vector<uint8_t> coverage;               // 255 where any level has a label (M = 1), else 0
   std::vector<float> depth;                    // camera z-depth of the first hit; 0 where nothing is hit
 };
@@ -50,6 +51,7 @@ class LabelTable {
   struct Entry {
     std::array<uint16_t, 3> level;
     uint16_t building;
+    int32_t object;  // finest_object_of_triangles
   };
   std::vector<Entry> entries_;
 };

@@ -18,6 +18,7 @@
 #include "core/npy.h"
 #include "features/feature_provider.h"
 #include "language/language_model.h"
+#include "language/provenance.h"
 #include "latent_scene.h"
 #include "query/relevance.h"
 #include "scene/colmap.h"
@@ -263,6 +264,61 @@ TEST(QueryCli, Errors) {
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--scene"), std::string::npos) << r.err;
   EXPECT_EQ(run(q(noscene) + " wall --views 0002 --scene " + q(f.scene_dir)).status, 0);
+}
+
+}  // namespace
+}  // namespace cls
+
+namespace cls {
+namespace {
+
+TEST(QueryCli, ObjectsAnswerWithTheCityObjectsOfTheGaussians) {
+  Fixture& f = fixture();
+  // The fixture's model with a city-object table and each Gaussian on one of its objects.
+  LanguageModel m = load_language_model(f.model_dir.string());
+  m.objects.class_names = {"window", "wall", "building"};
+  m.objects.objects = {{"bld", 3, 2, -1}, {"wall-1", 2, 1, 0}, {"win-1", 1, 0, 1}, {"win-2", 1, 0, 1}};
+  GaussianProvenance p;
+  for (int i = 0; i < kN; ++i) p.object.push_back(i % 5 - 1), p.support.push_back(1.0f);  // -1 .. 3
+  attach_provenance(m.gaussians, p);
+  const fs::path model_dir = f.root / "model_objects", out = f.root / "out_objects";
+  save_language_model(model_dir.string(), m);
+
+  const auto r = test::run_cli("-q query " + q(model_dir) + " '" + kWindow + "' --level 1 --objects --no-maps --out " + q(out));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json ranking = json::parse(read_text_file(out / "objects_a_window_on_a_building_facade.json"));
+  EXPECT_EQ(ranking["level"], 1);
+  // At level 1 each object answers for the Gaussians whose finest object it is (the building too, for
+  // those on no finer part); each row's mean is its Gaussians' mean score.
+  const std::vector<double> s = independent_scores(m, kWindow, 1);
+  ASSERT_EQ(ranking["objects"].size(), 4u);
+  double previous = 2;
+  for (const json& row : ranking["objects"]) {
+    const int k = row["index"];
+    double sum = 0;
+    int count = 0;
+    for (int i = 0; i < kN; ++i)
+      if (i % 5 - 1 == k) sum += s[i], ++count;
+    EXPECT_EQ(row["gaussians"], count);
+    EXPECT_NEAR(row["mean_score"].get<double>(), sum / count, 1e-5);
+    EXPECT_EQ(row["building"], "bld");
+    EXPECT_LE(row["mean_score"].get<double>(), previous);
+    previous = row["mean_score"];
+  }
+  EXPECT_NE(r.out.find("1. " + ranking["objects"][0]["class"].get<std::string>() + " " +
+                       ranking["objects"][0]["id"].get<std::string>()),
+            std::string::npos)
+      << r.out;
+  const std::string csv = read_text_file(out / "objects_a_window_on_a_building_facade.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);
+  const json qj = json::parse(read_text_file(out / "query.json"));
+  EXPECT_EQ(qj["queries"][0]["objects"]["ranked"], 4);
+
+  // The PLY carries the provenance; a model without it cannot answer with objects.
+  EXPECT_NE(load_language_model(model_dir.string()).gaussians.extra(kObjectProperty), nullptr);
+  const auto none = test::run_cli("-q query " + q(f.model_dir) + " window --objects --no-maps --out " + q(f.root / "x"));
+  EXPECT_EQ(none.status, 1);
+  EXPECT_NE(none.err.find("city_objects.json"), std::string::npos) << none.err;
 }
 
 }  // namespace

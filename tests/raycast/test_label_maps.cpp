@@ -8,6 +8,7 @@
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
 
+#include "citymodel/city_objects.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "raycast/label_map_io.h"
@@ -96,12 +97,13 @@ TEST(LabelMaps, OpeningOnTopOfWallWinsAndLevelsFollowTheHierarchy) {
         std::array<uint16_t, 3> expect{0, 0, 0};
         uint16_t building = 0;
         float depth = 0;
+        int32_t object = -1;  // entities of wall_with_window: 2 the window, 1 its wall, 4 the second wall
         if (in_window) {
-          expect = {kWindow + 1, kWall + 1, kBuilding + 1}, building = 1, depth = 20, ++window_pixels;
+          expect = {kWindow + 1, kWall + 1, kBuilding + 1}, building = 1, depth = 20, object = 2, ++window_pixels;
         } else if (in_wall) {  // the subpart fallback: a plain wall is "wall" at level 1 too
-          expect = {kWall + 1, kWall + 1, kBuilding + 1}, building = 1, depth = 20, ++wall_pixels;
+          expect = {kWall + 1, kWall + 1, kBuilding + 1}, building = 1, depth = 20, object = 1, ++wall_pixels;
         } else if (in_second) {
-          expect = {kWall + 1, kWall + 1, kBuilding + 1}, building = 2, depth = 25, ++second_pixels;
+          expect = {kWall + 1, kWall + 1, kBuilding + 1}, building = 2, depth = 25, object = 4, ++second_pixels;
         } else {
           ++empty_pixels;
         }
@@ -109,6 +111,7 @@ TEST(LabelMaps, OpeningOnTopOfWallWinsAndLevelsFollowTheHierarchy) {
         ASSERT_EQ(maps.level[1][p], expect[1]) << i << "," << j;
         ASSERT_EQ(maps.level[2][p], expect[2]) << i << "," << j;
         ASSERT_EQ(maps.building[p], building) << i << "," << j;
+        ASSERT_EQ(maps.object[p], object) << i << "," << j;
         ASSERT_EQ(maps.coverage[p], depth > 0 ? 255 : 0) << i << "," << j;
         ASSERT_NEAR(maps.depth[p], depth, 1e-4) << i << "," << j;
       }
@@ -136,6 +139,39 @@ TEST(LabelMaps, BuildingPartBelongsToItsBuilding) {
   m.buildings = {0};
   const LabelMaps maps = cast_hand_scene(m);
   EXPECT_EQ(maps.building[60 * 160 + 115], 1);
+}
+
+TEST(CityObjects, AnswerAtEachLevelAsTheLabelMapsDo) {
+  const CityObjects t = city_objects(wall_with_window(false), hand_taxonomy());
+  ASSERT_EQ(t.objects.size(), 5u);
+  EXPECT_EQ(t.objects[2].id, "b0-window");
+  EXPECT_EQ(t.class_name(2), "window");
+  // The window answers for itself at level 1, as its wall at 2 and its building at 3; a plain wall
+  // answers for itself at levels 1 and 2; a building has nothing finer.
+  EXPECT_EQ(t.at_level(2, 1), 2);
+  EXPECT_EQ(t.at_level(2, 2), 1);
+  EXPECT_EQ(t.at_level(2, 3), 0);
+  EXPECT_EQ(t.at_level(4, 1), 4);
+  EXPECT_EQ(t.at_level(4, 3), 3);
+  EXPECT_EQ(t.at_level(0, 1), 0);
+  EXPECT_EQ(t.at_level(-1, 1), -1);
+  EXPECT_EQ(finest_object_of_triangles(wall_with_window(false)), (std::vector<int32_t>{1, 1, 2, 2, 4, 4}));
+
+  const CityObjects back = CityObjects::from_json(t.to_json(), "t.json");
+  ASSERT_EQ(back.objects.size(), t.objects.size());
+  for (size_t k = 0; k < t.objects.size(); ++k) {
+    EXPECT_EQ(back.objects[k].id, t.objects[k].id);
+    EXPECT_EQ(back.objects[k].parent, t.objects[k].parent);
+    EXPECT_EQ(back.objects[k].level, t.objects[k].level);
+    EXPECT_EQ(back.objects[k].class_id, t.objects[k].class_id);
+  }
+  nlohmann::json cycle = t.to_json();
+  cycle["objects"][0]["parent"] = 2;  // a building inside its own window
+  EXPECT_THROW(CityObjects::from_json(cycle, "t.json"), Error);
+  nlohmann::json out_of_range = t.to_json();
+  out_of_range["objects"][1]["class"] = 9;
+  EXPECT_THROW(CityObjects::from_json(out_of_range, "t.json"), Error);
+  EXPECT_THROW(CityObjects::from_json(nlohmann::json::object(), "t.json"), Error);
 }
 
 TEST(LabelMaps, RejectsInconsistentMesh) {
@@ -168,7 +204,10 @@ TEST_F(LabelMapFiles, AllFilesWrittenAndReadBackExactly) {
   for (const auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename().string());
   std::sort(names.begin(), names.end());
   EXPECT_EQ(names, (std::vector<std::string>{"building.png", "coverage.png", "depth.pfm", "level1.png",
-                                             "level2.png", "level3.png", "preview.png"}));
+                                             "level2.png", "level3.png", "object.npy", "preview.png"}));
+  EXPECT_EQ(read_object_map(dir_ / "object.npy", 120, 160), maps.object);
+  EXPECT_THROW(read_object_map(dir_ / "object.npy", 160, 120), Error);  // another view's size
+  EXPECT_THROW(read_object_map(dir_ / "none.npy", 120, 160), Error);
   for (int l = 0; l < 3; ++l) {
     const cv::Mat png = cv::imread((dir_ / ("level" + std::to_string(l + 1) + ".png")).string(), cv::IMREAD_UNCHANGED);
     ASSERT_EQ(png.type(), CV_16UC1);

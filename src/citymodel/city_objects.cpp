@@ -1,0 +1,96 @@
+#include "citymodel/city_objects.h"
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/log.h"
+
+namespace cls {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+int32_t CityObjects::at_level(int32_t object, int level) const {
+  // A chain is at most objects.size() long unless the table has a cycle (from_json rejects those).
+  for (size_t steps = 0; object >= 0 && static_cast<size_t>(object) < objects.size() && steps <= objects.size();
+       ++steps) {
+    if (objects[object].level >= level) return object;
+    object = objects[object].parent;
+  }
+  return -1;
+}
+
+std::string CityObjects::class_name(int32_t object) const {
+  if (object < 0 || static_cast<size_t>(object) >= objects.size()) return "";
+  const int c = objects[object].class_id;
+  return c >= 0 && static_cast<size_t>(c) < class_names.size() ? class_names[c] : "";
+}
+
+json CityObjects::to_json() const {
+  json rows = json::array();
+  for (size_t i = 0; i < objects.size(); ++i) {
+    const CityObject& o = objects[i];
+    rows.push_back({{"index", i}, {"id", o.id}, {"level", o.level}, {"class", o.class_id}, {"parent", o.parent}});
+  }
+  return {{"source", source}, {"classes", class_names}, {"objects", rows}};
+}
+
+CityObjects CityObjects::from_json(const json& j, const std::string& file) {
+  CityObjects t;
+  try {
+    t.source = j.value("source", "");
+    t.class_names = j.at("classes").get<std::vector<std::string>>();
+    for (const json& row : j.at("objects")) {
+      CityObject o;
+      o.id = row.at("id").get<std::string>();
+      o.level = row.at("level").get<int>();
+      o.class_id = row.at("class").get<int>();
+      o.parent = row.at("parent").get<int32_t>();
+      t.objects.push_back(std::move(o));
+    }
+  } catch (const json::exception& e) {
+    fail(file, std::string("not a city-object table (source, classes, objects[id, level, class, parent]): ") + e.what());
+  }
+  const int64_t n = static_cast<int64_t>(t.objects.size());
+  for (int64_t i = 0; i < n; ++i) {
+    const CityObject& o = t.objects[i];
+    if (o.parent < -1 || o.parent >= n) fail(file, cat("object ", i, " has parent ", o.parent, " of ", n, " objects"));
+    if (o.class_id < -1 || o.class_id >= static_cast<int>(t.class_names.size()))
+      fail(file, cat("object ", i, " has class ", o.class_id, " of ", t.class_names.size(), " classes"));
+    // A parent lies on a coarser level, so a chain cannot come back to where it started.
+    if (o.parent >= 0 && t.objects[o.parent].level <= o.level)
+      fail(file, cat("object ", i, " (level ", o.level, ") has parent ", o.parent, " on level ",
+                     t.objects[o.parent].level, "; a parent must lie on a coarser level"));
+  }
+  return t;
+}
+
+CityObjects city_objects(const SemanticMesh& mesh, const Taxonomy& taxonomy) {
+  CityObjects t;
+  t.source = mesh.source_path;
+  for (const SemanticClass& c : taxonomy.classes) t.class_names.push_back(c.name);
+  for (const SemanticEntity& e : mesh.entities) t.objects.push_back({e.source_id, e.level, e.class_id, e.parent});
+  return t;
+}
+
+std::vector<int32_t> finest_object_of_triangles(const SemanticMesh& mesh) {
+  std::vector<int32_t> object(mesh.num_triangles(), -1);
+  for (size_t t = 0; t < object.size() && t < mesh.tri_entity.size(); ++t)
+    for (int l = 0; l < 3 && object[t] < 0; ++l) object[t] = mesh.tri_entity[t][l];
+  return object;
+}
+
+void write_city_objects(const fs::path& path, const CityObjects& objects) {
+  write_text_atomic(path, objects.to_json().dump(1) + "\n");
+}
+
+CityObjects read_city_objects(const fs::path& path) {
+  if (!fs::exists(path)) fail(path.string(), "missing (the city-object table written by `raycast`)");
+  json j;
+  try {
+    j = json::parse(read_text_file(path));
+  } catch (const json::exception& e) {
+    fail(path.string(), std::string("not valid JSON: ") + e.what());
+  }
+  return CityObjects::from_json(j, path.string());
+}
+
+}  // namespace cls
