@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # One-command set-up on a fresh Debian 12 machine: installs the Debian packages the project needs
-# (idempotent), configures and builds into build/, and generates the bundled example scene.
+# (idempotent), configures and builds into build/, installs the viewer page's npm packages
+# (scripts/install_web.sh) and generates the bundled example scene.
 #   bash scripts/setup.sh [--no-example]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -8,7 +9,10 @@ cd "$(dirname "$0")/.."
 PACKAGES=(build-essential cmake ninja-build pkg-config
           libembree-dev libpugixml-dev nlohmann-json3-dev libopencv-dev libglu1-mesa-dev
           libgtest-dev libtorch-dev libopenblas0-pthread libcurl4-openssl-dev zlib1g-dev libicu-dev
-          chromium chromium-driver python3-selenium python3-pil)  # the last four: the report's browser test
+          libcpp-httplib-dev                                          # the viewer's server
+          chromium chromium-driver python3-selenium python3-pil)  # the browser tests (report, viewer)
+# npm installs the viewer page's packages (three, Spark); Debian's when no npm is on the PATH.
+command -v npm >/dev/null 2>&1 || PACKAGES+=(npm)
 
 missing=()
 for p in "${PACKAGES[@]}"; do
@@ -23,6 +27,7 @@ fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build build --parallel "$(nproc)"
+bash scripts/install_web.sh
 
 if [ "${1:-}" != "--no-example" ]; then
   bash scripts/make_example.sh

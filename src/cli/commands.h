@@ -16,4 +16,5 @@ int cmd_query(int argc, char** argv);       // open-vocabulary text queries on a
 int cmd_evaluate(int argc, char** argv);    // the paper's evaluation (section 4)
 int cmd_render(int argc, char** argv);      // pictures and videos of a trained model
 int cmd_report(int argc, char** argv);      // the HTML report of a run directory
+int cmd_view(int argc, char** argv);        // the browser viewer with live text queries
 }  // namespace cls

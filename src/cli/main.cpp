@@ -34,6 +34,7 @@ const Command kCommands[] = {
     {"evaluate", cls::cmd_evaluate, "evaluate language models against a labelled point cloud (2D and 3D)"},
     {"render", cls::cmd_render, "render a model: RGB vs photo (PSNR/SSIM), depth, features, relevance, labels, orbit video"},
     {"report", cls::cmd_report, "write a run directory's HTML report (report/index.html) and print its path"},
+    {"view", cls::cmd_view, "serve a model in the browser: splats, cameras, live text queries answered with city objects"},
 };
 
 void usage(FILE* out) {

@@ -1,0 +1,274 @@
+#include "viewer/viewer_model.h"
+
+#include <ATen/ATen.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "citymodel/mesh_ply.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "language/provenance.h"
+#include "query/object_ranking.h"
+#include "query/relevance.h"
+#include "query/text_queries.h"
+#include "scene/view_selection.h"
+
+namespace cls {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// The held-out views of train-rgb (every 8th by name), drawn apart in the viewer.
+constexpr int kTestEvery = 8;
+
+void append_floats(std::string& out, std::initializer_list<float> values) {
+  for (float v : values) out.append(reinterpret_cast<const char*>(&v), sizeof v);  // x86/ARM: little-endian
+}
+
+std::string gaussians_of(const GaussianModel& g) {
+  const int64_t n = g.size();
+  const at::Tensor means = g.means.to(at::kFloat).contiguous();
+  const at::Tensor scales = g.scales().to(at::kFloat).contiguous();
+  const at::Tensor quats = (g.quats / g.quats.norm(2, {1}, true).clamp_min(1e-12)).to(at::kFloat).contiguous();
+  const at::Tensor opacity = g.opacities().to(at::kFloat).contiguous();
+  // The SH band 0 colour, as 3DGS shows a Gaussian from no particular direction.
+  const at::Tensor rgb = (0.5 + 0.28209479177387814 * g.sh_dc.reshape({n, 3})).clamp(0, 1).to(at::kFloat).contiguous();
+  const float *m = means.data_ptr<float>(), *s = scales.data_ptr<float>(), *q = quats.data_ptr<float>(),
+              *o = opacity.data_ptr<float>(), *c = rgb.data_ptr<float>();
+  std::string out;
+  out.reserve(static_cast<size_t>(n) * 14 * sizeof(float));
+  for (int64_t i = 0; i < n; ++i)
+    append_floats(out, {m[3 * i], m[3 * i + 1], m[3 * i + 2], s[3 * i], s[3 * i + 1], s[3 * i + 2], q[4 * i],
+                        q[4 * i + 1], q[4 * i + 2], q[4 * i + 3], o[i], c[3 * i], c[3 * i + 1], c[3 * i + 2]});
+  return out;
+}
+
+// The label maps the model's features came from (features.json "labels_dir"), "" if unknown.
+fs::path labels_dir_of(const json& info) {
+  if (!info.contains("features") || !info["features"].is_string()) return {};
+  const fs::path features_json = fs::path(info["features"].get<std::string>()) / "features.json";
+  if (!fs::exists(features_json)) return {};
+  try {
+    const json fj = json::parse(read_text_file(features_json));
+    return fj.contains("labels_dir") && fj["labels_dir"].is_string() ? fs::path(fj["labels_dir"].get<std::string>())
+                                                                       : fs::path();
+  } catch (const json::exception& e) {
+    fail(features_json.string(), std::string("not valid JSON: ") + e.what());
+  }
+}
+
+std::string city_mesh_of(const fs::path& ply) {
+  const MeshPly mesh = read_mesh_ply(ply.string());
+  std::string out;
+  out.reserve(mesh.triangles.size() * 3 * 6 * sizeof(float));
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& rgb = mesh.colours[t];
+    for (int32_t v : mesh.triangles[t]) {
+      const Vec3f& p = mesh.vertices[v];
+      append_floats(out, {p.x, p.y, p.z, rgb[0] / 255.0f, rgb[1] / 255.0f, rgb[2] / 255.0f});
+    }
+  }
+  return out;
+}
+
+json view_json(const SceneView& v, size_t index, bool test) {
+  std::vector<double> R;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) R.push_back(v.pose.R.m[r][c]);
+  const Vec3d centre = v.pose.center();
+  return {{"index", index},      {"name", v.name},
+          {"width", v.camera.width}, {"height", v.camera.height},
+          {"fx", v.camera.fx},   {"fy", v.camera.fy},
+          {"cx", v.camera.cx},   {"cy", v.camera.cy},
+          {"R", R},              {"t", {v.pose.t.x, v.pose.t.y, v.pose.t.z}},
+          {"center", {centre.x, centre.y, centre.z}},
+          {"image", "/api/image/" + std::to_string(index)},
+          {"test", test}};
+}
+
+// Rows of unit length; a zero row stays zero (gaussian_scores gives such a Gaussian score 0).
+at::Tensor normalised_rows(const at::Tensor& x) {
+  return (x.to(at::kFloat) / x.to(at::kFloat).norm(2, {-1}, true).clamp_min(1e-30)).contiguous();
+}
+
+int parse_level(const std::string& level) {
+  if (level == "best") return 0;
+  if (level == "1" || level == "2" || level == "3") return level[0] - '0';
+  throw UsageError("level must be best, 1, 2 or 3, got '" + level + "'");
+}
+
+}  // namespace
+
+std::string run_scene_dir(const fs::path& out) {
+  const fs::path run_json = out / "run.json";
+  if (!fs::exists(run_json)) return "";
+  try {
+    const json run = json::parse(read_text_file(run_json));
+    return run.contains("scene") && run["scene"].is_string() ? run["scene"].get<std::string>() : "";
+  } catch (const json::exception& e) {
+    fail(run_json.string(), std::string("not valid JSON: ") + e.what());
+  }
+}
+
+fs::path viewer_model_dir(const fs::path& out, const std::string& method) {
+  if (fs::exists(out / "model.json")) return out;
+  const fs::path in_run = out / "language" / method;
+  if (fs::exists(in_run / "model.json")) return in_run;
+  throw UsageError("view: " + out.string() + " is neither a language model (model.json) nor a `run` output with " +
+                   (fs::path("language") / method / "model.json").string());
+}
+
+ViewerModel::ViewerModel(const fs::path& model_dir, const std::string& scene_dir)
+    : model_(load_language_model(model_dir.string())) {
+  at::NoGradGuard no_grad;
+  const std::string model_json = (model_dir / "model.json").string();
+  const Taxonomy taxonomy = model_taxonomy(model_.info, model_json, "");
+  provider_ = model_provider(model_, model_json, taxonomy);
+
+  // The canonical phrases' latents, normalised, and every Gaussian's cosine with them per level.
+  const at::Tensor canonical =
+      normalised_rows(model_.autoencoder.encode(provider_->text_features(canonical_phrases()).to(at::kFloat)));
+  for (int l = 0; l < 3; ++l) {
+    normalised_[l] = normalised_rows(model_.latents[l]);
+    canonical_cos_[l] = normalised_[l].matmul(canonical.t()).contiguous();
+  }
+  means_ = model_.gaussians.means.to(at::kFloat).contiguous();
+  gaussians_ = gaussians_of(model_.gaussians);
+
+  const std::string scene_path = scene_dir.empty() ? recorded_scene(model_.info) : scene_dir;
+  json views = json::array();
+  if (!scene_path.empty() && fs::exists(scene_path)) {
+    SceneOptions options;
+    options.check_images = false;
+    scene_ = load_scene(scene_path, options);
+    const ViewSplit split = split_views(scene_, kTestEvery);
+    for (size_t k = 0; k < scene_.views.size(); ++k) {
+      const bool test = std::find(split.test.begin(), split.test.end(), &scene_.views[k]) != split.test.end();
+      views.push_back(view_json(scene_.views[k], k, test));
+    }
+  } else {
+    log_warn("view: the model's scene " + (scene_path.empty() ? std::string("is not recorded") : scene_path + " is missing") +
+             ": no cameras or photos (pass --scene DIR)");
+  }
+  const fs::path labels = labels_dir_of(model_.info);
+  if (!labels.empty() && fs::exists(labels / "city_mesh.ply")) city_mesh_ = city_mesh_of(labels / "city_mesh.ply");
+
+  objects_json_ = {{"objects", json::array()}};
+  if (!model_.objects.objects.empty()) {
+    // Each object at the coarsest level it answers for: a wall with its windows, a building whole.
+    const at::Tensor object_of = model_.gaussians.extra(kObjectProperty)->values.contiguous();
+    const at::Tensor zeros = at::zeros({model_.gaussians.size()}, at::kFloat);
+    std::map<int64_t, json> rows;
+    for (int l = 1; l <= 3; ++l) {
+      ObjectRankingOptions options;
+      options.level = l;
+      options.min_gaussians = 1;
+      const auto ranking = rank_objects(model_.objects, object_of.data_ptr<int32_t>(), zeros.data_ptr<float>(),
+                                        means_.data_ptr<float>(), zeros.numel(), options);
+      for (json row : object_ranking_json(model_.objects, ranking)) {
+        for (const char* score : {"rank", "mean_score", "max_score", "above"}) row.erase(score);
+        rows[row["index"].get<int64_t>()] = row;
+      }
+    }
+    for (auto& [index, row] : rows) objects_json_["objects"].push_back(std::move(row));
+  }
+
+  json classes = json::array();
+  for (size_t k = 0; k < taxonomy.classes.size(); ++k)
+    classes.push_back({{"id", k}, {"name", taxonomy.classes[k].name}, {"level", taxonomy.classes[k].level},
+                       {"color", taxonomy.classes[k].color}});
+  // Bounds of the bulk of the Gaussians (1st to 99th percentile per axis): far floaters and the
+  // background would otherwise make the first view a speck.
+  at::Tensor lo = at::zeros({3}), hi = at::zeros({3});
+  if (means_.size(0) > 0) {
+    const at::Tensor sorted = std::get<0>(means_.sort(0));
+    const int64_t last = means_.size(0) - 1;
+    lo = sorted[static_cast<int64_t>(0.01 * last)];
+    hi = sorted[static_cast<int64_t>(0.99 * last)];
+  }
+  const std::string provider_name = provider_->name();
+  model_json_ = {{"gaussians", model_.gaussians.size()},
+                 {"model", fs::absolute(model_dir).string()},
+                 {"method", model_.info.value("method", "")},
+                 {"provider", provider_name},
+                 {"warning", provider_warning(provider_name)},
+                 {"levels", {1, 2, 3}},
+                 {"has_objects", !model_.objects.objects.empty()},
+                 {"classes", classes},
+                 {"views", views},
+                 {"bounds", {{"min", {lo[0].item<double>(), lo[1].item<double>(), lo[2].item<double>()}},
+                             {"max", {hi[0].item<double>(), hi[1].item<double>(), hi[2].item<double>()}}}},
+                 {"city_mesh", !city_mesh_.empty()}};
+}
+
+std::string ViewerModel::image_path(size_t index) const {
+  return index < scene_.views.size() ? scene_.views[index].image_path : "";
+}
+
+at::Tensor ViewerModel::text_latent(const std::string& text) {
+  const auto it = text_cache_.find(text);
+  if (it != text_cache_.end()) return it->second;
+  const at::Tensor q = normalised_rows(model_.autoencoder.encode(provider_->text_features({text}).to(at::kFloat)))[0];
+  if (text_cache_.size() > 1000) text_cache_.clear();  // bounded: a long session types many texts
+  return text_cache_[text] = q;
+}
+
+ViewerAnswer ViewerModel::answer(const ViewerQuery& query) {
+  std::string text = query.text;
+  text.erase(0, text.find_first_not_of(" \t\r\n"));
+  text.erase(text.find_last_not_of(" \t\r\n") + 1);
+  if (text.empty()) throw UsageError("the query text is empty");
+  if (text.size() > kMaxQueryChars) throw UsageError(cat("the query text has more than ", kMaxQueryChars, " characters"));
+  const int fixed = parse_level(query.level);
+  if (query.mode != "cosine" && query.mode != "relevancy")
+    throw UsageError("mode must be cosine or relevancy, got '" + query.mode + "'");
+  if (!std::isfinite(query.threshold)) throw UsageError("threshold must be a number");
+
+  std::lock_guard<std::mutex> lock(mutex_);
+  at::NoGradGuard no_grad;
+  const at::Tensor q = text_latent(text);
+  // LangSplat's choice of level: the one with the highest maximum cosine (ties: the lower level).
+  std::array<at::Tensor, 3> cosine;
+  json level_max = json::object();
+  int level = fixed;
+  double best = -2;
+  for (int l = 1; l <= 3; ++l) {
+    if (fixed && l != fixed) continue;
+    cosine[l - 1] = normalised_[l - 1].mv(q);
+    const double m = cosine[l - 1].numel() ? cosine[l - 1].max().item<double>() : -1.0;
+    level_max[std::to_string(l)] = m;
+    if (!fixed && m > best) best = m, level = l;
+  }
+  at::Tensor scores = cosine[level - 1];
+  if (query.mode == "relevancy") scores = relevancy_from_cosines(scores, canonical_cos_[level - 1]).contiguous();
+
+  ViewerAnswer a;
+  a.scores = scores;
+  a.info = {{"text", text},
+            {"level", level},
+            {"mode", query.mode},
+            {"threshold", query.threshold},
+            {"max_score_per_level", level_max},
+            {"scores_range", {scores.numel() ? scores.min().item<double>() : 0.0,
+                              scores.numel() ? scores.max().item<double>() : 0.0}},
+            {"selected", (scores >= query.threshold).sum().item<int64_t>()},
+            {"objects", json::array()}};
+  if (!model_.objects.objects.empty()) {
+    ObjectRankingOptions options;
+    options.level = level;
+    options.threshold = query.threshold;
+    const at::Tensor object_of = model_.gaussians.extra(kObjectProperty)->values.contiguous();
+    const std::vector<ObjectScore> ranking =
+        rank_objects(model_.objects, object_of.data_ptr<int32_t>(), scores.data_ptr<float>(), means_.data_ptr<float>(),
+                     scores.numel(), options);
+    a.info["objects"] = object_ranking_json(model_.objects, ranking, query.top);
+    a.info["objects_ranked"] = ranking.size();
+  }
+  return a;
+}
+
+}  // namespace cls

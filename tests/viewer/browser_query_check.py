@@ -1,0 +1,299 @@
+#!/usr/bin/python3
+"""Checks the viewer of `citylangsplat view` in a real browser: starts the server, opens the page in
+headless Chromium (software WebGL), jumps to a view, types a query as a person would, and checks that
+the splats that changed colour lie on the queried class in that view's label map.
+
+Highlighted pixels are those whose colour changed between the render before and after the query by
+more than --min-change (max over R, G, B, 0-255): the page mixes 80% of a heat colour over a selected
+splat, while a fixed camera re-renders the other splats identically. The canvas shows exactly the
+view (its aspect ratio, letterboxed), so its screenshot is resized (nearest) onto the label map
+LABELS/<view stem>/level<L>.png, where the class's pixels hold its legend.json id + 1.
+Pass: at least --min-fraction of the highlighted pixels are on the class, and at least --min-pixels
+(a fraction of the label map) are highlighted, so that an empty highlight fails; no SEVERE console entry.
+
+Run it with Debian's /usr/bin/python3 (python3-selenium, python3-pil; chromium and chromium-driver).
+Exit status: 0 pass, 1 fail (with the reasons), 77 skipped (Chromium, chromedriver, Selenium or PIL absent).
+
+    /usr/bin/python3 tests/viewer/browser_query_check.py --binary build/citylangsplat --out RUN \\
+        --labels RUN/labels --view 0000.png --query window --class window --level 1 --screenshot after.png
+"""
+import argparse
+import io
+import json
+import os
+import queue
+import re
+import shutil
+import subprocess
+import sys
+import threading
+import time
+
+SKIP = 77
+CHROMEDRIVER = "/usr/bin/chromedriver"
+# Headless Chromium has no GPU here: WebGL2 runs on SwiftShader through ANGLE. Without
+# --enable-unsafe-swiftshader, Chromium 156 only falls back to it with a deprecation warning
+# (later versions drop the fallback).
+CHROMIUM_FLAGS = ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--use-angle=swiftshader",
+                  "--enable-unsafe-swiftshader", "--window-size=1400,1000", "--hide-scrollbars",
+                  "--force-device-scale-factor=1")
+SERVER_URL = re.compile(r"http://127\.0\.0\.1:\d+/")
+
+
+def skip(why):
+    print(f"SKIPPED: {why}")
+    sys.exit(SKIP)
+
+
+class Failure(Exception):
+    pass
+
+
+def parse_args():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--binary", help="the citylangsplat executable (runs `BINARY view OUT --port 0`)")
+    p.add_argument("--out", help="the run or model directory to view")
+    p.add_argument("--labels", required=True, help="label maps: LABELS/legend.json, LABELS/<view stem>/level<L>.png")
+    p.add_argument("--view", required=True, help="the view to look through, as the page lists it (e.g. 0000.png)")
+    p.add_argument("--query", required=True, help="the text typed into the query box")
+    p.add_argument("--class", dest="cls", required=True, help="the legend class the highlight must fall on")
+    p.add_argument("--level", type=int, choices=(1, 2, 3), required=True, help="query level and label map level")
+    p.add_argument("--mode", choices=("cosine", "relevancy"), default="cosine")
+    p.add_argument("--threshold", type=float, help="set the threshold slider to this (default: the page's)")
+    p.add_argument("--min-fraction", type=float, default=0.8, help="least share of highlighted pixels on the class")
+    p.add_argument("--min-pixels", type=float, default=0.005,
+                   help="least highlighted pixels, as a fraction of the label map (default 0.5%%)")
+    p.add_argument("--min-change", type=int, default=40, help="colour change (0-255) that makes a pixel highlighted")
+    p.add_argument("--timeout", type=float, default=180, help="seconds to wait for loading, and for the query")
+    p.add_argument("--screenshot", help="write the full page after the query here (PNG)")
+    p.add_argument("--keep-server", action="store_true", help="leave the server running at the end")
+    p.add_argument("--server-url", help=argparse.SUPPRESS)  # use a running server (development against a mock)
+    args = p.parse_args()
+    if not args.server_url and not (args.binary and args.out):
+        p.error("--binary and --out are required")
+    return args
+
+
+def load_labels(args):
+    """The label map of the view at the level (PIL image, mode I) and the class's label value."""
+    from PIL import Image
+    legend_path = os.path.join(args.labels, "legend.json")
+    with open(legend_path) as f:
+        legend = json.load(f)
+    ids = [c["id"] for c in legend if c.get("name") == args.cls]
+    if not ids:
+        raise Failure(f"{legend_path}: no class '{args.cls}' (classes: {', '.join(c.get('name', '?') for c in legend)})")
+    stem = os.path.splitext(args.view)[0]
+    path = os.path.join(args.labels, stem, f"level{args.level}.png")
+    if not os.path.isfile(path):
+        raise Failure(f"{path}: no such label map")
+    return Image.open(path).convert("I"), ids[0] + 1
+
+
+def start_server(args):
+    """Runs `BINARY view OUT --port 0` and returns (process, url) once it says where it listens."""
+    cmd = [args.binary, "view", args.out, "--port", "0"]
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    lines = queue.Queue()
+
+    def pump():  # a thread, so that waiting for the URL can time out
+        for line in proc.stdout:
+            lines.put(line)
+        lines.put(None)
+
+    threading.Thread(target=pump, daemon=True).start()
+    seen = []
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline:
+        try:
+            line = lines.get(timeout=max(0.1, deadline - time.monotonic()))
+        except queue.Empty:
+            break
+        if line is None:
+            proc.wait()
+            raise Failure(f"{' '.join(cmd)} exited with {proc.returncode} before listening:\n{''.join(seen)}")
+        seen.append(line)
+        match = SERVER_URL.search(line)
+        if match:
+            return proc, match.group(0)
+    stop_server(proc)
+    raise Failure(f"{' '.join(cmd)} printed no http://127.0.0.1:PORT/ within 60 s:\n{''.join(seen)}")
+
+
+def stop_server(proc):
+    proc.terminate()
+    try:
+        proc.wait(timeout=10)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.wait()
+
+
+def require_tools():
+    try:
+        import PIL  # noqa: F401
+    except ImportError:
+        skip("PIL is not installed for this python (Debian: apt-get install python3-pil)")
+    try:
+        import selenium  # noqa: F401
+    except ImportError:
+        skip("Selenium is not installed for this python (Debian: apt-get install python3-selenium)")
+    browser = shutil.which("chromium") or shutil.which("chromium-browser")
+    if not browser or not os.access(CHROMEDRIVER, os.X_OK):
+        skip("Chromium or chromedriver is not installed (Debian: apt-get install chromium chromium-driver)")
+
+
+def start_browser():
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+    options = webdriver.ChromeOptions()
+    for flag in CHROMIUM_FLAGS:
+        options.add_argument(flag)
+    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    return webdriver.Chrome(service=Service(executable_path=CHROMEDRIVER), options=options)
+
+
+def wait_for(driver, what, script, timeout):
+    """Polls a JS expression on window.viewerState until it is truthy; returns its value."""
+    deadline = time.monotonic() + timeout
+    while True:
+        value = driver.execute_script(f"const s = window.viewerState; return s ? ({script}) : null;")
+        if value:
+            return value
+        if time.monotonic() > deadline:
+            state = driver.execute_script("return window.viewerState")
+            error = driver.execute_script("const e = document.getElementById('error'); return e ? e.textContent : ''")
+            raise Failure(f"timed out after {timeout:.0f} s waiting for {what}; viewerState={state}"
+                          + (f"; page error: {error}" if error else ""))
+        time.sleep(0.05)
+
+
+def wait_frames(driver, count, timeout):
+    start = driver.execute_script("return window.viewerState.frames")
+    wait_for(driver, f"{count} more frames", f"s.frames >= {start + count}", timeout)
+
+
+def canvas_png(driver):
+    from selenium.webdriver.common.by import By
+    return driver.find_element(By.CSS_SELECTOR, "#stage canvas").screenshot_as_png
+
+
+def highlighted_on_class(before_png, after_png, labels, label_value, min_change):
+    """(highlighted pixels, of them on the class) at the label map's resolution."""
+    from PIL import Image, ImageChops
+    before = Image.open(io.BytesIO(before_png)).convert("RGB")
+    after = Image.open(io.BytesIO(after_png)).convert("RGB")
+    if before.size != after.size:
+        raise Failure(f"the canvas changed size during the query: {before.size} -> {after.size}")
+    canvas_aspect = after.width / after.height
+    label_aspect = labels.width / labels.height
+    if abs(canvas_aspect / label_aspect - 1) > 0.02:
+        raise Failure(f"the canvas ({after.width} x {after.height}) does not show the view's aspect ratio "
+                      f"({labels.width} x {labels.height})")
+    diff = ImageChops.difference(before, after).resize(labels.size, Image.NEAREST)
+    r, g, b = diff.split()
+    changed = ImageChops.lighter(ImageChops.lighter(r, g), b).point(lambda v: 255 if v > min_change else 0)
+    highlighted = on_class = 0
+    for c, label in zip(changed.getdata(), labels.getdata()):
+        if c:
+            highlighted += 1
+            on_class += label == label_value
+    return highlighted, on_class
+
+
+def check(args, url, failures):
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.common.keys import Keys
+    from selenium.webdriver.support.ui import Select
+    labels, label_value = load_labels(args)
+    driver = start_browser()
+    try:
+        started = time.monotonic()
+        driver.get(url)
+        wait_for(driver, "the splats (viewerState.ready)", "s.ready", args.timeout)
+        status = driver.find_element(By.ID, "status").text
+        print(f"loaded in {time.monotonic() - started:.1f} s ({status})")
+        warning = driver.find_element(By.ID, "warning")
+        if warning.is_displayed():
+            print(f"warning banner: {warning.text}")
+
+        views = [o.get_attribute("value") for o in Select(driver.find_element(By.ID, "view-select")).options]
+        if args.view not in views:
+            raise Failure(f"view '{args.view}' is not in #view-select (has: {', '.join(v for v in views if v)})")
+        Select(driver.find_element(By.ID, "view-select")).select_by_value(args.view)
+        wait_for(driver, f"view {args.view}", f"s.view === {json.dumps(args.view)}", args.timeout)
+        wait_frames(driver, 3, args.timeout)
+        before = canvas_png(driver)
+
+        Select(driver.find_element(By.ID, "mode")).select_by_value(args.mode)
+        Select(driver.find_element(By.ID, "level")).select_by_value(str(args.level))
+        if args.threshold is not None:
+            driver.execute_script("const t = document.getElementById('threshold'); t.value = arguments[0];"
+                                  "t.dispatchEvent(new Event('input'));", args.threshold)
+        box = driver.find_element(By.ID, "query")
+        box.clear()
+        started = time.monotonic()
+        box.send_keys(args.query + Keys.ENTER)
+        query = wait_for(driver, "the query to be applied",
+                         f"(s.query && s.query.text === {json.dumps(args.query)} && (s.query.applied || s.query.error))"
+                         " ? s.query : null", args.timeout)
+        if query.get("error"):
+            raise Failure(f"the query failed: {query['error']}")
+        applied = time.monotonic() - started
+        wait_frames(driver, 3, args.timeout)
+        print(f"query '{args.query}' applied in {applied:.2f} s: level {query['level']}, "
+              f"{query['selected']} Gaussians selected")
+        after = canvas_png(driver)
+        if args.screenshot:
+            driver.save_screenshot(args.screenshot)
+            print(f"screenshot: {args.screenshot}")
+
+        highlighted, on_class = highlighted_on_class(before, after, labels, label_value, args.min_change)
+        total = labels.width * labels.height
+        fraction = on_class / highlighted if highlighted else 0.0
+        print(f"highlighted pixels: {highlighted} of {total} ({100 * highlighted / total:.1f}%) at "
+              f"{labels.width} x {labels.height}; on '{args.cls}': {on_class} ({100 * fraction:.1f}%)")
+        if highlighted < args.min_pixels * total:
+            failures.append(f"only {highlighted} highlighted pixels (< {100 * args.min_pixels:.1f}% of {total})")
+        if fraction < args.min_fraction:
+            failures.append(f"{100 * fraction:.1f}% of the highlighted pixels are on '{args.cls}' "
+                            f"(< {100 * args.min_fraction:.0f}%)")
+
+        severe = [e for e in driver.get_log("browser") if e.get("level") == "SEVERE"]
+        for entry in severe:
+            print(f"console SEVERE: {entry.get('message')}")
+        if severe:
+            failures.append(f"{len(severe)} SEVERE console entries")
+    finally:
+        driver.quit()
+
+
+def main():
+    args = parse_args()
+    require_tools()
+    failures = []
+    proc = None
+    try:
+        if args.server_url:
+            url = args.server_url
+        else:
+            proc, url = start_server(args)
+            print(f"server: {url}")
+        check(args, url, failures)
+    except Failure as e:
+        failures.append(str(e))
+    finally:
+        if proc and args.keep_server:
+            print(f"server left running: {url} (pid {proc.pid})")
+        elif proc:
+            stop_server(proc)
+    if failures:
+        for f in failures:
+            print(f"FAIL: {f}")
+        return 1
+    print("PASS")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
