@@ -129,12 +129,12 @@ ViewerModel::ViewerModel(const fs::path& model_dir, const std::string& scene_dir
   const Taxonomy taxonomy = model_taxonomy(model_.info, model_json, "");
   provider_ = model_provider(model_, model_json, taxonomy);
 
-  // The canonical phrases' latents, normalised, and every Gaussian's cosine with them per level.
+  // The canonical phrases' latents, normalised, and every Gaussian's highest cosine with them per level.
   const at::Tensor canonical =
       normalised_rows(model_.autoencoder.encode(provider_->text_features(canonical_phrases()).to(at::kFloat)));
   for (int l = 0; l < 3; ++l) {
     normalised_[l] = normalised_rows(model_.latents[l]);
-    canonical_cos_[l] = normalised_[l].matmul(canonical.t()).contiguous();
+    canonical_max_[l] = std::get<0>(normalised_[l].matmul(canonical.t()).max(1)).contiguous();
   }
   means_ = model_.gaussians.means.to(at::kFloat).contiguous();
   gaussians_ = gaussians_of(model_.gaussians);
@@ -230,21 +230,31 @@ ViewerAnswer ViewerModel::answer(const ViewerQuery& query) {
 
   std::lock_guard<std::mutex> lock(mutex_);
   at::NoGradGuard no_grad;
-  const at::Tensor q = text_latent(text);
-  // LangSplat's choice of level: the one with the highest maximum cosine (ties: the lower level).
-  std::array<at::Tensor, 3> cosine;
-  json level_max = json::object();
-  int level = fixed;
-  double best = -2;
-  for (int l = 1; l <= 3; ++l) {
-    if (fixed && l != fixed) continue;
-    cosine[l - 1] = normalised_[l - 1].mv(q);
-    const double m = cosine[l - 1].numel() ? cosine[l - 1].max().item<double>() : -1.0;
-    level_max[std::to_string(l)] = m;
-    if (!fixed && m > best) best = m, level = l;
+  // The page asks for a query's JSON and then its scores: the second request reuses the first's work.
+  const std::string key = text + '\n' + query.level + '\n' + query.mode;
+  if (key != last_.key) {
+    const at::Tensor q = text_latent(text);
+    // LangSplat's choice of level: the one with the highest maximum cosine (ties: the lower level).
+    std::array<at::Tensor, 3> cosine;
+    json level_max = json::object();
+    int level = fixed;
+    double best = -2;
+    for (int l = 1; l <= 3; ++l) {
+      if (fixed && l != fixed) continue;
+      cosine[l - 1] = normalised_[l - 1].mv(q);
+      const double m = cosine[l - 1].numel() ? cosine[l - 1].max().item<double>() : -1.0;
+      level_max[std::to_string(l)] = m;
+      if (!fixed && m > best) best = m, level = l;
+    }
+    at::Tensor scores = cosine[level - 1];
+    // LangSplat's relevancy min_c softmax(10 [cos_q, cos_c])[0] = min_c sigmoid(10 (cos_q - cos_c)), and
+    // the sigmoid falls with cos_c: the minimum is at the canonical phrase of highest cosine.
+    if (query.mode == "relevancy") scores = at::sigmoid(10.0 * (scores - canonical_max_[level - 1])).contiguous();
+    last_ = {key, scores, level, level_max};
   }
-  at::Tensor scores = cosine[level - 1];
-  if (query.mode == "relevancy") scores = relevancy_from_cosines(scores, canonical_cos_[level - 1]).contiguous();
+  const at::Tensor& scores = last_.scores;
+  const int level = last_.level;
+  const json& level_max = last_.level_max;
 
   ViewerAnswer a;
   a.scores = scores;

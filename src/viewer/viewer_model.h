@@ -68,12 +68,18 @@ class ViewerModel {
   LanguageModel model_;
   std::unique_ptr<FeatureProvider> provider_;
   std::array<at::Tensor, 3> normalised_;     // per level N x L, rows of unit length (0 for zero latents)
-  std::array<at::Tensor, 3> canonical_cos_;  // per level N x M: cosine with the canonical phrases
+  std::array<at::Tensor, 3> canonical_max_;  // per level N: the highest cosine with a canonical phrase
   at::Tensor means_;                         // N x 3 float32
   Scene scene_;
   nlohmann::json model_json_, objects_json_;
   std::string gaussians_, city_mesh_;
   std::map<std::string, at::Tensor> text_cache_;
+  struct LastQuery {
+    std::string key;  // text, level and mode
+    at::Tensor scores;
+    int level = 0;
+    nlohmann::json level_max;
+  } last_;
   std::mutex mutex_;
 };
 

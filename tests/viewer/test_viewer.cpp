@@ -17,7 +17,9 @@
 #include "cli_runner.h"
 #include "core/atomic_file.h"
 #include "language/language_model.h"
+#include "features/feature_provider.h"
 #include "language/provenance.h"
+#include "query/relevance.h"
 #include "query/latent_scene.h"
 #include "scene/colmap.h"
 #include "splat/ply_gaussians.h"
@@ -212,13 +214,24 @@ TEST(ViewerServer, AnswersEqualThoseOfQuery) {
       EXPECT_NEAR(a["objects"][k]["mean_score"].get<double>(), ranking["objects"][k]["mean_score"].get<double>(), 1e-5);
     }
   }
-  // Relevancy is LangSplat's softmax against the canonical phrases: in (0, 1), and level 2 as asked.
+  // Relevancy is LangSplat's softmax against the canonical phrases (relevancy_from_cosines) of the
+  // per-Gaussian cosines, here at level 2 as asked.
   const Reply relevancy = get("/api/query?q=roof&mode=relevancy&level=2");
   ASSERT_EQ(relevancy.status, 200);
-  const json rel = json::parse(relevancy.body);
-  EXPECT_EQ(rel["level"], 2);
-  EXPECT_GT(rel["scores_range"][0].get<double>(), 0.0);
-  EXPECT_LT(rel["scores_range"][1].get<double>(), 1.0);
+  EXPECT_EQ(json::parse(relevancy.body)["level"], 2);
+  const LanguageModel m = load_language_model(s.model_dir.string());
+  const auto provider = make_feature_provider(m.info["provider"], Taxonomy::builtin());
+  std::vector<std::string> texts{"roof"};
+  for (const std::string& c : canonical_phrases()) texts.push_back(c);
+  const at::Tensor latents = m.autoencoder.encode(provider->text_features(texts));
+  const at::Tensor cos = torch::stack({gaussian_scores(m.latents[1], latents[0]), gaussian_scores(m.latents[1], latents[1]),
+                                       gaussian_scores(m.latents[1], latents[2]), gaussian_scores(m.latents[1], latents[3]),
+                                       gaussian_scores(m.latents[1], latents[4])}, 1);
+  const at::Tensor expected = relevancy_from_cosines(cos.select(1, 0), cos.slice(1, 1));
+  const Reply rel_scores = get("/api/scores?q=roof&mode=relevancy&level=2");
+  ASSERT_EQ(rel_scores.body.size(), kN * sizeof(float));
+  const float* rel = reinterpret_cast<const float*>(rel_scores.body.data());
+  for (int i = 0; i < kN; ++i) ASSERT_NEAR(rel[i], expected[i].item<float>(), 1e-5) << i;
 }
 
 TEST(ViewerServer, ServesTheModelTheGaussiansAndThePhotos) {
