@@ -12,11 +12,10 @@ import argparse
 import base64
 import io
 import os
-import shutil
 import sys
 
-SKIP = 77
-CHROMEDRIVER = "/usr/bin/chromedriver"
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from headless_chromium import require_tools, start_browser  # noqa: E402
 
 # What a complete report shows (tests/report/sample_run.h makes one): CSS selector -> minimum count.
 COMPLETE_REPORT = {
@@ -33,11 +32,6 @@ COMPLETE_REPORT = {
     "svg.chart": 5,
     "#warning": 1,
 }
-
-
-def skip(why):
-    print(f"SKIPPED: {why}")
-    sys.exit(SKIP)
 
 
 def parse_args():
@@ -60,23 +54,6 @@ def expectations(args):
             sys.exit(f"--expect {e!r}: expected SELECTOR=COUNT")
         out[selector] = int(count)
     return out
-
-
-def start_browser():
-    try:
-        from selenium import webdriver
-        from selenium.webdriver.chrome.service import Service
-    except ImportError:
-        skip("Selenium is not installed for this python (Debian: apt-get install python3-selenium)")
-    browser = shutil.which("chromium") or shutil.which("chromium-browser")
-    if not browser or not os.access(CHROMEDRIVER, os.X_OK):
-        skip("Chromium or chromedriver is not installed (Debian: apt-get install chromium chromium-driver)")
-    options = webdriver.ChromeOptions()
-    for flag in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-                 "--window-size=1400,1000", "--hide-scrollbars"):
-        options.add_argument(flag)
-    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    return webdriver.Chrome(service=Service(executable_path=CHROMEDRIVER), options=options)
 
 
 def full_page_png(driver):
@@ -110,10 +87,7 @@ def main():
     if not os.path.isfile(page):
         print(f"FAIL: {page}: no such file")
         return 1
-    try:
-        import PIL  # noqa: F401
-    except ImportError:
-        skip("PIL is not installed for this python (Debian: apt-get install python3-pil)")
+    require_tools()
     driver = start_browser()
     failures = []
     try:

@@ -23,26 +23,15 @@ import json
 import os
 import queue
 import re
-import shutil
 import subprocess
 import sys
 import threading
 import time
 
-SKIP = 77
-CHROMEDRIVER = "/usr/bin/chromedriver"
-# Headless Chromium has no GPU here: WebGL2 runs on SwiftShader through ANGLE. Without
-# --enable-unsafe-swiftshader, Chromium 156 only falls back to it with a deprecation warning
-# (later versions drop the fallback).
-CHROMIUM_FLAGS = ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--use-angle=swiftshader",
-                  "--enable-unsafe-swiftshader", "--window-size=1400,1000", "--hide-scrollbars",
-                  "--force-device-scale-factor=1")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from headless_chromium import require_tools, start_browser  # noqa: E402
+
 SERVER_URL = re.compile(r"http://127\.0\.0\.1:\d+/")
-
-
-def skip(why):
-    print(f"SKIPPED: {why}")
-    sys.exit(SKIP)
 
 
 class Failure(Exception):
@@ -127,30 +116,6 @@ def stop_server(proc):
     except subprocess.TimeoutExpired:
         proc.kill()
         proc.wait()
-
-
-def require_tools():
-    try:
-        import PIL  # noqa: F401
-    except ImportError:
-        skip("PIL is not installed for this python (Debian: apt-get install python3-pil)")
-    try:
-        import selenium  # noqa: F401
-    except ImportError:
-        skip("Selenium is not installed for this python (Debian: apt-get install python3-selenium)")
-    browser = shutil.which("chromium") or shutil.which("chromium-browser")
-    if not browser or not os.access(CHROMEDRIVER, os.X_OK):
-        skip("Chromium or chromedriver is not installed (Debian: apt-get install chromium chromium-driver)")
-
-
-def start_browser():
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
-    options = webdriver.ChromeOptions()
-    for flag in CHROMIUM_FLAGS:
-        options.add_argument(flag)
-    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    return webdriver.Chrome(service=Service(executable_path=CHROMEDRIVER), options=options)
 
 
 def wait_for(driver, what, script, timeout):
