@@ -107,7 +107,7 @@ void write_mesh_ply(const std::string& path, const SemanticMesh& mesh, const Tax
   log_info(cat("wrote ", path, ": ", mesh.vertices.size(), " vertices, ", mesh.num_triangles(), " triangles"));
 }
 
-MeshPly read_mesh_ply(const std::string& path) {
+ColouredMesh read_mesh_ply(const std::string& path) {
   const std::string bytes = read_text_file(path);
   const size_t end = bytes.find("end_header\n");
   if (bytes.rfind("ply\nformat binary_little_endian 1.0\n", 0) != 0 || end == std::string::npos)
@@ -129,7 +129,7 @@ MeshPly read_mesh_ply(const std::string& path) {
   if (vertices > (bytes.size() - body) / 12 || bytes.size() - body != vertices * 12 + faces * kFaceBytes)
     fail(path, cat("truncated or oversized: ", bytes.size() - body, " bytes of data for ", vertices, " vertices and ",
                    faces, " faces"));
-  MeshPly mesh;
+  ColouredMesh mesh;
   const char* p = bytes.data() + body;
   mesh.vertices.resize(vertices);
   for (Vec3f& v : mesh.vertices) {

@@ -22,13 +22,13 @@ void write_mesh_ply(const std::string& path, const SemanticMesh& mesh, const Tax
                     const CityTransform* transform);
 
 // What write_mesh_ply wrote, as far as a viewer needs it: vertices, triangles and face colours.
-struct MeshPly {
+struct ColouredMesh {
   std::vector<Vec3f> vertices;
   std::vector<std::array<int32_t, 3>> triangles;
   std::vector<std::array<uint8_t, 3>> colours;  // per triangle
 };
 // cls::Error naming the file when it is not a PLY of write_mesh_ply's layout, is truncated, or a
 // face indexes beyond the vertices.
-MeshPly read_mesh_ply(const std::string& path);
+ColouredMesh read_mesh_ply(const std::string& path);
 
 }  // namespace cls

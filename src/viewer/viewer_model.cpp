@@ -62,7 +62,7 @@ fs::path labels_dir_of(const json& info) {
 }
 
 std::string city_mesh_of(const fs::path& ply) {
-  const MeshPly mesh = read_mesh_ply(ply.string());
+  const ColouredMesh mesh = read_mesh_ply(ply.string());
   std::string out;
   out.reserve(mesh.triangles.size() * 3 * 6 * sizeof(float));
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {

@@ -9,6 +9,7 @@
 
 #include "citymodel/mesh_ply.h"
 #include "core/atomic_file.h"
+#include "core/error.h"
 
 using namespace cls;
 namespace fs = std::filesystem;
@@ -124,6 +125,26 @@ TEST_F(MeshPly, SceneFrameWithTransform) {
   size_t pos = 0;
   for (const auto& v : mesh.vertices)
     for (double x : v) EXPECT_FLOAT_EQ(read_le<float>(ply.body, pos), static_cast<float>(2 * x));
+  // read_mesh_ply gives back what was written: scene-frame vertices, triangles, level-1 colours.
+  const ColouredMesh back = read_mesh_ply((dir_ / "s.ply").string());
+  ASSERT_EQ(back.vertices.size(), mesh.vertices.size());
+  for (size_t i = 0; i < mesh.vertices.size(); ++i)
+    for (int d = 0; d < 3; ++d) EXPECT_FLOAT_EQ(back.vertices[i][d], static_cast<float>(2 * mesh.vertices[i][d]));
+  ASSERT_EQ(back.triangles.size(), 2u);
+  for (size_t f = 0; f < 2; ++f) {
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(back.triangles[f][k], static_cast<int32_t>(mesh.triangles[f][k]));
+    EXPECT_EQ(back.colours[f], tax.classes[mesh.tri_level_class[f][0]].color);
+  }
+  // A truncated file and one of another layout are refused with the file named.
+  const std::string bytes = read_text_file(dir_ / "s.ply");
+  write_text_atomic(dir_ / "cut.ply", bytes.substr(0, bytes.size() - 5));
+  EXPECT_THROW(read_mesh_ply((dir_ / "cut.ply").string()), Error);
+  std::string other = bytes;
+  other.replace(other.find("property int building"), 20, "property int buildinX");
+  write_text_atomic(dir_ / "other.ply", other);
+  EXPECT_THROW(read_mesh_ply((dir_ / "other.ply").string()), Error);
+  fs::remove(dir_ / "cut.ply");
+  fs::remove(dir_ / "other.ply");
   // Nothing but the output file in the directory: the temporary was renamed into place.
   size_t files = 0;
   for (const auto& entry : fs::directory_iterator(dir_)) files += entry.is_regular_file();
