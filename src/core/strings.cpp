@@ -12,4 +12,10 @@ std::vector<std::string> split_commas(const std::string& s) {
   return out;
 }
 
+std::string trim_space(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
+}
+
 }  // namespace cls

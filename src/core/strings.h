@@ -6,5 +6,7 @@ namespace cls {
 
 // The non-empty items of a comma-separated list ("a,,b," -> {"a", "b"}).
 std::vector<std::string> split_commas(const std::string& s);
+// `s` without leading and trailing spaces, tabs and line breaks.
+std::string trim_space(const std::string& s);
 
 }  // namespace cls

@@ -17,6 +17,7 @@
 #include "core/log.h"
 #include "core/npy.h"
 #include "core/progress.h"
+#include "core/strings.h"
 #include "features/feature_provider.h"
 #include "language/language_model.h"
 #include "language/provenance.h"
@@ -34,18 +35,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
-
-std::string trimmed(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
-}
-
-int parse_level(const std::string& level) {
-  if (level == "best") return 0;
-  if (level == "1" || level == "2" || level == "3") return level[0] - '0';
-  throw UsageError("query: --level must be 1, 2, 3 or best, got '" + level + "'");
-}
 
 c10::Device parse_device(const std::string& name) {
   try {
@@ -115,10 +104,10 @@ json run_query(const QueryOptions& o) {
   if (o.texts.empty()) throw UsageError("query: give at least one query text");
   std::vector<std::string> texts;
   for (const auto& t : o.texts) {
-    if (trimmed(t).empty()) throw UsageError("query: a query text is empty");
-    texts.push_back(trimmed(t));
+    if (trim_space(t).empty()) throw UsageError("query: a query text is empty");
+    texts.push_back(trim_space(t));
   }
-  const int fixed_level = parse_level(o.level);
+  const int fixed_level = parse_query_level(o.level, "query: --level");
   if (o.use_top_k && o.top_k < 0) throw UsageError("query: --top-k must not be negative");
   if (!fs::is_directory(o.model_dir)) fail(o.model_dir, "not a directory (expected a language model: model.json, point_cloud.ply, latents.safetensors, autoencoder.safetensors)");
 

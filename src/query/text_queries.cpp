@@ -23,18 +23,36 @@ Taxonomy model_taxonomy(const json& info, const std::string& model_json, const s
   return Taxonomy::builtin();
 }
 
-std::string recorded_scene(const json& info) {
-  if (info.contains("scene") && info["scene"].is_string()) return info["scene"].get<std::string>();
+namespace {
+
+// A string of the features stage's features.json (model.json "features" names its directory), "" if
+// the model records no features directory, the file is gone or the key is absent.
+std::string features_json_string(const json& info, const char* key) {
   if (!info.contains("features") || !info["features"].is_string()) return "";
   const fs::path features_json = fs::path(info["features"].get<std::string>()) / "features.json";
   if (!fs::exists(features_json)) return "";
   try {
     const json fj = json::parse(read_text_file(features_json));
-    if (fj.contains("scene") && fj["scene"].is_string()) return fj["scene"].get<std::string>();
+    if (fj.contains(key) && fj[key].is_string()) return fj[key].get<std::string>();
   } catch (const json::exception& e) {
     fail(features_json.string(), std::string("not valid JSON: ") + e.what());
   }
   return "";
+}
+
+}  // namespace
+
+std::string recorded_scene(const json& info) {
+  if (info.contains("scene") && info["scene"].is_string()) return info["scene"].get<std::string>();
+  return features_json_string(info, "scene");
+}
+
+std::string recorded_labels_dir(const json& info) { return features_json_string(info, "labels_dir"); }
+
+int parse_query_level(const std::string& level, const std::string& what) {
+  if (level == "best") return 0;
+  if (level == "1" || level == "2" || level == "3") return level[0] - '0';
+  throw UsageError(what + " must be 1, 2, 3 or best, got '" + level + "'");
 }
 
 std::unique_ptr<FeatureProvider> model_provider(const LanguageModel& model, const std::string& model_json,

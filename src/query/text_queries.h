@@ -21,6 +21,12 @@ Taxonomy model_taxonomy(const nlohmann::json& info, const std::string& model_jso
 // The scene directory recorded with the model: model.json "scene", else the features stage's
 // features.json "scene" (model.json "features" names that directory); "" if neither.
 std::string recorded_scene(const nlohmann::json& info);
+// The label maps the model's features were made from (features.json "labels_dir"); "" if unknown.
+std::string recorded_labels_dir(const nlohmann::json& info);
+
+// A query's level: "1", "2", "3", or "best" (0: LangSplat's choice, score_levels). cls::UsageError
+// "<what> must be 1, 2, 3 or best" otherwise.
+int parse_query_level(const std::string& level, const std::string& what);
 
 // The model's own feature provider (model.json "provider"), checked against the autoencoder's input
 // size. cls::Error naming `model_json` when the spec is missing or the sizes differ.

@@ -10,11 +10,12 @@ namespace cls {
 constexpr int kMaxShDegree = 3;
 constexpr int kMaxShCoeffs = 16;
 CLS_HD constexpr int sh_coeff_count(int degree) { return (degree + 1) * (degree + 1); }
+constexpr double kShC0 = 0.28209479177387814;  // Y_0^0: colour = 0.5 + kShC0 * DC (3DGS RGB2SH / SH2RGB)
 
 // Basis values b_k(x, y, z) for k < (degree+1)^2 of a unit direction.
 template <class T>
 CLS_HD void sh_basis(int degree, T x, T y, T z, T* b) {
-  const T C0 = T(0.28209479177387814), C1 = T(0.4886025119029199);
+  const T C0 = T(kShC0), C1 = T(0.4886025119029199);
   b[0] = C0;
   if (degree < 1) return;
   b[1] = -C1 * y;

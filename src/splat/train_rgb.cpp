@@ -26,6 +26,7 @@
 #include "splat/model_layout.h"
 #include "splat/ply_gaussians.h"
 #include "splat/rasterize.h"
+#include "splat/sh.h"
 #include "splat/ssim.h"
 
 namespace cls {
@@ -33,7 +34,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kShC0 = 0.28209479177387814;  // Y_0^0, 3DGS RGB2SH
 constexpr int kCheckpointVersion = 1;
 
 struct View {

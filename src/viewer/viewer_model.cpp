@@ -10,11 +10,13 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "core/strings.h"
 #include "language/provenance.h"
 #include "query/object_ranking.h"
 #include "query/relevance.h"
 #include "query/text_queries.h"
 #include "scene/view_selection.h"
+#include "splat/sh.h"
 
 namespace cls {
 namespace fs = std::filesystem;
@@ -36,7 +38,7 @@ std::string gaussians_of(const GaussianModel& g) {
   const at::Tensor quats = (g.quats / g.quats.norm(2, {1}, true).clamp_min(1e-12)).to(at::kFloat).contiguous();
   const at::Tensor opacity = g.opacities().to(at::kFloat).contiguous();
   // The SH band 0 colour, as 3DGS shows a Gaussian from no particular direction.
-  const at::Tensor rgb = (0.5 + 0.28209479177387814 * g.sh_dc.reshape({n, 3})).clamp(0, 1).to(at::kFloat).contiguous();
+  const at::Tensor rgb = (0.5 + kShC0 * g.sh_dc.reshape({n, 3})).clamp(0, 1).to(at::kFloat).contiguous();
   const float *m = means.data_ptr<float>(), *s = scales.data_ptr<float>(), *q = quats.data_ptr<float>(),
               *o = opacity.data_ptr<float>(), *c = rgb.data_ptr<float>();
   std::string out;
@@ -45,20 +47,6 @@ std::string gaussians_of(const GaussianModel& g) {
     append_floats(out, {m[3 * i], m[3 * i + 1], m[3 * i + 2], s[3 * i], s[3 * i + 1], s[3 * i + 2], q[4 * i],
                         q[4 * i + 1], q[4 * i + 2], q[4 * i + 3], o[i], c[3 * i], c[3 * i + 1], c[3 * i + 2]});
   return out;
-}
-
-// The label maps the model's features came from (features.json "labels_dir"), "" if unknown.
-fs::path labels_dir_of(const json& info) {
-  if (!info.contains("features") || !info["features"].is_string()) return {};
-  const fs::path features_json = fs::path(info["features"].get<std::string>()) / "features.json";
-  if (!fs::exists(features_json)) return {};
-  try {
-    const json fj = json::parse(read_text_file(features_json));
-    return fj.contains("labels_dir") && fj["labels_dir"].is_string() ? fs::path(fj["labels_dir"].get<std::string>())
-                                                                       : fs::path();
-  } catch (const json::exception& e) {
-    fail(features_json.string(), std::string("not valid JSON: ") + e.what());
-  }
 }
 
 std::string city_mesh_of(const fs::path& ply) {
@@ -93,12 +81,6 @@ json view_json(const SceneView& v, size_t index, bool test) {
 // Rows of unit length; a zero row stays zero (gaussian_scores gives such a Gaussian score 0).
 at::Tensor normalised_rows(const at::Tensor& x) {
   return (x.to(at::kFloat) / x.to(at::kFloat).norm(2, {-1}, true).clamp_min(1e-30)).contiguous();
-}
-
-int parse_level(const std::string& level) {
-  if (level == "best") return 0;
-  if (level == "1" || level == "2" || level == "3") return level[0] - '0';
-  throw UsageError("level must be best, 1, 2 or 3, got '" + level + "'");
 }
 
 }  // namespace
@@ -154,7 +136,7 @@ ViewerModel::ViewerModel(const fs::path& model_dir, const std::string& scene_dir
     log_warn("view: the model's scene " + (scene_path.empty() ? std::string("is not recorded") : scene_path + " is missing") +
              ": no cameras or photos (pass --scene DIR)");
   }
-  const fs::path labels = labels_dir_of(model_.info);
+  const fs::path labels = recorded_labels_dir(model_.info);
   if (!labels.empty() && fs::exists(labels / "city_mesh.ply")) city_mesh_ = city_mesh_of(labels / "city_mesh.ply");
 
   objects_json_ = {{"objects", json::array()}};
@@ -218,12 +200,10 @@ at::Tensor ViewerModel::text_latent(const std::string& text) {
 }
 
 ViewerAnswer ViewerModel::answer(const ViewerQuery& query) {
-  std::string text = query.text;
-  text.erase(0, text.find_first_not_of(" \t\r\n"));
-  text.erase(text.find_last_not_of(" \t\r\n") + 1);
+  const std::string text = trim_space(query.text);
   if (text.empty()) throw UsageError("the query text is empty");
   if (text.size() > kMaxQueryChars) throw UsageError(cat("the query text has more than ", kMaxQueryChars, " characters"));
-  const int fixed = parse_level(query.level);
+  const int fixed = parse_query_level(query.level, "level");
   if (query.mode != "cosine" && query.mode != "relevancy")
     throw UsageError("mode must be cosine or relevancy, got '" + query.mode + "'");
   if (!std::isfinite(query.threshold)) throw UsageError("threshold must be a number");
