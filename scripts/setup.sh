@@ -2,9 +2,20 @@
 # One-command set-up on a fresh Debian 12 machine: installs the Debian packages the project needs
 # (idempotent), configures and builds into build/, installs the viewer page's npm packages
 # (scripts/install_web.sh) and generates the bundled example scene.
-#   bash scripts/setup.sh [--no-example]
+#   bash scripts/setup.sh [--no-example] [--slurm]
+# --slurm also installs Slurm and MUNGE for the tests that run a private cluster
+# (tests/tiles/slurm_cluster.sh); without them those tests are skipped.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
+EXAMPLE=1; SLURM=0
+for arg in "$@"; do
+  case $arg in
+    --no-example) EXAMPLE=0 ;;
+    --slurm) SLURM=1 ;;
+    *) echo "usage: $0 [--no-example] [--slurm]" >&2; exit 2 ;;
+  esac
+done
 
 PACKAGES=(build-essential cmake ninja-build pkg-config
           libembree-dev libpugixml-dev nlohmann-json3-dev libopencv-dev libglu1-mesa-dev
@@ -13,6 +24,7 @@ PACKAGES=(build-essential cmake ninja-build pkg-config
           chromium chromium-driver python3-selenium python3-pil)  # the browser tests (report, viewer)
 # npm installs the viewer page's packages (three, Spark); Debian's when no npm is on the PATH.
 command -v npm >/dev/null 2>&1 || PACKAGES+=(npm)
+[ "$SLURM" = 0 ] || PACKAGES+=(slurm-wlm munge)
 
 missing=()
 for p in "${PACKAGES[@]}"; do
@@ -29,6 +41,6 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build build --parallel "$(nproc)"
 bash scripts/install_web.sh
 
-if [ "${1:-}" != "--no-example" ]; then
+if [ "$EXAMPLE" = 1 ]; then
   bash scripts/make_example.sh
 fi

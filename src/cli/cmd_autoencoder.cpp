@@ -71,7 +71,7 @@ int cmd_autoencoder(int argc, char** argv) {
   if (!args.has("out")) throw UsageError("autoencoder: --out is required (see --help)");
 
   AutoencoderStageOptions o;
-  o.features_dir = args.get("features");
+  o.features_dirs = {args.get("features")};
   o.out = args.get("out");
   o.config.encoder_dims = parse_dims("encoder-dims", args.get("encoder-dims"));
   o.config.decoder_dims = parse_dims("decoder-dims", args.get("decoder-dims"));

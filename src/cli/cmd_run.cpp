@@ -49,6 +49,9 @@ int cmd_run(int argc, char** argv) {
       .option("autoencoder-epochs", "", "autoencoder epochs (default: real 100; tiny 5; synthetic 40)")
       .option("lambda-sam", "1.0", "weight of the SAM term in covered pixels")
       .option("lambda-citygml", "0.5", "weight of the CityGML term")
+      .option("autoencoder", "",
+              "use this autoencoder (e.g. the one shared by all tiles, docs/scale.md) instead of training one")
+      .option("stop-after", "", "features: stop after the features stage (tiles train a shared autoencoder next)")
       .flag("no-baseline", "do not train the LangSplat baseline");
   if (!args.parse(argc, argv)) return kExitOk;
 
@@ -80,6 +83,10 @@ int cmd_run(int argc, char** argv) {
   c.lambda_sam = args.get_double("lambda-sam");
   c.lambda_citygml = args.get_double("lambda-citygml");
   c.baseline = !args.flag_set("no-baseline");
+  c.autoencoder = args.get("autoencoder");
+  if (args.has("stop-after") && args.get("stop-after") != "features")
+    throw UsageError("run: --stop-after takes only 'features', got '" + args.get("stop-after") + "'");
+  c.stop_after_features = args.has("stop-after");
 
   const PipelineResult r = run_pipeline(c);
   if (r.outcome == PipelineOutcome::MissingWeights)

@@ -41,6 +41,7 @@ int cmd_synth(int argc, char** argv) {
       .option("points-per-view", std::to_string(defaults.samples_per_view), "sparse point samples per view")
       .option("point-noise", "0.01", "standard deviation of the sparse points' noise (scene units)")
       .option("gt-density", "400", "ground-truth cloud samples per square unit on the city model (1/8 of it on terrain and clutter)")
+      .flag("per-building", "a district: split the views over the buildings, each share circling its own building")
       .flag("overwrite", "replace an existing synth output in --out")
       .flag("skip-if-same", "do nothing if --out holds a scene generated with the same settings and inputs");
   if (!args.parse(argc, argv)) return 0;
@@ -60,6 +61,7 @@ int cmd_synth(int argc, char** argv) {
   job.settings.samples_per_view = args.get_int("points-per-view");
   job.settings.point_noise = args.get_double("point-noise");
   job.settings.gt_density = args.get_double("gt-density");
+  job.settings.per_building = args.flag_set("per-building");
   job.overwrite = args.flag_set("overwrite");
   job.skip_if_same = args.flag_set("skip-if-same");
   synth::run_synth_job(job);

@@ -1,6 +1,7 @@
 #include "language/autoencoder_stage.h"
 
 #include <ATen/ATen.h>
+#include <ATen/CPUGeneratorImpl.h>
 
 #include <algorithm>
 #include <cmath>
@@ -62,13 +63,25 @@ at::Tensor read_sam_features(const std::vector<fs::path>& files, int input_dim) 
 }
 
 AutoencoderReport run_autoencoder_stage(const AutoencoderStageOptions& o) {
-  const std::vector<fs::path> files = find_sam_feature_files(o.features_dir);
-  if (files.empty())
-    fail(o.features_dir.string(),
-         "no SAM feature files (*_f.npy; *_gml_f.npy are not used for training): run the features stage first");
-  const at::Tensor features = read_sam_features(files, o.config.input_dim);
-  if (features.size(0) == 0) fail(o.features_dir.string(), "the SAM feature files hold no rows");
-  log_info(cat("autoencoder: ", features.size(0), " SAM features from ", files.size(), " files, ",
+  if (o.features_dirs.empty()) throw UsageError("autoencoder: no features directory given");
+  const std::string where = o.features_dirs.front().string();
+  std::vector<fs::path> files;
+  for (const fs::path& dir : o.features_dirs) {
+    const std::vector<fs::path> found = find_sam_feature_files(dir);
+    if (found.empty())
+      fail(dir.string(),
+           "no SAM feature files (*_f.npy; *_gml_f.npy are not used for training): run the features stage first");
+    files.insert(files.end(), found.begin(), found.end());
+  }
+  at::Tensor features = read_sam_features(files, o.config.input_dim);
+  const int64_t rows_read = features.size(0);
+  if (rows_read == 0) fail(where, "the SAM feature files hold no rows");
+  if (o.max_samples > 0 && rows_read > o.max_samples) {
+    at::Generator gen = at::detail::createCPUGenerator(o.train.seed);
+    const at::Tensor rows = at::randperm(rows_read, gen, at::TensorOptions().dtype(at::kLong));
+    features = features.index_select(0, rows.slice(0, 0, o.max_samples)).contiguous();
+  }
+  log_info(cat("autoencoder: ", features.size(0), " of ", rows_read, " SAM features from ", files.size(), " files, ",
                o.config.input_dim, " -> ", o.config.latent_dim()));
 
   Autoencoder ae(o.config, o.train.seed);
@@ -95,6 +108,7 @@ AutoencoderReport run_autoencoder_stage(const AutoencoderStageOptions& o) {
   const auto finite_or_null = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
   const nlohmann::json j = {
       {"samples", features.size(0)},
+      {"rows_read", rows_read},
       {"train_samples", report.train_samples},
       {"holdout_samples", report.holdout_samples},
       {"files", files.size()},

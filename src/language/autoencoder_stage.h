@@ -21,14 +21,17 @@ std::vector<std::filesystem::path> find_sam_feature_files(const std::filesystem:
 at::Tensor read_sam_features(const std::vector<std::filesystem::path>& files, int input_dim);
 
 struct AutoencoderStageOptions {
-  std::filesystem::path features_dir;
+  // One features directory, or one per tile (a shared autoencoder: docs/scale.md).
+  std::vector<std::filesystem::path> features_dirs;
+  // Train on at most this many rows, drawn at random (train.seed) from all of them; 0 = every row.
+  int64_t max_samples = 0;
   std::filesystem::path out;  // the model (safetensors); the report goes to <out>.json
   AutoencoderConfig config;
   AutoencoderTrainOptions train;  // train.seed also seeds the initialisation
 };
 
-// Reads, trains (progress per epoch), writes `out` atomically and then `out`.json:
-// {"samples", "train_samples", "holdout_samples", "files", "train_loss", "holdout_cosine" (null when
+// Reads every directory, keeps max_samples rows, trains (progress per epoch), writes `out` atomically and then `out`.json:
+// {"samples", "rows_read", "train_samples", "holdout_samples", "files", "train_loss", "holdout_cosine" (null when
 // nothing was held out), "seconds", "epochs", "batch_size", "lr", "lambda_cos", "holdout_fraction",
 // "seed", "config"}. cls::Error when there are no feature files or no feature rows.
 AutoencoderReport run_autoencoder_stage(const AutoencoderStageOptions& options);

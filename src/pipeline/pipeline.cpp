@@ -157,21 +157,30 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
   if (stopped_in("features", features)) return finish();
   const std::string features_fp = features_fingerprint(features_dir);
 
-  // The shared autoencoder (3.2), trained on the SAM features only.
-  const fs::path ae_path = out / "autoencoder.safetensors";
-  record.add("autoencoder",
-             run_stage({"autoencoder", out / "autoencoder.stage.json", {ae_path},
-                        hex64(fnv1a64(cat(features_fp, "|", source.autoencoder_epochs))), {{"file", ae_path.string()}},
-                        [&] {
-                          AutoencoderStageOptions o;
-                          o.features_dir = features_dir;
-                          o.out = ae_path;
-                          o.train.epochs = source.autoencoder_epochs;
-                          const AutoencoderReport r = run_autoencoder_stage(o);
-                          log_info(cat("run: autoencoder: ", r.train_samples, " SAM features, held-out cosine ",
-                                       r.holdout_cosine));
-                          return done({{"file", ae_path.string()}, {"holdout_cosine", r.holdout_cosine}});
-                        }}));
+  if (c.stop_after_features) {
+    log_info("run: stopped after the features (--stop-after features)");
+    return finish();
+  }
+
+  // The shared autoencoder (3.2), trained on the SAM features only; or the one shared by all tiles.
+  const fs::path ae_path = c.autoencoder.empty() ? out / "autoencoder.safetensors" : fs::path(c.autoencoder);
+  if (!c.autoencoder.empty()) {
+    record.add("autoencoder", {"shared", 0, {{"file", ae_path.string()}}});
+  } else {
+    record.add("autoencoder",
+               run_stage({"autoencoder", out / "autoencoder.stage.json", {ae_path},
+                          hex64(fnv1a64(cat(features_fp, "|", source.autoencoder_epochs))), {{"file", ae_path.string()}},
+                          [&] {
+                            AutoencoderStageOptions o;
+                            o.features_dirs = {features_dir};
+                            o.out = ae_path;
+                            o.train.epochs = source.autoencoder_epochs;
+                            const AutoencoderReport r = run_autoencoder_stage(o);
+                            log_info(cat("run: autoencoder: ", r.train_samples, " SAM features, held-out cosine ",
+                                         r.holdout_cosine));
+                            return done({{"file", ae_path.string()}, {"holdout_cosine", r.holdout_cosine}});
+                          }}));
+  }
   if (stopped_by_signal("autoencoder")) return finish();
 
   // The photometric model (or an imported 3DGS PLY).

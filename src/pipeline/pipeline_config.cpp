@@ -35,6 +35,8 @@ void PipelineConfig::validate() const {
   if (city.empty())
     throw UsageError("run: no city model: give --city, or a scene.json / --config with \"city_model\"");
   if (!rgb_model.empty() && !fs::exists(rgb_model)) fail(rgb_model, "--rgb-model: file not found");
+  if (!autoencoder.empty() && !stop_after_features && !fs::exists(autoencoder))
+    fail(autoencoder, "--autoencoder: file not found");
 }
 
 nlohmann::json PipelineConfig::to_json() const {
@@ -57,7 +59,9 @@ nlohmann::json PipelineConfig::to_json() const {
           {"autoencoder_epochs", autoencoder_epochs},
           {"lambda_sam", lambda_sam},
           {"lambda_citygml", lambda_citygml},
-          {"baseline", baseline}};
+          {"baseline", baseline},
+          {"autoencoder", autoencoder},
+          {"stop_after_features", stop_after_features}};
 }
 
 void read_scene_config(const fs::path& file, PipelineConfig& config) {

@@ -33,6 +33,10 @@ struct PipelineConfig {
   int rgb_iterations = 0, language_iterations = 0, autoencoder_epochs = 0;
   double lambda_sam = 1.0, lambda_citygml = 0.5;
   bool baseline = true;                    // also train the LangSplat baseline
+  // Tiles (docs/scale.md): a shared autoencoder trained on the features of every tile replaces this
+  // scene's own, and a run may stop after the features, which the shared autoencoder needs first.
+  std::string autoencoder;                 // "" = train one on this scene's SAM features
+  bool stop_after_features = false;
 
   // Checks ranges and names (cls::UsageError saying which option is wrong).
   void validate() const;

@@ -56,6 +56,7 @@ std::string synth_scene_json(const SynthJob& job, const SemanticMesh& mesh, cons
       {"gt_density", s.gt_density},
       {"gt_context_density", s.gt_density / 8},
   };
+  if (s.per_building) generator["rig"] = "per-building";  // absent: the orbit rig (older scene.json stay equal)
   nlohmann::ordered_json scene = {
       {"city_model", "city/" + city_file},
       {"city_transform", "city/transform.json"},

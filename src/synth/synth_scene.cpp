@@ -1,5 +1,6 @@
 #include "synth/synth_scene.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "core/atomic_file.h"
@@ -23,11 +24,28 @@ std::string settings_problem(const SynthSettings& s) {
   return "";
 }
 
+namespace {
+// The box of each building's triangles (level-3 entities), in mesh.buildings order.
+std::vector<Box3d> building_bounds(const SemanticMesh& mesh) {
+  std::vector<Box3d> boxes(mesh.buildings.size());
+  std::vector<int> slot(mesh.entities.size(), -1);
+  for (size_t b = 0; b < mesh.buildings.size(); ++b) slot[mesh.buildings[b]] = static_cast<int>(b);
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const int e = mesh.tri_entity[t][2];
+    if (e < 0 || slot[e] < 0) continue;
+    for (uint32_t v : mesh.triangles[t]) boxes[slot[e]].extend({mesh.vertices[v][0], mesh.vertices[v][1], mesh.vertices[v][2]});
+  }
+  boxes.erase(std::remove_if(boxes.begin(), boxes.end(), [](const Box3d& b) { return b.empty(); }), boxes.end());
+  return boxes;
+}
+}  // namespace
+
 SynthScene render_synth_scene(const SemanticMesh& mesh, const Taxonomy& taxonomy, const SynthSettings& settings) {
   SynthScene scene;
   scene.geometry = build_synth_geometry(mesh, taxonomy, settings.seed);
-  scene.views = make_uav_views(scene.geometry.city_bounds,
-                               {settings.views, settings.width, settings.height, settings.hfov_deg, settings.seed});
+  const CameraRigOptions rig{settings.views, settings.width, settings.height, settings.hfov_deg, settings.seed};
+  scene.views = settings.per_building ? make_building_views(building_bounds(mesh), rig)
+                                      : make_uav_views(scene.geometry.city_bounds, rig);
   const SurfaceShader shader(scene.geometry, mesh, settings.seed);
   const ViewRenderer renderer(scene.geometry, mesh, shader);
   {

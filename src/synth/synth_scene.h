@@ -22,6 +22,7 @@ struct SynthSettings {
   int samples_per_view = 300;  // sparse point samples per view
   double point_noise = 0.01;   // sparse point noise (scene units)
   double gt_density = 400;     // GT cloud samples per m² on the city model; terrain/clutter get 1/8
+  bool per_building = false;   // views around each building in turn (a district) instead of around all
 };
 
 // What is wrong with the settings ("" if nothing): sizes, counts and ranges.

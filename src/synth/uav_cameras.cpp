@@ -60,4 +60,22 @@ std::vector<SynthView> make_uav_views(const Box3d& city, const CameraRigOptions&
   return views;
 }
 
+std::vector<SynthView> make_building_views(const std::vector<Box3d>& buildings, const CameraRigOptions& options) {
+  const int n = static_cast<int>(buildings.size());
+  std::vector<SynthView> views;
+  for (int b = 0; b < n; ++b) {
+    CameraRigOptions own = options;
+    own.views = options.views / n + (b < options.views % n ? 1 : 0);
+    own.seed = options.seed + 7919 * static_cast<uint64_t>(b);  // distinct azimuths and jitter per building
+    if (own.views == 0) continue;
+    for (SynthView& v : make_uav_views(buildings[b], own)) {
+      char name[32];
+      std::snprintf(name, sizeof name, "%04d.png", static_cast<int>(views.size()));
+      v.name = name;
+      views.push_back(std::move(v));
+    }
+  }
+  return views;
+}
+
 }  // namespace cls::synth

@@ -35,4 +35,9 @@ PinholeCamera pinhole_from_fov(int width, int height, double hfov_deg);
 // bounding sphere fills most of the frame.
 std::vector<SynthView> make_uav_views(const Box3d& city, const CameraRigOptions& options);
 
+// A district: the views split evenly over the buildings (the first `views % buildings` get one more),
+// each share on make_uav_views' rings around its own building, named in order over all buildings.
+// Neighbours appear behind each building, as in a UAV survey flown building by building.
+std::vector<SynthView> make_building_views(const std::vector<Box3d>& buildings, const CameraRigOptions& options);
+
 }  // namespace cls::synth

@@ -97,6 +97,34 @@ TEST(UavCameras, IntrinsicsPitchAndAim) {
   EXPECT_EQ(*names.rbegin(), "0023.png");
 }
 
+TEST(UavCameras, PerBuildingRigSplitsViewsAndAimsAtEachBuilding) {
+  // Three 6 x 8 m houses 10 m apart; 11 views: 4, 4 and 3, each share centred on its own house.
+  std::vector<Box3d> houses(3);
+  for (int b = 0; b < 3; ++b) {
+    houses[b].extend({10.0 * b, 0, 0});
+    houses[b].extend({10.0 * b + 6, 8, 10});
+  }
+  const auto views = make_building_views(houses, {11, 320, 240, 60, 5});
+  ASSERT_EQ(views.size(), 11u);
+  const int first[] = {0, 4, 8, 11};
+  std::set<std::string> names;
+  for (int b = 0; b < 3; ++b)
+    for (int i = first[b]; i < first[b + 1]; ++i) {
+      const SynthView& v = views[i];
+      names.insert(v.name);
+      // Its own house projects near the image centre, nearer than either neighbour's centre.
+      auto offset = [&](const Box3d& box) {
+        const Vec3d c = v.pose.R * box.center() + v.pose.t;
+        return c.z > 0 ? std::hypot(v.camera.fx * c.x / c.z, v.camera.fy * c.y / c.z) : 1e9;
+      };
+      EXPECT_LT(offset(houses[b]), 0.3 * 320) << v.name;
+      for (int other = 0; other < 3; ++other)
+        if (other != b) EXPECT_LT(offset(houses[b]), offset(houses[other])) << v.name;
+    }
+  EXPECT_EQ(names.size(), 11u);
+  EXPECT_EQ(views.back().name, "0010.png");
+}
+
 TEST(SynthSettingsTest, RejectsBadValues) {
   EXPECT_EQ(settings_problem(SynthSettings{}), "");
   SynthSettings s;

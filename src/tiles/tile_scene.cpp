@@ -1,0 +1,168 @@
+#include "tiles/tile_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "core/progress.h"
+#include "raycast/label_maps.h"
+#include "raycast/raycaster.h"
+#include "scene/colmap.h"
+
+namespace cls {
+namespace fs = std::filesystem;
+
+std::vector<BuildingFootprint> building_footprints(const SceneCityModel& city) {
+  const SemanticMesh& mesh = city.mesh;
+  std::vector<BuildingFootprint> out(mesh.buildings.size());
+  std::vector<int> slot(mesh.entities.size(), -1);
+  for (size_t b = 0; b < mesh.buildings.size(); ++b) {
+    slot[mesh.buildings[b]] = static_cast<int>(b);
+    out[b] = {mesh.entities[mesh.buildings[b]].source_id, TileCell::kInf, TileCell::kInf, -TileCell::kInf,
+              -TileCell::kInf};
+  }
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const int e = mesh.tri_entity[t][2];
+    if (e < 0 || slot[e] < 0) continue;
+    BuildingFootprint& f = out[slot[e]];
+    for (uint32_t v : mesh.triangles[t]) {
+      const Vec3f p = city.vertices[v];
+      f.x0 = std::min(f.x0, double(p.x)), f.y0 = std::min(f.y0, double(p.y));
+      f.x1 = std::max(f.x1, double(p.x)), f.y1 = std::max(f.y1, double(p.y));
+    }
+  }
+  return out;
+}
+
+BuildingPixels building_pixels(const Scene& scene, const SceneCityModel& city, int downscale) {
+  const LabelTable labels(city.mesh);
+  const Raycaster raycaster(city.vertices, city.mesh.triangles, opening_priority(city.mesh));
+  BuildingPixels pixels(scene.views.size(), std::vector<int64_t>(city.mesh.buildings.size(), 0));
+  Progress progress("tile: visibility", scene.views.size(), "views");
+  std::vector<RayHit> hits;
+  LabelMaps maps;
+  for (size_t v = 0; v < scene.views.size(); ++v) {
+    PinholeCamera cam = scene.views[v].camera;
+    const double s = 1.0 / downscale;
+    cam.fx *= s, cam.fy *= s, cam.cx *= s, cam.cy *= s;
+    cam.width = std::max(1, cam.width / downscale), cam.height = std::max(1, cam.height / downscale);
+    raycaster.cast_view(cam, scene.views[v].pose, hits);
+    labels.fill(hits, cam.width, cam.height, maps);
+    for (uint16_t b : maps.building)
+      if (b > 0) ++pixels[v][b - 1];
+    progress.advance();
+  }
+  return pixels;
+}
+
+TilePlan make_tile_plan(const Scene& scene, const SceneCityModel& city, const TileOptions& o,
+                        const std::string& city_path, const std::string& transform_path,
+                        const std::string& taxonomy_path, int lod) {
+  const std::vector<BuildingFootprint> footprints = building_footprints(city);
+  if (footprints.empty()) fail(city_path, "the city model has no buildings to tile");
+  const BuildingPixels pixels = building_pixels(scene, city, o.raycast_downscale);
+  const std::vector<PlannedTile> planned = partition_buildings(footprints, pixels, o.max_images, o.min_share);
+
+  auto absolute = [](const std::string& p) { return p.empty() ? p : fs::absolute(p).lexically_normal().string(); };
+  TilePlan plan;
+  plan.scene = fs::absolute(scene.root).lexically_normal();
+  plan.city_model = absolute(city_path);
+  plan.city_transform = absolute(transform_path);
+  plan.taxonomy = absolute(taxonomy_path);
+  plan.lod = lod;
+  plan.max_images = o.max_images;
+  plan.overlap = o.overlap;
+  plan.min_share = o.min_share;
+  for (size_t i = 0; i < planned.size(); ++i) {
+    const PlannedTile& p = planned[i];
+    Tile t;
+    char name[32];
+    std::snprintf(name, sizeof name, "tile_%03zu", i);
+    t.name = name;
+    t.cell = p.cell;
+    t.bounds = {TileCell::kInf, TileCell::kInf, -TileCell::kInf, -TileCell::kInf};
+    for (int b : p.buildings) {
+      const BuildingFootprint& f = footprints[b];
+      t.buildings.push_back(f.id);
+      t.bounds = {std::min(t.bounds[0], f.x0 - o.overlap), std::min(t.bounds[1], f.y0 - o.overlap),
+                  std::max(t.bounds[2], f.x1 + o.overlap), std::max(t.bounds[3], f.y1 + o.overlap)};
+    }
+    for (int v : p.views) t.images.push_back(scene.views[v].name);
+    if (t.images.empty()) {
+      log_warn("tile: " + t.name + " (" + t.buildings.front() + "...): no view sees its buildings; left out");
+      continue;
+    }
+    if (static_cast<int>(t.images.size()) > o.max_images)
+      log_warn(cat("tile: ", t.name, " has ", t.images.size(), " images (> --max-images ", o.max_images,
+                   "): a single building seen by that many views is not split"));
+    plan.tiles.push_back(std::move(t));
+  }
+  return plan;
+}
+
+namespace {
+
+// The district's COLMAP model cut to one tile: its images (and their cameras), the points whose
+// x, y lie in its bounds, tracks and 2D observations pointing only at what is kept.
+ColmapModel tile_colmap(const ColmapModel& all, const Tile& tile) {
+  const std::set<std::string> names(tile.images.begin(), tile.images.end());
+  ColmapModel m;
+  for (const auto& [id, image] : all.images)
+    if (names.count(image.name)) {
+      m.images[id] = image;
+      m.cameras[image.camera_id] = all.cameras.at(image.camera_id);
+    }
+  for (const auto& [id, point] : all.points) {
+    const double x = point.xyz[0], y = point.xyz[1];
+    if (x < tile.bounds[0] || x > tile.bounds[2] || y < tile.bounds[1] || y > tile.bounds[3]) continue;
+    ColmapPoint3D p = point;
+    p.track.erase(std::remove_if(p.track.begin(), p.track.end(), [&](const auto& obs) { return !m.images.count(obs.first); }), p.track.end());
+    if (!p.track.empty()) m.points[id] = std::move(p);
+  }
+  for (auto& [id, image] : m.images)
+    for (ColmapPoint2D& p2 : image.points2d)
+      if (p2.point3d_id != ColmapPoint2D{}.point3d_id && !m.points.count(p2.point3d_id)) p2.point3d_id = ColmapPoint2D{}.point3d_id;
+  return m;
+}
+
+}  // namespace
+
+void write_tiles(const TilePlan& plan, const fs::path& tiles_dir) {
+  const std::string model_dir = find_colmap_model(plan.scene.string());
+  if (model_dir.empty())
+    fail(plan.scene.string(), "tile needs a COLMAP model (sparse/0): convert a Pix4D scene with `citylangsplat scene "
+                              "convert` first");
+  const ColmapModel all = read_colmap(model_dir);
+  std::map<std::string, std::string> image_paths;  // name -> absolute source file
+  for (const auto& [id, image] : all.images) image_paths[image.name] = fs::absolute(plan.scene / "images" / image.name).string();
+
+  fs::create_directories(tiles_dir);
+  for (const Tile& tile : plan.tiles) {
+    const fs::path dir = tiles_dir / tile.name;
+    for (const std::string& name : tile.images) {
+      const fs::path link = dir / "images" / name;
+      fs::create_directories(link.parent_path());
+      if (fs::is_symlink(link) || fs::exists(link)) fs::remove(link);
+      fs::create_symlink(image_paths.at(name), link);
+    }
+    const fs::path sparse = dir / "sparse" / "0";
+    fs::create_directories(sparse);
+    write_colmap_binary(sparse.string(), tile_colmap(all, tile));
+    nlohmann::json scene = {{"city_model", plan.city_model}, {"lod", plan.lod}};
+    if (!plan.city_transform.empty()) scene["city_transform"] = plan.city_transform;
+    if (!plan.taxonomy.empty()) scene["taxonomy"] = plan.taxonomy;
+    scene["tile"] = {{"name", tile.name}, {"buildings", tile.buildings}, {"bounds", tile.bounds},
+                     {"district", plan.scene.string()}};
+    write_text_atomic(dir / "scene.json", scene.dump(2) + "\n");
+    log_info(cat("tile: ", tile.name, ": ", tile.buildings.size(), " buildings, ", tile.images.size(), " images"));
+  }
+  write_tile_plan(tiles_dir / "tiles.json", plan);
+}
+
+}  // namespace cls

@@ -1,0 +1,159 @@
+#include "tiles/tile_tasks.h"
+
+#include <chrono>
+#include <unistd.h>
+
+#include "citymodel/city_model.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/exit_codes.h"
+#include "core/log.h"
+#include "language/autoencoder_stage.h"
+#include "pipeline/feature_source.h"
+#include "pipeline/pipeline.h"
+
+namespace cls {
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+const char* phase_name(TilePhase phase) {
+  switch (phase) {
+    case TilePhase::Features: return "features";
+    case TilePhase::Autoencoder: return "autoencoder";
+    case TilePhase::Train: return "train";
+  }
+  return "?";
+}
+
+TilePhase parse_tile_phase(const std::string& name) {
+  for (TilePhase p : kTilePhases)
+    if (name == phase_name(p)) return p;
+  throw UsageError("tiles: unknown phase '" + name + "' (features, autoencoder or train)");
+}
+
+json RunTilesSettings::to_json() const {
+  return {{"models", models},
+          {"resolution", resolution},
+          {"rgb_iterations", rgb_iterations},
+          {"language_iterations", language_iterations},
+          {"autoencoder_epochs", autoencoder_epochs},
+          {"baseline", baseline},
+          {"autoencoder_samples", autoencoder_samples}};
+}
+
+RunTilesSettings RunTilesSettings::from_json(const json& j, const std::string& file) {
+  RunTilesSettings s;
+  try {
+    s.models = j.at("models").get<std::string>();
+    s.resolution = j.at("resolution").get<int>();
+    s.rgb_iterations = j.at("rgb_iterations").get<int>();
+    s.language_iterations = j.at("language_iterations").get<int>();
+    s.autoencoder_epochs = j.at("autoencoder_epochs").get<int>();
+    s.baseline = j.at("baseline").get<bool>();
+    s.autoencoder_samples = j.at("autoencoder_samples").get<int64_t>();
+  } catch (const json::exception& e) {
+    fail(file, std::string("not valid run-tiles settings: ") + e.what());
+  }
+  return s;
+}
+
+namespace {
+fs::path settings_file(const fs::path& tiles_dir) { return tiles_dir / "run-tiles.json"; }
+}  // namespace
+
+bool write_run_settings(const fs::path& tiles_dir, const RunTilesSettings& settings) {
+  const fs::path file = settings_file(tiles_dir);
+  const std::string text = settings.to_json().dump(2) + "\n";
+  if (fs::exists(file) && read_text_file(file) == text) return false;
+  fs::remove_all(tiles_dir / "status");
+  write_text_atomic(file, text);
+  return true;
+}
+
+RunTilesSettings read_run_settings(const fs::path& tiles_dir) {
+  const fs::path file = settings_file(tiles_dir);
+  if (!fs::exists(file)) fail(file.string(), "missing: start the tiles with `citylangsplat run-tiles` first");
+  try {
+    return RunTilesSettings::from_json(json::parse(read_text_file(file)), file.string());
+  } catch (const json::exception& e) {
+    fail(file.string(), std::string("not valid JSON: ") + e.what());
+  }
+}
+
+int phase_task_count(const TilePlan& plan, TilePhase phase) {
+  return phase == TilePhase::Autoencoder ? 1 : static_cast<int>(plan.tiles.size());
+}
+
+fs::path task_marker(const fs::path& tiles_dir, TilePhase phase, int index) {
+  return tiles_dir / "status" / (std::string(phase_name(phase)) + "_" + std::to_string(index) + ".json");
+}
+
+std::vector<int> pending_tasks(const fs::path& tiles_dir, const TilePlan& plan, TilePhase phase) {
+  std::vector<int> pending;
+  for (int i = 0; i < phase_task_count(plan, phase); ++i)
+    if (!fs::exists(task_marker(tiles_dir, phase, i))) pending.push_back(i);
+  return pending;
+}
+
+fs::path tile_run_dir(const fs::path& tiles_dir, const Tile& tile) { return tiles_dir / tile.name / "citylangsplat"; }
+fs::path shared_autoencoder(const fs::path& tiles_dir) { return tiles_dir / "autoencoder.safetensors"; }
+
+PipelineConfig tile_pipeline_config(const fs::path& tiles_dir, const Tile& tile, const RunTilesSettings& s,
+                                    TilePhase phase) {
+  PipelineConfig c;
+  c.scene_dir = tiles_dir / tile.name;
+  c.out_dir = tile_run_dir(tiles_dir, tile);
+  read_scene_config(c.scene_dir / "scene.json", c);
+  c.models = parse_models_choice(s.models);
+  c.resolution = s.resolution;
+  c.rgb_iterations = s.rgb_iterations;
+  c.language_iterations = s.language_iterations;
+  c.autoencoder_epochs = s.autoencoder_epochs;
+  c.baseline = s.baseline;
+  c.autoencoder = shared_autoencoder(tiles_dir).string();
+  c.stop_after_features = phase == TilePhase::Features;
+  return c;
+}
+
+namespace {
+
+int run_shared_autoencoder(const fs::path& tiles_dir, const TilePlan& plan, const RunTilesSettings& s) {
+  const PipelineConfig first = tile_pipeline_config(tiles_dir, plan.tiles.front(), s, TilePhase::Train);
+  AutoencoderStageOptions o;
+  for (const Tile& t : plan.tiles) o.features_dirs.push_back(tile_run_dir(tiles_dir, t) / "features");
+  o.out = shared_autoencoder(tiles_dir);
+  o.max_samples = s.autoencoder_samples;
+  o.train.epochs = resolve_feature_source(first, load_taxonomy(first.city_options)).autoencoder_epochs;
+  const AutoencoderReport r = run_autoencoder_stage(o);
+  log_info(cat("tiles: shared autoencoder: ", r.train_samples, " SAM features from ", plan.tiles.size(),
+               " tiles, held-out cosine ", r.holdout_cosine));
+  return kExitOk;
+}
+
+}  // namespace
+
+int run_tile_task(const fs::path& tiles_dir, TilePhase phase, int index) {
+  const TilePlan plan = read_tiles_dir(tiles_dir);
+  const RunTilesSettings settings = read_run_settings(tiles_dir);
+  if (index < 0 || index >= phase_task_count(plan, phase))
+    throw UsageError(cat("tiles task: ", phase_name(phase), " has tasks 0..", phase_task_count(plan, phase) - 1,
+                         ", not ", index));
+  const auto start = std::chrono::steady_clock::now();
+  int code = kExitOk;
+  if (phase == TilePhase::Autoencoder) {
+    code = run_shared_autoencoder(tiles_dir, plan, settings);
+  } else {
+    const Tile& tile = plan.tiles[index];
+    log_info(cat("tiles: ", phase_name(phase), " of ", tile.name, " (", tile.images.size(), " images)"));
+    code = exit_code(run_pipeline(tile_pipeline_config(tiles_dir, tile, settings, phase)).outcome);
+  }
+  if (code != kExitOk) return code;
+  char host[256] = "";
+  gethostname(host, sizeof host - 1);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  write_text_atomic(task_marker(tiles_dir, phase, index),
+                    json({{"phase", phase_name(phase)}, {"index", index}, {"seconds", seconds}, {"host", host}}).dump() + "\n");
+  return kExitOk;
+}
+
+}  // namespace cls

@@ -1,0 +1,57 @@
+#pragma once
+// The task list of run-tiles (docs/scale.md): three phases, each a set of independent tasks that any
+// executor (local processes or a Slurm array) runs as `citylangsplat tiles task TILES PHASE INDEX`:
+//   features     one task per tile: label maps and features (`run --stop-after features`)
+//   autoencoder  one task: the autoencoder shared by all tiles, on SAM features sampled from every tile
+//   train        one task per tile: the rest of `run` with the shared autoencoder
+// A task that finished leaves TILES/status/<phase>_<index>.json, so a rerun submits only the missing
+// ones; within a task the pipeline's stage stamps resume what was half done.
+#include <cstdint>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "pipeline/pipeline_config.h"
+#include "tiles/tile_plan.h"
+
+namespace cls {
+
+enum class TilePhase { Features, Autoencoder, Train };
+constexpr TilePhase kTilePhases[] = {TilePhase::Features, TilePhase::Autoencoder, TilePhase::Train};
+const char* phase_name(TilePhase phase);
+TilePhase parse_tile_phase(const std::string& name);  // cls::UsageError for an unknown phase
+
+// The `run` options every tile shares (TILES/run-tiles.json).
+struct RunTilesSettings {
+  std::string models = "auto";   // as run --models
+  int resolution = 1;
+  int rgb_iterations = 0, language_iterations = 0, autoencoder_epochs = 0;  // 0: the models' defaults
+  bool baseline = true;
+  int64_t autoencoder_samples = 200000;  // SAM features the shared autoencoder trains on, drawn from all tiles
+
+  nlohmann::json to_json() const;
+  static RunTilesSettings from_json(const nlohmann::json& j, const std::string& file);
+};
+
+// Writes the settings; when they differ from those recorded, forgets every finished task (the stage
+// stamps still reuse whatever the change leaves valid). Returns whether they changed.
+bool write_run_settings(const std::filesystem::path& tiles_dir, const RunTilesSettings& settings);
+RunTilesSettings read_run_settings(const std::filesystem::path& tiles_dir);
+
+int phase_task_count(const TilePlan& plan, TilePhase phase);
+std::filesystem::path task_marker(const std::filesystem::path& tiles_dir, TilePhase phase, int index);
+std::vector<int> pending_tasks(const std::filesystem::path& tiles_dir, const TilePlan& plan, TilePhase phase);
+
+std::filesystem::path tile_run_dir(const std::filesystem::path& tiles_dir, const Tile& tile);  // TILES/<tile>/citylangsplat
+std::filesystem::path shared_autoencoder(const std::filesystem::path& tiles_dir);           // TILES/autoencoder.safetensors
+
+// The pipeline configuration of one tile in a phase.
+PipelineConfig tile_pipeline_config(const std::filesystem::path& tiles_dir, const Tile& tile,
+                                    const RunTilesSettings& settings, TilePhase phase);
+
+// Runs one task in this process; writes its marker when it finished. Returns the exit status
+// (core/exit_codes.h; 130 when interrupted).
+int run_tile_task(const std::filesystem::path& tiles_dir, TilePhase phase, int index);
+
+}  // namespace cls

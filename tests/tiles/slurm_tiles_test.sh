@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# run-tiles on a real single-node Slurm (slurm_cluster.sh): a district of 8 LoD2 houses (the shared
+# 100-building CityJSON cut to a 4 x 2 block) rendered by `synth --per-building`, cut into tiles,
+# submitted as sbatch arrays; one running array task of the training phase is cancelled (scancel),
+# the rerun submits only that task, then the tiles are merged (check_merge.py checks the seams from
+# the PLYs) and the merged model is evaluated on the district's ground truth. Exit 77 (skipped) where
+# Slurm cannot start.
+#   bash slurm_tiles_test.sh BINARY WORK_DIR
+set -euo pipefail
+bin=$(readlink -f "$1")
+work=$2
+here=$(cd "$(dirname "$0")" && pwd)
+repo=$(cd "$here/../.." && pwd)
+rm -rf "$work" && mkdir -p "$work"
+work=$(readlink -f "$work")
+cluster=$(mktemp -d /tmp/cls-slurm.XXXXXX)  # short: the munge socket path must stay < 108 bytes
+trap 'bash "$here/slurm_cluster.sh" stop "$cluster"; rm -rf "$cluster"' EXIT
+status=0
+bash "$here/slurm_cluster.sh" start "$cluster" || status=$?
+if [ "$status" -ne 0 ]; then
+  echo "SKIPPED: no Slurm here (exit $status of slurm_cluster.sh start; bash scripts/setup.sh --slurm installs it)"
+  exit 77
+fi
+eval "$(bash "$here/slurm_cluster.sh" env "$cluster")"
+sinfo
+
+python3 "$here/cityjson_subset.py" "$repo/data/citygml/citygml4j/lod2_buildings_v2.json" --box 0,0,36,18 \
+  --out "$work/district.city.json"
+"$bin" -q synth --city "$work/district.city.json" --out "$work/district" --per-building --views 48 \
+  --width 160 --height 120 --gt-density 50
+"$bin" -q tile --scene "$work/district" --out "$work/tiles" --max-images 24 --min-share 0.2
+tiles=$(python3 -c "import json,sys; print(len(json.load(open(sys.argv[1]))['tiles']))" "$work/tiles/tiles.json")
+echo "tiles: $tiles"
+[ "$tiles" -ge 2 ] || { echo "FAIL: expected several tiles, got $tiles"; exit 1; }
+
+options=(--models synthetic --rgb-iterations 200 --language-iterations 40 --autoencoder-epochs 10 --no-baseline)
+"$bin" run-tiles "$work/tiles" --executor slurm --array-limit 2 "${options[@]}"
+train=$(python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['train'])" "$work/tiles/jobs/submitted.json")
+# Cancel the second training task once it runs (its pipeline stops at SIGTERM, leaving no marker).
+victim=""
+for _ in $(seq 600); do
+  victim=$(squeue -h -j "$train" -t RUNNING -o "%i" | grep -E "^${train}_1$" || true)
+  [ -n "$victim" ] && break
+  sleep 1
+done
+[ -n "$victim" ] || { echo "FAIL: array task ${train}_1 never ran"; squeue -t all; exit 1; }
+sleep 3
+scancel "$victim"
+echo "cancelled $victim"
+while [ -n "$(squeue -h -o %i)" ]; do sleep 2; done
+echo "--- the queue after the first submission (squeue -t all):"
+squeue -t all -o "%.12i %.16j %.10T %.8M %r"
+echo "--- job completions (jobcomp/filetxt: no slurmdbd, so no sacct):"
+cut -d' ' -f1-2,4,6-7 "$cluster/jobcomp.txt" 2>/dev/null | sed 's/^/  /' || true
+if "$bin" tiles status "$work/tiles"; then echo "FAIL: every task finished although one was cancelled"; exit 1; fi
+
+# The rerun submits only what is missing: the training task that was cancelled.
+"$bin" run-tiles "$work/tiles" --executor slurm --wait "${options[@]}" 2>&1 | tee "$work/rerun.log"
+python3 - "$work/tiles/jobs/submitted.json" <<'PY'
+import json, sys
+jobs = json.load(open(sys.argv[1]))
+if list(jobs) != ["train"]:
+    sys.exit(f"FAIL: the rerun submitted {list(jobs)}, not only the train phase")
+PY
+grep -q "train: job [0-9]* (array 1)" "$work/rerun.log" || { echo "FAIL: the rerun's array is not task 1 alone"; exit 1; }
+"$bin" tiles status "$work/tiles"
+
+"$bin" merge "$work/tiles" --out "$work/merged"
+/usr/bin/python3 "$here/check_merge.py" --tiles "$work/tiles" --merged "$work/merged"
+"$bin" -q evaluate --scene "$work/district" --model tiled="$work/merged/language/citylangsplat" --out "$work/eval"
+python3 - "$work/eval/eval.json" <<'PY'
+import json, sys
+e = json.load(open(sys.argv[1]))
+print("merged model evaluated:", json.dumps(e)[:300])
+PY
+echo "PASS"
