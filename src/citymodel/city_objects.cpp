@@ -78,6 +78,40 @@ std::vector<int32_t> finest_object_of_triangles(const SemanticMesh& mesh) {
   return object;
 }
 
+std::vector<int32_t> building_of_entities(const SemanticMesh& mesh) {
+  std::vector<int32_t> own(mesh.entities.size(), -1);
+  for (size_t b = 0; b < mesh.buildings.size(); ++b) {
+    const int32_t e = mesh.buildings[b];
+    if (e < 0 || static_cast<size_t>(e) >= mesh.entities.size())
+      throw Error(cat(mesh.source_path, ": building ", b, " refers to entity ", e, " of ", mesh.entities.size()));
+    if (own[e] < 0) own[e] = static_cast<int32_t>(b);
+  }
+  std::vector<int32_t> result(mesh.entities.size(), -1);
+  for (size_t e = 0; e < mesh.entities.size(); ++e) {
+    int32_t cur = static_cast<int32_t>(e);
+    // The chain is at most entities.size() long unless it has a cycle; stop there either way.
+    for (size_t steps = 0; cur >= 0 && steps <= mesh.entities.size(); ++steps) {
+      if (static_cast<size_t>(cur) >= mesh.entities.size()) break;
+      if (own[cur] >= 0) {
+        result[e] = own[cur];
+        break;
+      }
+      cur = mesh.entities[cur].parent;
+    }
+  }
+  return result;
+}
+
+std::vector<int32_t> building_of_triangles(const SemanticMesh& mesh) {
+  const std::vector<int32_t> building = building_of_entities(mesh);
+  std::vector<int32_t> result(mesh.num_triangles(), -1);
+  for (size_t t = 0; t < result.size() && t < mesh.tri_entity.size(); ++t) {
+    const int32_t whole = mesh.tri_entity[t][2];
+    if (whole >= 0 && static_cast<size_t>(whole) < building.size()) result[t] = building[whole];
+  }
+  return result;
+}
+
 void write_city_objects(const fs::path& path, const CityObjects& objects) {
   write_text_atomic(path, objects.to_json().dump(1) + "\n");
 }

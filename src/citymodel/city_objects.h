@@ -44,6 +44,13 @@ CityObjects city_objects(const SemanticMesh& mesh, const Taxonomy& taxonomy);
 // else its building (the finest entity; -1 where the triangle has none).
 std::vector<int32_t> finest_object_of_triangles(const SemanticMesh& mesh);
 
+// Building index (into mesh.buildings) of every entity: its own, or that of the nearest enclosing
+// building (a BuildingPart belongs to its Building); -1 for none. cls::Error naming the model when
+// mesh.buildings refers to an entity that does not exist.
+std::vector<int32_t> building_of_entities(const SemanticMesh& mesh);
+// The same for every triangle, from its level-3 entity: the building.png of the label maps.
+std::vector<int32_t> building_of_triangles(const SemanticMesh& mesh);
+
 void write_city_objects(const std::filesystem::path& path, const CityObjects& objects);  // atomic
 CityObjects read_city_objects(const std::filesystem::path& path);
 

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "citymodel/city_model.h"
+#include "cli/city_mesh_inputs.h"
 #include "cli/commands.h"
 #include "core/args.h"
 #include "core/error.h"
@@ -26,13 +27,9 @@ int cmd_run(int argc, char** argv) {
                         "synthetic features otherwise (said on the terminal, in run.json and in the report); "
                         "--models real stops before the features when the weights are missing. ") +
                 kExitCodesHelp + ".");
-  args.positional("SCENE_DIR", "scene directory")
-      .option("config", "", "JSON config (default: SCENE_DIR/scene.json when it exists)")
-      .option("out", "", "output directory (default: SCENE_DIR/citylangsplat)")
-      .option("city", "", "city model (overrides the config)")
-      .option("city-transform", "", "city transform JSON (overrides the config)")
-      .option("lod", "", "1, 2, 3 or highest (overrides the config; default highest)")
-      .option("taxonomy", "", "taxonomy JSON (overrides the config; default built-in)")
+  args.positional("SCENE_DIR", "scene directory");
+  add_scene_city_options(args);
+  args.option("out", "", "output directory (default: SCENE_DIR/citylangsplat)")
       .option("resolution", "1", "divide the image size by 1, 2, 4 or 8", "r")
       .option("align-distance", "0.5", "alignment check: distance threshold in city-model metres")
       .option("models", "auto",
@@ -58,13 +55,7 @@ int cmd_run(int argc, char** argv) {
   PipelineConfig c;
   c.scene_dir = args.get("SCENE_DIR");
   c.out_dir = args.has("out") ? fs::path(args.get("out")) : c.scene_dir / "citylangsplat";
-  const fs::path config = args.has("config") ? fs::path(args.get("config")) : c.scene_dir / "scene.json";
-  if (args.has("config") && !fs::exists(config)) fail(config.string(), "config file not found");
-  if (fs::exists(config)) read_scene_config(config, c);
-  if (args.has("city")) c.city = args.get("city");
-  if (args.has("city-transform")) c.city_transform = args.get("city-transform");
-  if (args.has("taxonomy")) c.city_options.taxonomy_path = args.get("taxonomy");
-  if (args.has("lod")) c.city_options.lod = parse_lod_option(args.get("lod"));
+  read_scene_city_options(args, c.scene_dir, c);
   c.resolution = args.get_int("resolution");
   c.align_distance = args.get_double("align-distance");
   c.models = parse_models_choice(args.get("models"));

@@ -50,7 +50,6 @@ int cmd_run_tiles(int argc, char** argv) {
 
   RunTilesSettings s;
   s.models = args.get("models");
-  (void)parse_models_choice(s.models);  // a bad name fails here, not in every task
   s.resolution = static_cast<int>(args.get_int("resolution"));
   s.rgb_iterations = static_cast<int>(args.get_int("rgb-iterations"));
   s.language_iterations = static_cast<int>(args.get_int("language-iterations"));
@@ -61,6 +60,12 @@ int cmd_run_tiles(int argc, char** argv) {
     throw UsageError("run-tiles: counts must not be negative (and --autoencoder-samples >= 1)");
   const int retries = static_cast<int>(args.get_int("retries"));
   if (retries < 0) throw UsageError("run-tiles: --retries must be >= 0");
+  const std::vector<SubmittedJob> earlier = submitted_jobs(tiles_dir);
+  const auto queued = slurm_queue_rows(earlier);
+  if (!queued || !queued->empty())
+    throw UsageError("run-tiles: jobs of the last submission are still queued or running (citylangsplat tiles status " +
+                     tiles_dir.string() + "): wait for them, or scancel them, then run again");
+  s = resolve_run_settings(tiles_dir, plan, s);
   if (write_run_settings(tiles_dir, s)) log_info("run-tiles: new settings: every task runs (finished stages are reused)");
   const std::string binary = fs::read_symlink("/proc/self/exe").string();
 
@@ -83,14 +88,16 @@ int cmd_run_tiles(int argc, char** argv) {
   o.cpus_per_task = static_cast<int>(args.get_int("cpus-per-task"));
   o.time_limit = args.get("time");
   o.retries = retries;
-  const auto jobs = submit_tiles_to_slurm(tiles_dir, plan, o);
+  const std::vector<SubmittedJob> jobs = submit_tiles_to_slurm(tiles_dir, plan, o);
   if (jobs.empty()) std::printf("run-tiles: every task has finished; nothing submitted\n");
   if (!args.flag_set("wait")) {
     std::printf("Submitted; follow with: citylangsplat tiles status %s\n", tiles_dir.string().c_str());
     return kExitOk;
   }
   std::string last;
-  while (slurm_jobs_active(jobs)) {
+  for (;;) {
+    const auto rows = slurm_queue_rows(jobs);  // nullopt: squeue did not answer this time
+    if (rows && rows->empty()) break;
     const std::string line = tiles_progress_line(tiles_dir, plan);
     if (line != last) log_info("run-tiles: finished tasks: " + line);
     last = line;

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "citymodel/city_model.h"
+#include "cli/city_mesh_inputs.h"
 #include "cli/commands.h"
 #include "core/args.h"
 #include "core/error.h"
@@ -20,30 +21,21 @@ int cmd_tile(int argc, char** argv) {
             "recursive bisection of their footprints until each tile's images fit --max-images; an image joins "
             "every tile whose buildings cover at least --min-share of its building pixels (one raycast per "
             "image). Writes TILES/<tile>/ (scene.json, images linked, the COLMAP model cut to the tile) and "
-            "TILES/tiles.json. The city model comes from --config FILE or SCENE/scene.json unless given.");
-  args.option("scene", "", "the district's scene directory (COLMAP model; required)")
-      .option("config", "", "JSON config (default: SCENE/scene.json when it exists)")
-      .option("city", "", "city model (overrides the config)")
-      .option("city-transform", "", "city transform JSON (overrides the config)")
-      .option("lod", "", "1, 2, 3 or highest (overrides the config)")
-      .option("taxonomy", "", "taxonomy JSON (overrides the config)")
-      .option("out", "", "tiles directory to write (required)")
+            "TILES/tiles.json. The city model comes from --config FILE or SCENE_DIR/scene.json unless given.");
+  args.option("scene", "", "the district's scene directory (COLMAP model; required)");
+  add_scene_city_options(args);
+  args.option("out", "", "tiles directory to write (required)")
       .option("max-images", std::to_string(d.max_images), "images per tile before it is split")
       .option("overlap", "5", "margin around a tile's buildings for its sparse points (scene units)")
       .option("min-share", "0.2", "share of an image's building pixels that makes it join a tile")
-      .flag("overwrite", "replace an existing tiles directory's plan (its tiles' results are kept where they match)");
+      .flag("overwrite", "plan again over an existing tiles directory (run-tiles then reruns every task; the stages "
+                        "whose inputs did not change are reused)");
   if (!args.parse(argc, argv)) return 0;
   if (!args.has("scene")) throw UsageError("tile: --scene is required");
   if (!args.has("out")) throw UsageError("tile: --out is required");
   const fs::path scene_dir = args.get("scene"), out = args.get("out");
   PipelineConfig c;  // only its city-model fields, read as `run` reads them
-  const fs::path config = args.has("config") ? fs::path(args.get("config")) : scene_dir / "scene.json";
-  if (args.has("config") && !fs::exists(config)) fail(config.string(), "config file not found");
-  if (fs::exists(config)) read_scene_config(config, c);
-  if (args.has("city")) c.city = args.get("city");
-  if (args.has("city-transform")) c.city_transform = args.get("city-transform");
-  if (args.has("taxonomy")) c.city_options.taxonomy_path = args.get("taxonomy");
-  if (args.has("lod")) c.city_options.lod = parse_lod_option(args.get("lod"));
+  read_scene_city_options(args, scene_dir, c);
   if (c.city.empty()) throw UsageError("tile: no city model: give --city, or a scene.json with \"city_model\"");
   TileOptions o;
   o.max_images = static_cast<int>(args.get_int("max-images"));
@@ -55,6 +47,7 @@ int cmd_tile(int argc, char** argv) {
   if (fs::exists(out / "tiles.json") && !args.flag_set("overwrite"))
     throw UsageError("tile: " + (out / "tiles.json").string() + " exists: give --overwrite to plan again");
 
+  require_colmap_model(scene_dir);  // before the raycast: the tiles are written as COLMAP models
   const Scene scene = load_scene(scene_dir.string());
   const SceneCityModel city = load_scene_city_model(c.city, c.city_transform, c.city_options, "tile");
   const TilePlan plan = make_tile_plan(scene, city, o, c.city, c.city_transform, c.city_options.taxonomy_path,

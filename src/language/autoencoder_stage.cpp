@@ -41,8 +41,12 @@ std::vector<fs::path> find_sam_feature_files(const fs::path& dir) {
   return files;
 }
 
-at::Tensor read_sam_features(const std::vector<fs::path>& files, int input_dim) {
+at::Tensor read_sam_features(const std::vector<fs::path>& files, int input_dim, int64_t max_samples, uint64_t seed,
+                             int64_t* rows_read) {
   std::vector<at::Tensor> parts;
+  at::Tensor reservoir;  // max_samples > 0: Algorithm R over the rows of every file in order
+  at::Generator gen = at::detail::createCPUGenerator(seed);
+  int64_t seen = 0;
   for (const fs::path& file : files) {
     const NpyArray a = read_npy(file);  // names the file on a malformed header or short data
     if (a.shape.size() != 2 || a.shape[1] != input_dim)
@@ -56,8 +60,28 @@ at::Tensor read_sam_features(const std::vector<fs::path>& files, int input_dim) 
       const int64_t row = at::nonzero(~at::isfinite(f).all(1))[0][0].item<int64_t>();
       fail(file.string(), cat("row ", row, " of the CLIP features contains NaN or infinite values"));
     }
-    if (f.size(0) > 0) parts.push_back(f);
+    const int64_t n = f.size(0);
+    if (max_samples <= 0) {
+      if (n > 0) parts.push_back(f);
+    } else {
+      if (!reservoir.defined()) reservoir = at::empty({max_samples, input_dim}, at::kFloat);
+      const int64_t direct = std::clamp<int64_t>(max_samples - seen, 0, n);  // while the reservoir fills
+      if (direct > 0) reservoir.slice(0, seen, seen + direct).copy_(f.slice(0, 0, direct));
+      if (n > direct) {
+        // Row r (global index seen + r) replaces slot j, uniform in [0, seen + r], when j < max_samples.
+        const at::Tensor global = at::arange(seen + direct, seen + n, at::kDouble);
+        const at::Tensor j = (at::rand({n - direct}, gen, at::kDouble) * (global + 1)).floor().to(at::kLong);
+        const at::Tensor hit = j.lt(max_samples).nonzero().select(1, 0).contiguous();
+        const at::Tensor slots = j.index_select(0, hit);
+        const auto slot = slots.accessor<int64_t, 1>();
+        const auto row = hit.accessor<int64_t, 1>();
+        for (int64_t k = 0; k < hit.size(0); ++k) reservoir[slot[k]].copy_(f[direct + row[k]]);  // later rows win
+      }
+    }
+    seen += n;
   }
+  if (rows_read) *rows_read = seen;
+  if (max_samples > 0) return seen >= max_samples ? reservoir : reservoir.slice(0, 0, seen).contiguous();
   if (parts.empty()) return at::empty({0, input_dim}, at::kFloat);
   return at::cat(parts, 0);
 }
@@ -73,14 +97,9 @@ AutoencoderReport run_autoencoder_stage(const AutoencoderStageOptions& o) {
            "no SAM feature files (*_f.npy; *_gml_f.npy are not used for training): run the features stage first");
     files.insert(files.end(), found.begin(), found.end());
   }
-  at::Tensor features = read_sam_features(files, o.config.input_dim);
-  const int64_t rows_read = features.size(0);
+  int64_t rows_read = 0;
+  const at::Tensor features = read_sam_features(files, o.config.input_dim, o.max_samples, o.train.seed, &rows_read);
   if (rows_read == 0) fail(where, "the SAM feature files hold no rows");
-  if (o.max_samples > 0 && rows_read > o.max_samples) {
-    at::Generator gen = at::detail::createCPUGenerator(o.train.seed);
-    const at::Tensor rows = at::randperm(rows_read, gen, at::TensorOptions().dtype(at::kLong));
-    features = features.index_select(0, rows.slice(0, 0, o.max_samples)).contiguous();
-  }
   log_info(cat("autoencoder: ", features.size(0), " of ", rows_read, " SAM features from ", files.size(), " files, ",
                o.config.input_dim, " -> ", o.config.latent_dim()));
 

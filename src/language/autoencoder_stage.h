@@ -16,14 +16,17 @@ namespace cls {
 // `dir` is not a directory.
 std::vector<std::filesystem::path> find_sam_feature_files(const std::filesystem::path& dir);
 
-// The rows of all files stacked (float32, sum N x input_dim). cls::Error naming the file for an
+// The rows of all files stacked (float32, sum N x input_dim); with max_samples > 0 and more rows than
+// that, a uniform random sample of max_samples rows (reservoir sampling, seeded: one file in memory at a
+// time, whatever the total). `rows_read` (optional) gets the total. cls::Error naming the file for an
 // unreadable file, a shape other than N x input_dim, a non-float dtype or NaN/infinite values.
-at::Tensor read_sam_features(const std::vector<std::filesystem::path>& files, int input_dim);
+at::Tensor read_sam_features(const std::vector<std::filesystem::path>& files, int input_dim, int64_t max_samples = 0,
+                             uint64_t seed = 0, int64_t* rows_read = nullptr);
 
 struct AutoencoderStageOptions {
   // One features directory, or one per tile (a shared autoencoder: docs/scale.md).
   std::vector<std::filesystem::path> features_dirs;
-  // Train on at most this many rows, drawn at random (train.seed) from all of them; 0 = every row.
+  // Train on at most this many rows, a uniform sample (train.seed) of all of them; 0 = every row.
   int64_t max_samples = 0;
   std::filesystem::path out;  // the model (safetensors); the report goes to <out>.json
   AutoencoderConfig config;

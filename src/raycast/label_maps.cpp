@@ -11,32 +11,6 @@ namespace {
 
 constexpr size_t kMaxLabel = std::numeric_limits<uint16_t>::max() - 1;  // stored as label + 1
 
-// Building index (into mesh.buildings) of every entity: its own, or that of the nearest enclosing
-// building (a BuildingPart belongs to its Building); -1 for none.
-std::vector<int32_t> building_of_entities(const SemanticMesh& mesh) {
-  std::vector<int32_t> own(mesh.entities.size(), -1);
-  for (size_t b = 0; b < mesh.buildings.size(); ++b) {
-    const int32_t e = mesh.buildings[b];
-    if (e < 0 || static_cast<size_t>(e) >= mesh.entities.size())
-      throw Error(cat(mesh.source_path, ": building ", b, " refers to entity ", e, " of ", mesh.entities.size()));
-    if (own[e] < 0) own[e] = static_cast<int32_t>(b);
-  }
-  std::vector<int32_t> result(mesh.entities.size(), -1);
-  for (size_t e = 0; e < mesh.entities.size(); ++e) {
-    int32_t cur = static_cast<int32_t>(e);
-    // The chain is at most entities.size() long unless it has a cycle; stop there either way.
-    for (size_t steps = 0; cur >= 0 && steps <= mesh.entities.size(); ++steps) {
-      if (static_cast<size_t>(cur) >= mesh.entities.size()) break;
-      if (own[cur] >= 0) {
-        result[e] = own[cur];
-        break;
-      }
-      cur = mesh.entities[cur].parent;
-    }
-  }
-  return result;
-}
-
 }  // namespace
 
 std::vector<uint8_t> opening_priority(const SemanticMesh& mesh) {
@@ -54,7 +28,7 @@ LabelTable::LabelTable(const SemanticMesh& mesh) {
   if (mesh.buildings.size() > kMaxLabel)
     throw Error(cat(mesh.source_path, ": ", mesh.buildings.size(), " buildings; building.png (uint16) holds at most ",
                     kMaxLabel));
-  const std::vector<int32_t> building = building_of_entities(mesh);
+  const std::vector<int32_t> building = building_of_triangles(mesh);
   const std::vector<int32_t> object = finest_object_of_triangles(mesh);
   entries_.resize(n);
   for (size_t t = 0; t < n; ++t) {
@@ -65,9 +39,7 @@ LabelTable::LabelTable(const SemanticMesh& mesh) {
         throw Error(cat(mesh.source_path, ": class id ", c, " does not fit a uint16 label map"));
       e.level[l] = c < 0 ? 0 : static_cast<uint16_t>(c + 1);
     }
-    const int32_t whole = mesh.tri_entity[t][2];
-    const bool known = whole >= 0 && static_cast<size_t>(whole) < building.size() && building[whole] >= 0;
-    e.building = known ? static_cast<uint16_t>(building[whole] + 1) : 0;
+    e.building = static_cast<uint16_t>(building[t] + 1);  // 0 for none
     e.object = object[t];
   }
 }

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "citymodel/city_objects.h"
 #include "core/atomic_file.h"
+#include "core/error.h"
 #include "core/image_file.h"
 #include "core/log.h"
 #include "core/progress.h"
@@ -25,17 +27,15 @@ std::string settings_problem(const SynthSettings& s) {
 }
 
 namespace {
-// The box of each building's triangles (level-3 entities), in mesh.buildings order.
+// The box of each building's triangles (mesh.buildings order; buildings without triangles left out).
 std::vector<Box3d> building_bounds(const SemanticMesh& mesh) {
   std::vector<Box3d> boxes(mesh.buildings.size());
-  std::vector<int> slot(mesh.entities.size(), -1);
-  for (size_t b = 0; b < mesh.buildings.size(); ++b) slot[mesh.buildings[b]] = static_cast<int>(b);
-  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const int e = mesh.tri_entity[t][2];
-    if (e < 0 || slot[e] < 0) continue;
-    for (uint32_t v : mesh.triangles[t]) boxes[slot[e]].extend({mesh.vertices[v][0], mesh.vertices[v][1], mesh.vertices[v][2]});
-  }
+  const std::vector<int32_t> building = building_of_triangles(mesh);
+  for (size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (building[t] >= 0)
+      for (uint32_t v : mesh.triangles[t]) boxes[building[t]].extend({mesh.vertices[v][0], mesh.vertices[v][1], mesh.vertices[v][2]});
   boxes.erase(std::remove_if(boxes.begin(), boxes.end(), [](const Box3d& b) { return b.empty(); }), boxes.end());
+  if (boxes.empty()) fail(mesh.source_path, "--per-building: the city model has no building with surfaces at this LoD");
   return boxes;
 }
 }  // namespace

@@ -9,8 +9,9 @@
 
 namespace cls {
 
-// Writes TILES/jobs/<phase>.sh (executable) and returns its path. `retries`: extra attempts after a
-// failure; an interrupted task (exit 130: Ctrl-C, scancel's SIGTERM) is never retried.
+// Writes TILES/jobs/<phase>.sh (executable) and returns its path. It runs task SLURM_ARRAY_TASK_ID +
+// CLS_TASK_OFFSET (0 when unset). `retries`: extra attempts after a failure; a task that was interrupted
+// (exit 130: Ctrl-C, scancel's SIGTERM) or killed by a signal is not retried.
 std::filesystem::path write_task_script(const std::filesystem::path& tiles_dir, TilePhase phase,
                                         const std::string& binary, int retries);
 

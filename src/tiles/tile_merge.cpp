@@ -2,6 +2,7 @@
 
 #include <ATen/ATen.h>
 
+#include <algorithm>
 #include <optional>
 
 #include "core/atomic_file.h"
@@ -9,6 +10,7 @@
 #include "core/hash.h"
 #include "core/log.h"
 #include "language/language_model.h"
+#include "query/selection.h"
 #include "tiles/tile_tasks.h"
 
 namespace cls {
@@ -25,44 +27,40 @@ at::Tensor in_cell(const at::Tensor& means, const TileCell& c) {
   return x.ge(c.x0).logical_and(x.lt(c.x1)).logical_and(y.ge(c.y0)).logical_and(y.lt(c.y1));
 }
 
-// How many of `means` lie in the cell of a tile other than `own` (tile index per Gaussian).
-int64_t in_other_cells(const at::Tensor& means, const at::Tensor& own, const TilePlan& plan) {
+// Pairs of tiles whose cells overlap (0 for a partition): with disjoint cells, a Gaussian in its own
+// tile's cell lies in no other. O(tiles^2): 5e7 box tests for 10,000 tiles.
+int64_t overlapping_cells(const TilePlan& plan) {
   int64_t n = 0;
-  for (size_t t = 0; t < plan.tiles.size(); ++t)
-    n += in_cell(means, plan.tiles[t].cell).logical_and(own.ne(static_cast<int>(t))).sum().item<int64_t>();
+  for (size_t a = 0; a < plan.tiles.size(); ++a)
+    for (size_t b = a + 1; b < plan.tiles.size(); ++b) {
+      const TileCell &p = plan.tiles[a].cell, &q = plan.tiles[b].cell;
+      n += std::max(p.x0, q.x0) < std::min(p.x1, q.x1) && std::max(p.y0, q.y0) < std::min(p.y1, q.y1);
+    }
   return n;
 }
 
 GaussianModel concat(const std::vector<GaussianModel>& parts) {
-  GaussianModel m;
-  auto cat = [&](at::Tensor GaussianModel::*field) {
+  auto cat_field = [&](at::Tensor GaussianModel::*field) {
     std::vector<at::Tensor> ts;
     for (const GaussianModel& p : parts) ts.push_back(p.*field);
     return at::cat(ts, 0);
   };
-  m.means = cat(&GaussianModel::means);
-  m.log_scales = cat(&GaussianModel::log_scales);
-  m.quats = cat(&GaussianModel::quats);
-  m.opacity_logits = cat(&GaussianModel::opacity_logits);
-  m.sh_dc = cat(&GaussianModel::sh_dc);
-  m.sh_rest = cat(&GaussianModel::sh_rest);
+  GaussianModel m;
+  m.means = cat_field(&GaussianModel::means);
+  m.log_scales = cat_field(&GaussianModel::log_scales);
+  m.quats = cat_field(&GaussianModel::quats);
+  m.opacity_logits = cat_field(&GaussianModel::opacity_logits);
+  m.sh_dc = cat_field(&GaussianModel::sh_dc);
+  m.sh_rest = cat_field(&GaussianModel::sh_rest);
   for (const GaussianExtra& e : parts.front().extras) {
     std::vector<at::Tensor> ts;
-    for (const GaussianModel& p : parts) ts.push_back(p.extra(e.name)->values);
+    for (const GaussianModel& p : parts) {
+      const GaussianExtra* x = p.extra(e.name);
+      if (!x) throw Error("merge: the tiles' models differ in their PLY property '" + e.name + "'");
+      ts.push_back(x->values);
+    }
     m.extras.push_back({e.name, at::cat(ts, 0)});
   }
-  return m;
-}
-
-GaussianModel select(const GaussianModel& g, const at::Tensor& index) {
-  GaussianModel m;
-  m.means = g.means.index_select(0, index);
-  m.log_scales = g.log_scales.index_select(0, index);
-  m.quats = g.quats.index_select(0, index);
-  m.opacity_logits = g.opacity_logits.index_select(0, index);
-  m.sh_dc = g.sh_dc.index_select(0, index);
-  m.sh_rest = g.sh_rest.index_select(0, index);
-  for (const GaussianExtra& e : g.extras) m.extras.push_back({e.name, e.values.index_select(0, index)});
   return m;
 }
 
@@ -70,39 +68,42 @@ GaussianModel select(const GaussianModel& g, const at::Tensor& index) {
 
 json merge_tiles(const fs::path& tiles_dir, const fs::path& out_dir) {
   const TilePlan plan = read_tiles_dir(tiles_dir);
+  const std::vector<int> unfinished = pending_tasks(tiles_dir, plan, TilePhase::Train);
+  if (!unfinished.empty())
+    fail(task_marker(tiles_dir, TilePhase::Train, unfinished.front()).string(),
+         "missing or of another plan or settings: tile " + plan.tiles[unfinished.front()].name +
+             " has not finished training (citylangsplat tiles status)");
+  const int64_t overlaps = overlapping_cells(plan);
+  if (overlaps > 0) fail((tiles_dir / "tiles.json").string(), cat(overlaps, " pairs of tile cells overlap: not a partition"));
+  const std::string shared_hash = file_fnv1a64_hex(shared_autoencoder(tiles_dir));
+
   json report = {{"tiles_dir", fs::absolute(tiles_dir).string()}, {"scene", plan.scene.string()}, {"methods", json::object()}};
   for (const char* method : {"citylangsplat", "langsplat"}) {
     std::vector<fs::path> dirs;
     for (const Tile& t : plan.tiles) dirs.push_back(tile_run_dir(tiles_dir, t) / "language" / method);
-    const bool any = std::any_of(dirs.begin(), dirs.end(), [](const fs::path& d) { return fs::exists(d / "model.json"); });
-    if (!any) continue;
+    if (!fs::exists(dirs.front() / "model.json")) continue;  // e.g. no baseline (run-tiles --no-baseline)
     std::vector<GaussianModel> kept;
     std::array<std::vector<at::Tensor>, 3> latents;
-    std::vector<at::Tensor> owners;
     std::optional<LanguageModel> first;
-    std::string ae_hash, objects_json;
+    std::string objects_json;
     json per_tile = json::array();
-    int64_t naive_in_other = 0;
+    int64_t naive_in_other = 0, outside_own = 0;
     for (size_t t = 0; t < plan.tiles.size(); ++t) {
-      if (!fs::exists(dirs[t] / "model.json"))
-        fail((dirs[t] / "model.json").string(), "missing: tile " + plan.tiles[t].name + " has not finished training (run-tiles)");
       LanguageModel m = load_language_model(dirs[t].string());
-      const std::string hash = file_fnv1a64_hex(dirs[t] / "autoencoder.safetensors");
-      const std::string objects = m.objects.to_json().dump();
-      if (t == 0) {
-        ae_hash = hash, objects_json = objects;
-      } else if (hash != ae_hash) {
+      if (file_fnv1a64_hex(dirs[t] / "autoencoder.safetensors") != shared_hash)
         fail((dirs[t] / "autoencoder.safetensors").string(),
-             "another autoencoder than tile " + plan.tiles[0].name + "'s: the latents cannot be merged (run-tiles trains one shared)");
-      } else if (objects != objects_json) {
+             "not the shared autoencoder " + shared_autoencoder(tiles_dir).string() + ": the latents cannot be merged");
+      const std::string objects = m.objects.to_json().dump();
+      if (t == 0) objects_json = objects;
+      if (objects != objects_json)
         fail((dirs[t] / "city_objects.json").string(), "another city-object table than tile " + plan.tiles[0].name + "'s");
-      }
       const int64_t n = m.gaussians.size();
-      naive_in_other += in_other_cells(m.gaussians.means, at::full({n}, static_cast<int>(t), at::kInt), plan);
       const at::Tensor index = in_cell(m.gaussians.means, plan.tiles[t].cell).nonzero().select(1, 0);
-      GaussianModel part = select(m.gaussians, index);
+      naive_in_other += n - index.size(0);  // the cells cover the plane: the rest lies in other cells
+      GaussianModel part = subset_gaussians(m.gaussians, index);
+      // Counted again on what is kept, as a check of this code (must be 0).
+      outside_own += index.size(0) - in_cell(part.means, plan.tiles[t].cell).sum().item<int64_t>();
       part.extras.push_back({kTileProperty, at::full({index.size(0)}, static_cast<int>(t), at::kInt)});
-      owners.push_back(part.extras.back().values);
       for (int l = 0; l < 3; ++l) latents[l].push_back(m.latents[l].index_select(0, index));
       kept.push_back(std::move(part));
       per_tile.push_back({{"tile", plan.tiles[t].name}, {"gaussians", n}, {"kept", index.size(0)}});
@@ -115,14 +116,13 @@ json merge_tiles(const fs::path& tiles_dir, const fs::path& out_dir) {
                          std::move(first->objects)};
     merged.info["scene"] = plan.scene.string();  // the district: what evaluate, render and view show
     merged.info["merged_from"] = {{"tiles_dir", fs::absolute(tiles_dir).string()}, {"tiles", plan.tiles.size()}};
-    const int64_t outside = in_other_cells(merged.gaussians.means, at::cat(owners, 0), plan);
     save_language_model((out_dir / "language" / method).string(), merged);
     report["methods"][method] = {{"gaussians", merged.gaussians.size()},
                                  {"tiles", per_tile},
-                                 {"in_another_tiles_cell", outside},
+                                 {"in_another_tiles_cell", outside_own},
                                  {"naive_union_in_another_tiles_cell", naive_in_other}};
-    log_info(cat("merge: ", method, ": ", merged.gaussians.size(), " Gaussians from ", plan.tiles.size(),
-                 " tiles; ", outside, " in another tile's cell (a plain union would have ", naive_in_other, ")"));
+    log_info(cat("merge: ", method, ": ", merged.gaussians.size(), " Gaussians from ", plan.tiles.size(), " tiles; ",
+                 outside_own, " in another tile's cell (a plain union would have ", naive_in_other, ")"));
   }
   if (report["methods"].empty()) fail(tiles_dir.string(), "no tile has a trained language model: run run-tiles first");
   write_text_atomic(out_dir / "merge.json", report.dump(2) + "\n");

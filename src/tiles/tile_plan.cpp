@@ -12,59 +12,66 @@ namespace cls {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-std::vector<int> views_of_buildings(const std::vector<int>& buildings, const BuildingPixels& pixels, double min_share) {
+std::vector<int> views_of_buildings(const std::vector<char>& in_set, const BuildingPixels& pixels, double min_share) {
   std::vector<int> views;
   for (size_t v = 0; v < pixels.size(); ++v) {
-    int64_t total = 0, own = 0;
-    for (int64_t p : pixels[v]) total += p;
-    for (int b : buildings) own += pixels[v][b];
-    if (own > 0 && static_cast<double>(own) >= min_share * static_cast<double>(total)) views.push_back(static_cast<int>(v));
+    int64_t own = 0;
+    for (const auto& [b, p] : pixels[v].pixels)
+      if (in_set[b]) own += p;
+    if (own > 0 && static_cast<double>(own) >= min_share * static_cast<double>(pixels[v].total))
+      views.push_back(static_cast<int>(v));
   }
   return views;
 }
 
-std::vector<PlannedTile> partition_buildings(const std::vector<BuildingFootprint>& footprints,
-                                             const BuildingPixels& pixels, int max_images, double min_share) {
-  std::vector<PlannedTile> tiles;
+Partition partition_buildings(const std::vector<BuildingFootprint>& footprints, const BuildingPixels& pixels,
+                              int max_images, double min_share) {
+  Partition result;
+  std::vector<char> in_set(footprints.size(), 0);
+  auto views_of = [&](const std::vector<int>& set) {
+    for (int b : set) in_set[b] = 1;
+    std::vector<int> views = views_of_buildings(in_set, pixels, min_share);
+    for (int b : set) in_set[b] = 0;
+    return views;
+  };
   std::function<void(std::vector<int>, TileCell)> split = [&](std::vector<int> set, TileCell cell) {
-    std::vector<int> views = views_of_buildings(set, pixels, min_share);
+    std::vector<int> views = views_of(set);
     if (static_cast<int>(views.size()) > max_images && set.size() > 1) {
       double lo[2] = {TileCell::kInf, TileCell::kInf}, hi[2] = {-TileCell::kInf, -TileCell::kInf};
       for (int b : set) {
         const double c[2] = {footprints[b].cx(), footprints[b].cy()};
         for (int a = 0; a < 2; ++a) lo[a] = std::min(lo[a], c[a]), hi[a] = std::max(hi[a], c[a]);
       }
-      // The wider axis first; where every centre coincides on it, the other one.
-      for (int a : hi[0] - lo[0] >= hi[1] - lo[1] ? std::array<int, 2>{0, 1} : std::array<int, 2>{1, 0}) {
+      const int a = hi[0] - lo[0] >= hi[1] - lo[1] ? 0 : 1;
+      if (hi[a] > lo[a]) {  // else every centre coincides: nothing to cut
         auto centre = [&](int b) { return a == 0 ? footprints[b].cx() : footprints[b].cy(); };
         std::sort(set.begin(), set.end(), [&](int p, int q) { return centre(p) < centre(q) || (centre(p) == centre(q) && p < q); });
-        // The median cut, moved to the nearest gap between distinct centres.
-        const size_t n = set.size();
-        size_t k = n / 2;
-        size_t best = 0;
-        for (size_t d = 0; d < n && best == 0; ++d)
+        // The median cut, moved to the nearest gap between distinct centres (one exists: hi > lo).
+        const size_t n = set.size(), k = n / 2;
+        size_t cut_at = 0;
+        for (size_t d = 0; cut_at == 0; ++d)
           for (size_t cand : {k + d, k - d})
             if (cand > 0 && cand < n && centre(set[cand - 1]) < centre(set[cand])) {
-              best = cand;
+              cut_at = cand;
               break;
             }
-        if (best == 0) continue;
-        const double cut = 0.5 * (centre(set[best - 1]) + centre(set[best]));
+        const double cut = 0.5 * (centre(set[cut_at - 1]) + centre(set[cut_at]));
         TileCell left = cell, right = cell;
         (a == 0 ? left.x1 : left.y1) = cut;
         (a == 0 ? right.x0 : right.y0) = cut;
-        split(std::vector<int>(set.begin(), set.begin() + static_cast<long>(best)), left);
-        split(std::vector<int>(set.begin() + static_cast<long>(best), set.end()), right);
+        split(std::vector<int>(set.begin(), set.begin() + static_cast<long>(cut_at)), left);
+        split(std::vector<int>(set.begin() + static_cast<long>(cut_at), set.end()), right);
         return;
       }
     }
     std::sort(set.begin(), set.end());
-    tiles.push_back({std::move(set), cell, std::move(views)});
+    result.tiles.push_back({std::move(set), cell, std::move(views)});
   };
-  std::vector<int> all(footprints.size());
-  for (size_t b = 0; b < all.size(); ++b) all[b] = static_cast<int>(b);
-  if (!all.empty()) split(all, TileCell{});
-  return tiles;
+  std::vector<int> seen;
+  for (size_t b = 0; b < footprints.size(); ++b)
+    (views_of({static_cast<int>(b)}).empty() ? result.unseen : seen).push_back(static_cast<int>(b));
+  if (!seen.empty()) split(seen, TileCell{});
+  return result;
 }
 
 namespace {
@@ -87,7 +94,7 @@ void write_tile_plan(const fs::path& file, const TilePlan& plan) {
                   {"city_transform", plan.city_transform}, {"taxonomy", plan.taxonomy},
                   {"lod", plan.lod},                   {"max_images", plan.max_images},
                   {"overlap", plan.overlap},           {"min_share", plan.min_share},
-                  {"tiles", tiles}};
+                  {"unseen", plan.unseen},             {"tiles", tiles}};
   write_text_atomic(file, j.dump(2) + "\n");
 }
 
@@ -103,6 +110,7 @@ TilePlan read_tile_plan(const fs::path& file) {
     plan.max_images = j.at("max_images").get<int>();
     plan.overlap = j.at("overlap").get<double>();
     plan.min_share = j.at("min_share").get<double>();
+    plan.unseen = j.value("unseen", std::vector<std::string>{});
     for (const json& t : j.at("tiles")) {
       Tile tile;
       tile.name = t.at("name").get<std::string>();

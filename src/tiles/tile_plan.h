@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cls {
@@ -26,12 +27,17 @@ struct BuildingFootprint {
   double cy() const { return 0.5 * (y0 + y1); }
 };
 
-// Which views see which building: pixels[v][b] = pixels of view v whose first hit is building b.
-using BuildingPixels = std::vector<std::vector<int64_t>>;
+// Which buildings a view sees: the pixels of each building whose first hit it is (sparse: a view of a
+// city sees a few of its buildings), and their sum.
+struct ViewBuildings {
+  std::vector<std::pair<int32_t, int64_t>> pixels;  // (building, pixels), pixels > 0
+  int64_t total = 0;
+};
+using BuildingPixels = std::vector<ViewBuildings>;  // one per view
 
-// The views of a set of buildings: those where the set covers at least `min_share` of the pixels the
-// view has on any building (and at least one pixel).
-std::vector<int> views_of_buildings(const std::vector<int>& buildings, const BuildingPixels& pixels, double min_share);
+// The views of a set of buildings (`in_set[b]` non-zero): those where the set covers at least
+// `min_share` of the pixels the view has on any building (and at least one pixel).
+std::vector<int> views_of_buildings(const std::vector<char>& in_set, const BuildingPixels& pixels, double min_share);
 
 struct PlannedTile {
   std::vector<int> buildings;  // indices into the footprints
@@ -40,10 +46,16 @@ struct PlannedTile {
 };
 
 // Recursive bisection: a set of buildings whose views exceed `max_images` is split at the median of
-// its footprint centres along the wider axis; a single building is never split (its tile may then
-// hold more than max_images views: the caller says so). Tiles come out in depth-first order.
-std::vector<PlannedTile> partition_buildings(const std::vector<BuildingFootprint>& footprints,
-                                             const BuildingPixels& pixels, int max_images, double min_share);
+// its footprint centres along the wider axis; a single building (or several with one centre) is never
+// split: its tile may then hold more than max_images views (the caller says so). Buildings that no view
+// sees at `min_share` on their own take no part (`unseen`): every tile has views, and the cells still
+// cover the whole plane. Tiles come out in depth-first order.
+struct Partition {
+  std::vector<PlannedTile> tiles;
+  std::vector<int> unseen;
+};
+Partition partition_buildings(const std::vector<BuildingFootprint>& footprints, const BuildingPixels& pixels,
+                              int max_images, double min_share);
 
 // tiles.json: the plan as written by `tile` and read by run-tiles, tiles status and merge.
 struct Tile {
@@ -61,6 +73,7 @@ struct TilePlan {
   int max_images = 30;
   double overlap = 0, min_share = 0;
   std::vector<Tile> tiles;
+  std::vector<std::string> unseen;  // buildings no view sees: in no tile (the cells still cover them)
 };
 
 void write_tile_plan(const std::filesystem::path& file, const TilePlan& plan);  // atomic

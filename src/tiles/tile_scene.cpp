@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "citymodel/city_objects.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
@@ -21,16 +22,12 @@ namespace fs = std::filesystem;
 std::vector<BuildingFootprint> building_footprints(const SceneCityModel& city) {
   const SemanticMesh& mesh = city.mesh;
   std::vector<BuildingFootprint> out(mesh.buildings.size());
-  std::vector<int> slot(mesh.entities.size(), -1);
-  for (size_t b = 0; b < mesh.buildings.size(); ++b) {
-    slot[mesh.buildings[b]] = static_cast<int>(b);
-    out[b] = {mesh.entities[mesh.buildings[b]].source_id, TileCell::kInf, TileCell::kInf, -TileCell::kInf,
-              -TileCell::kInf};
-  }
+  for (size_t b = 0; b < mesh.buildings.size(); ++b)
+    out[b] = {mesh.entities[mesh.buildings[b]].source_id, TileCell::kInf, TileCell::kInf, -TileCell::kInf, -TileCell::kInf};
+  const std::vector<int32_t> building = building_of_triangles(mesh);  // as the label maps' building.png
   for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const int e = mesh.tri_entity[t][2];
-    if (e < 0 || slot[e] < 0) continue;
-    BuildingFootprint& f = out[slot[e]];
+    if (building[t] < 0) continue;
+    BuildingFootprint& f = out[building[t]];
     for (uint32_t v : mesh.triangles[t]) {
       const Vec3f p = city.vertices[v];
       f.x0 = std::min(f.x0, double(p.x)), f.y0 = std::min(f.y0, double(p.y));
@@ -43,10 +40,11 @@ std::vector<BuildingFootprint> building_footprints(const SceneCityModel& city) {
 BuildingPixels building_pixels(const Scene& scene, const SceneCityModel& city, int downscale) {
   const LabelTable labels(city.mesh);
   const Raycaster raycaster(city.vertices, city.mesh.triangles, opening_priority(city.mesh));
-  BuildingPixels pixels(scene.views.size(), std::vector<int64_t>(city.mesh.buildings.size(), 0));
+  BuildingPixels pixels(scene.views.size());
   Progress progress("tile: visibility", scene.views.size(), "views");
   std::vector<RayHit> hits;
   LabelMaps maps;
+  std::vector<int64_t> count(city.mesh.buildings.size() + 1, 0);
   for (size_t v = 0; v < scene.views.size(); ++v) {
     PinholeCamera cam = scene.views[v].camera;
     const double s = 1.0 / downscale;
@@ -54,8 +52,13 @@ BuildingPixels building_pixels(const Scene& scene, const SceneCityModel& city, i
     cam.width = std::max(1, cam.width / downscale), cam.height = std::max(1, cam.height / downscale);
     raycaster.cast_view(cam, scene.views[v].pose, hits);
     labels.fill(hits, cam.width, cam.height, maps);
-    for (uint16_t b : maps.building)
-      if (b > 0) ++pixels[v][b - 1];
+    std::fill(count.begin(), count.end(), 0);
+    for (uint16_t b : maps.building) ++count[b];  // b = building + 1, 0 = none
+    for (size_t b = 1; b < count.size(); ++b)
+      if (count[b] > 0) {
+        pixels[v].pixels.push_back({static_cast<int32_t>(b - 1), count[b]});
+        pixels[v].total += count[b];
+      }
     progress.advance();
   }
   return pixels;
@@ -67,7 +70,10 @@ TilePlan make_tile_plan(const Scene& scene, const SceneCityModel& city, const Ti
   const std::vector<BuildingFootprint> footprints = building_footprints(city);
   if (footprints.empty()) fail(city_path, "the city model has no buildings to tile");
   const BuildingPixels pixels = building_pixels(scene, city, o.raycast_downscale);
-  const std::vector<PlannedTile> planned = partition_buildings(footprints, pixels, o.max_images, o.min_share);
+  // A building without surfaces at this LoD is never hit, so it is among the unseen.
+  const Partition partition = partition_buildings(footprints, pixels, o.max_images, o.min_share);
+  if (partition.tiles.empty())
+    fail(city_path, "no image sees any building of the city model: check the city transform (`align-check`)");
 
   auto absolute = [](const std::string& p) { return p.empty() ? p : fs::absolute(p).lexically_normal().string(); };
   TilePlan plan;
@@ -79,8 +85,12 @@ TilePlan make_tile_plan(const Scene& scene, const SceneCityModel& city, const Ti
   plan.max_images = o.max_images;
   plan.overlap = o.overlap;
   plan.min_share = o.min_share;
-  for (size_t i = 0; i < planned.size(); ++i) {
-    const PlannedTile& p = planned[i];
+  for (int b : partition.unseen) plan.unseen.push_back(footprints[b].id);
+  if (!plan.unseen.empty())
+    log_info(cat("tile: ", plan.unseen.size(), " of ", footprints.size(), " buildings are seen by no image (at --min-share ",
+                 o.min_share, " on their own): in no tile"));
+  for (size_t i = 0; i < partition.tiles.size(); ++i) {
+    const PlannedTile& p = partition.tiles[i];
     Tile t;
     char name[32];
     std::snprintf(name, sizeof name, "tile_%03zu", i);
@@ -94,16 +104,20 @@ TilePlan make_tile_plan(const Scene& scene, const SceneCityModel& city, const Ti
                   std::max(t.bounds[2], f.x1 + o.overlap), std::max(t.bounds[3], f.y1 + o.overlap)};
     }
     for (int v : p.views) t.images.push_back(scene.views[v].name);
-    if (t.images.empty()) {
-      log_warn("tile: " + t.name + " (" + t.buildings.front() + "...): no view sees its buildings; left out");
-      continue;
-    }
     if (static_cast<int>(t.images.size()) > o.max_images)
       log_warn(cat("tile: ", t.name, " has ", t.images.size(), " images (> --max-images ", o.max_images,
                    "): a single building seen by that many views is not split"));
     plan.tiles.push_back(std::move(t));
   }
   return plan;
+}
+
+std::string require_colmap_model(const fs::path& scene_dir) {
+  const std::string model_dir = find_colmap_model(scene_dir.string());
+  if (model_dir.empty())
+    fail(scene_dir.string(), "tile needs a COLMAP model (sparse/0): convert a Pix4D scene with `citylangsplat scene "
+                             "convert` first");
+  return model_dir;
 }
 
 namespace {
@@ -134,11 +148,7 @@ ColmapModel tile_colmap(const ColmapModel& all, const Tile& tile) {
 }  // namespace
 
 void write_tiles(const TilePlan& plan, const fs::path& tiles_dir) {
-  const std::string model_dir = find_colmap_model(plan.scene.string());
-  if (model_dir.empty())
-    fail(plan.scene.string(), "tile needs a COLMAP model (sparse/0): convert a Pix4D scene with `citylangsplat scene "
-                              "convert` first");
-  const ColmapModel all = read_colmap(model_dir);
+  const ColmapModel all = read_colmap(require_colmap_model(plan.scene));
   std::map<std::string, std::string> image_paths;  // name -> absolute source file
   for (const auto& [id, image] : all.images) image_paths[image.name] = fs::absolute(plan.scene / "images" / image.name).string();
 
@@ -149,7 +159,10 @@ void write_tiles(const TilePlan& plan, const fs::path& tiles_dir) {
       const fs::path link = dir / "images" / name;
       fs::create_directories(link.parent_path());
       if (fs::is_symlink(link) || fs::exists(link)) fs::remove(link);
-      fs::create_symlink(image_paths.at(name), link);
+      const auto source = image_paths.find(name);
+      if (source == image_paths.end())
+        fail((plan.scene / "sparse").string(), "tile " + tile.name + ": image '" + name + "' is not in the COLMAP model");
+      fs::create_symlink(source->second, link);
     }
     const fs::path sparse = dir / "sparse" / "0";
     fs::create_directories(sparse);

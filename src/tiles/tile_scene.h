@@ -24,7 +24,7 @@ struct TileOptions {
 };
 
 std::vector<BuildingFootprint> building_footprints(const SceneCityModel& city);
-// pixels[v][b] for the footprints' buildings (building_footprints order).
+// Each view's pixels per building (indices as building_footprints), from a raycast at 1/downscale.
 BuildingPixels building_pixels(const Scene& scene, const SceneCityModel& city, int downscale);
 
 // The plan for a loaded district (paths as given: made absolute here).
@@ -32,8 +32,11 @@ TilePlan make_tile_plan(const Scene& scene, const SceneCityModel& city, const Ti
                         const std::string& city_path, const std::string& transform_path,
                         const std::string& taxonomy_path, int lod);
 
-// Writes every tile's directory and then tiles.json (last: a folder with tiles.json is complete).
-// cls::Error for a scene that is not a COLMAP model (convert Pix4D with `citylangsplat scene convert`).
+// The scene's COLMAP model folder; cls::Error for a scene without one (Pix4D: `citylangsplat scene convert`).
+std::string require_colmap_model(const std::filesystem::path& scene_dir);
+
+// Writes every tile's directory and then tiles.json (last: a folder with tiles.json is complete);
+// run-tiles' finished tasks of an earlier plan no longer count (their markers hold its fingerprint).
 void write_tiles(const TilePlan& plan, const std::filesystem::path& tiles_dir);
 
 }  // namespace cls

@@ -4,7 +4,6 @@
 
 #include "core/log.h"
 #include "core/strings.h"
-#include "core/subprocess.h"
 #include "tiles/slurm_executor.h"
 #include "tiles/task_script.h"
 #include "tiles/tile_tasks.h"
@@ -45,17 +44,14 @@ std::string tiles_status_text(const fs::path& tiles_dir) {
     }
     text += "\n";
   }
-  const auto jobs = submitted_jobs(tiles_dir);
+  const std::vector<SubmittedJob> jobs = submitted_jobs(tiles_dir);
   if (!jobs.empty()) {
     std::string ids;
-    for (const auto& [phase, id] : jobs) ids += cat(ids.empty() ? "" : ", ", phase, " ", id);
+    for (const SubmittedJob& j : jobs) ids += cat(ids.empty() ? "" : ", ", j.phase, " ", j.id, " (array ", j.array, ")");
     text += "  slurm jobs: " + ids + "\n";
-    if (slurm_jobs_active(jobs)) {
-      std::string list;
-      for (const auto& [phase, id] : jobs) list += (list.empty() ? "" : ",") + id;
-      const CommandOutput q = run_capture({"squeue", "--noheader", "--jobs=" + list, "--format=    %i %j %T %r"});
-      text += q.out;
-    }
+    const auto rows = slurm_queue_rows(jobs);
+    if (!rows) text += "  squeue did not answer: try again\n";
+    for (const std::string& row : rows.value_or(std::vector<std::string>{})) text += "    " + row + "\n";
   }
   text += "  logs: " + (tiles_dir / "logs").string() + "\n";
   return text;

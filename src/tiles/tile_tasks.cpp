@@ -7,6 +7,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/exit_codes.h"
+#include "core/hash.h"
 #include "core/log.h"
 #include "language/autoencoder_stage.h"
 #include "pipeline/feature_source.h"
@@ -65,7 +66,6 @@ bool write_run_settings(const fs::path& tiles_dir, const RunTilesSettings& setti
   const fs::path file = settings_file(tiles_dir);
   const std::string text = settings.to_json().dump(2) + "\n";
   if (fs::exists(file) && read_text_file(file) == text) return false;
-  fs::remove_all(tiles_dir / "status");
   write_text_atomic(file, text);
   return true;
 }
@@ -88,15 +88,41 @@ fs::path task_marker(const fs::path& tiles_dir, TilePhase phase, int index) {
   return tiles_dir / "status" / (std::string(phase_name(phase)) + "_" + std::to_string(index) + ".json");
 }
 
+std::string tasks_fingerprint(const fs::path& tiles_dir) {
+  const fs::path settings = settings_file(tiles_dir);
+  return fnv1a64_hex(read_text_file(tiles_dir / "tiles.json") + "|" +
+                     (fs::exists(settings) ? read_text_file(settings) : std::string()));
+}
+
 std::vector<int> pending_tasks(const fs::path& tiles_dir, const TilePlan& plan, TilePhase phase) {
+  const std::string fingerprint = tasks_fingerprint(tiles_dir);
   std::vector<int> pending;
-  for (int i = 0; i < phase_task_count(plan, phase); ++i)
-    if (!fs::exists(task_marker(tiles_dir, phase, i))) pending.push_back(i);
+  for (int i = 0; i < phase_task_count(plan, phase); ++i) {
+    const fs::path marker = task_marker(tiles_dir, phase, i);
+    bool current = false;
+    if (fs::exists(marker)) try {
+        current = json::parse(read_text_file(marker)).value("fingerprint", "") == fingerprint;
+      } catch (const json::exception&) {  // a torn or foreign file: the task runs again
+      }
+    if (!current) pending.push_back(i);
+  }
   return pending;
 }
 
 fs::path tile_run_dir(const fs::path& tiles_dir, const Tile& tile) { return tiles_dir / tile.name / "citylangsplat"; }
 fs::path shared_autoencoder(const fs::path& tiles_dir) { return tiles_dir / "autoencoder.safetensors"; }
+
+RunTilesSettings resolve_run_settings(const fs::path& tiles_dir, const TilePlan& plan, RunTilesSettings s) {
+  const PipelineConfig probe = tile_pipeline_config(tiles_dir, plan.tiles.front(), s, TilePhase::Train);
+  const FeatureSource source = resolve_feature_source(probe, load_taxonomy(probe.city_options));
+  if (!source.provider) throw Error("run-tiles: " + source.missing_weights);
+  if (!source.note.empty()) log_warn("run-tiles: " + source.note);
+  s.models = models_choice_name(source.models);
+  s.rgb_iterations = source.rgb_iterations;
+  s.language_iterations = source.language_iterations;
+  s.autoencoder_epochs = source.autoencoder_epochs;
+  return s;
+}
 
 PipelineConfig tile_pipeline_config(const fs::path& tiles_dir, const Tile& tile, const RunTilesSettings& s,
                                     TilePhase phase) {
@@ -118,12 +144,11 @@ PipelineConfig tile_pipeline_config(const fs::path& tiles_dir, const Tile& tile,
 namespace {
 
 int run_shared_autoencoder(const fs::path& tiles_dir, const TilePlan& plan, const RunTilesSettings& s) {
-  const PipelineConfig first = tile_pipeline_config(tiles_dir, plan.tiles.front(), s, TilePhase::Train);
   AutoencoderStageOptions o;
   for (const Tile& t : plan.tiles) o.features_dirs.push_back(tile_run_dir(tiles_dir, t) / "features");
   o.out = shared_autoencoder(tiles_dir);
   o.max_samples = s.autoencoder_samples;
-  o.train.epochs = resolve_feature_source(first, load_taxonomy(first.city_options)).autoencoder_epochs;
+  o.train.epochs = s.autoencoder_epochs;  // resolved by run-tiles
   const AutoencoderReport r = run_autoencoder_stage(o);
   log_info(cat("tiles: shared autoencoder: ", r.train_samples, " SAM features from ", plan.tiles.size(),
                " tiles, held-out cosine ", r.holdout_cosine));
@@ -138,6 +163,7 @@ int run_tile_task(const fs::path& tiles_dir, TilePhase phase, int index) {
   if (index < 0 || index >= phase_task_count(plan, phase))
     throw UsageError(cat("tiles task: ", phase_name(phase), " has tasks 0..", phase_task_count(plan, phase) - 1,
                          ", not ", index));
+  const std::string fingerprint = tasks_fingerprint(tiles_dir);  // what this task runs under
   const auto start = std::chrono::steady_clock::now();
   int code = kExitOk;
   if (phase == TilePhase::Autoencoder) {
@@ -152,7 +178,8 @@ int run_tile_task(const fs::path& tiles_dir, TilePhase phase, int index) {
   gethostname(host, sizeof host - 1);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_text_atomic(task_marker(tiles_dir, phase, index),
-                    json({{"phase", phase_name(phase)}, {"index", index}, {"seconds", seconds}, {"host", host}}).dump() + "\n");
+                    json({{"phase", phase_name(phase)}, {"index", index}, {"seconds", seconds}, {"host", host},
+                          {"fingerprint", fingerprint}}).dump() + "\n");
   return kExitOk;
 }
 

@@ -4,8 +4,10 @@
 //   features     one task per tile: label maps and features (`run --stop-after features`)
 //   autoencoder  one task: the autoencoder shared by all tiles, on SAM features sampled from every tile
 //   train        one task per tile: the rest of `run` with the shared autoencoder
-// A task that finished leaves TILES/status/<phase>_<index>.json, so a rerun submits only the missing
-// ones; within a task the pipeline's stage stamps resume what was half done.
+// A task that finished leaves TILES/status/<phase>_<index>.json with the fingerprint of the plan and
+// the settings it ran under, so a rerun submits only the missing ones (a marker of another plan or other
+// settings, even one written late by a job still running then, does not count); within a task the
+// pipeline's stage stamps resume what was half done.
 #include <cstdint>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -23,6 +25,8 @@ const char* phase_name(TilePhase phase);
 TilePhase parse_tile_phase(const std::string& name);  // cls::UsageError for an unknown phase
 
 // The `run` options every tile shares (TILES/run-tiles.json).
+// run-tiles resolves `auto` and the default counts once, where it is started, so every task of every
+// node runs the same models and schedule.
 struct RunTilesSettings {
   std::string models = "auto";   // as run --models
   int resolution = 1;
@@ -34,17 +38,25 @@ struct RunTilesSettings {
   static RunTilesSettings from_json(const nlohmann::json& j, const std::string& file);
 };
 
-// Writes the settings; when they differ from those recorded, forgets every finished task (the stage
-// stamps still reuse whatever the change leaves valid). Returns whether they changed.
+// Writes the settings (atomic); returns whether they differ from those recorded (every task then runs
+// again: the stage stamps still reuse whatever the change leaves valid).
 bool write_run_settings(const std::filesystem::path& tiles_dir, const RunTilesSettings& settings);
 RunTilesSettings read_run_settings(const std::filesystem::path& tiles_dir);
 
 int phase_task_count(const TilePlan& plan, TilePhase phase);
 std::filesystem::path task_marker(const std::filesystem::path& tiles_dir, TilePhase phase, int index);
+// Of tiles.json and run-tiles.json as they are now: what a marker must hold to count.
+std::string tasks_fingerprint(const std::filesystem::path& tiles_dir);
+// The tasks of a phase without a marker of the current fingerprint.
 std::vector<int> pending_tasks(const std::filesystem::path& tiles_dir, const TilePlan& plan, TilePhase phase);
 
 std::filesystem::path tile_run_dir(const std::filesystem::path& tiles_dir, const Tile& tile);  // TILES/<tile>/citylangsplat
 std::filesystem::path shared_autoencoder(const std::filesystem::path& tiles_dir);           // TILES/autoencoder.safetensors
+
+// `auto` and zero counts replaced by what they stand for (the models found from here, their schedule).
+// cls::Error with the reason when --models real finds no weights.
+RunTilesSettings resolve_run_settings(const std::filesystem::path& tiles_dir, const TilePlan& plan,
+                                      RunTilesSettings settings);
 
 // The pipeline configuration of one tile in a phase.
 PipelineConfig tile_pipeline_config(const std::filesystem::path& tiles_dir, const Tile& tile,

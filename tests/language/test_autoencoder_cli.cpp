@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 
 #include "cli_runner.h"
@@ -49,6 +50,40 @@ TEST(AutoencoderStage, FindsSamFeatureFilesOnly) {
   const at::Tensor f = read_sam_features(files, 512);
   EXPECT_EQ(f.sizes(), (at::IntArrayRef{100, 512}));
   EXPECT_THROW(find_sam_feature_files(dir.path / "a_f.npy"), Error);
+}
+
+TEST(AutoencoderStage, SamplesRowsUniformlyAcrossFiles) {
+  // 40 rows in files of 7, 0, 21 and 12 rows, row r holding r in its first column; 10 of them kept.
+  TempDir dir;
+  const int64_t sizes[] = {7, 0, 21, 12}, total = 40, keep = 10;
+  std::vector<fs::path> files;
+  int64_t next = 0;
+  for (size_t i = 0; i < 4; ++i) {
+    at::Tensor f = at::zeros({sizes[i], 4});
+    if (sizes[i] > 0) f.select(1, 0).copy_(at::arange(next, next + sizes[i], at::kFloat));
+    next += sizes[i];
+    files.push_back(dir.path / ("v" + std::to_string(i) + "_f.npy"));
+    write_features(files.back(), f);
+  }
+  std::vector<int> count(total, 0);
+  const int seeds = 1500;
+  for (int seed = 0; seed < seeds; ++seed) {
+    int64_t read = 0;
+    const at::Tensor s = read_sam_features(files, 4, keep, seed, &read);
+    ASSERT_EQ(read, total);
+    ASSERT_EQ(s.size(0), keep);
+    std::set<int> rows;
+    for (int64_t k = 0; k < keep; ++k) rows.insert(static_cast<int>(s[k][0].item<float>()));
+    ASSERT_EQ(rows.size(), static_cast<size_t>(keep)) << "a row was drawn twice (seed " << seed << ")";
+    for (int r : rows) ++count[r];
+  }
+  // Each row is kept with probability 1/4: 375 of 1500 draws, standard deviation 16.8; 6 of them allowed.
+  for (int r = 0; r < total; ++r) EXPECT_NEAR(count[r], seeds * keep / total, 100) << "row " << r;
+  // Fewer rows than asked: every row, once.
+  const at::Tensor all = read_sam_features(files, 4, 100, 1);
+  EXPECT_EQ(all.size(0), total);
+  EXPECT_EQ(all.select(1, 0).max().item<float>(), total - 1);
+  EXPECT_EQ(std::get<0>(at::_unique(all.select(1, 0))).size(0), total);
 }
 
 TEST(AutoencoderCli, TrainsAndWritesModelAndReport) {

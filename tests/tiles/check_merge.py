@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Checks a merged model against its tiles without the merge's own code: every Gaussian of the PLY
 lies in the cell of the tile its "tile" property names and in no other cell (tiles.json), the counts
-agree with merge.json, and each tile kept exactly its Gaussians inside its cell (the tile's own PLY
-read again). Exit 1 with the first disagreement."""
+agree with merge.json, and each tile contributed exactly the Gaussians of its own PLY inside its cell,
+every property equal. Exit 1 with the first disagreement."""
 import argparse
 import json
 import os
@@ -48,20 +48,25 @@ def main():
     names, rows = read_ply(os.path.join(a.merged, "language", a.method, "point_cloud.ply"))
     ix, iy, it = names.index("x"), names.index("y"), names.index("tile")
     cells = [t["cell"] for t in plan["tiles"]]
-    per_tile = [0] * len(cells)
+    per_tile = [[] for _ in cells]
     for r in rows:
         x, y, t = r[ix], r[iy], r[it]
         owners = [k for k, c in enumerate(cells) if inside(c, x, y)]
         if owners != [t]:
             sys.exit(f"Gaussian at ({x}, {y}) of tile {t} lies in the cells {owners}")
-        per_tile[t] += 1
+        per_tile[t].append(r)
     if len(rows) != report["gaussians"]:
         sys.exit(f"merged PLY has {len(rows)} Gaussians, merge.json says {report['gaussians']}")
     for k, t in enumerate(plan["tiles"]):
         tn, trows = read_ply(os.path.join(a.tiles, t["name"], "citylangsplat", "language", a.method, "point_cloud.ply"))
-        expected = sum(1 for r in trows if inside(t["cell"], r[tn.index("x")], r[tn.index("y")]))
-        if per_tile[k] != expected or report["tiles"][k]["kept"] != expected:
-            sys.exit(f"{t['name']}: kept {per_tile[k]} (merge.json {report['tiles'][k]['kept']}), its cell holds {expected}")
+        # The merged rows carry the tile's own properties in its order, then "tile".
+        columns = [names.index(n) for n in tn]
+        kept = sorted(tuple(r[c] for c in columns) for r in per_tile[k])
+        expected = sorted(r for r in trows if inside(t["cell"], r[tn.index("x")], r[tn.index("y")]))
+        if kept != expected or report["tiles"][k]["kept"] != len(expected):
+            sys.exit(f"{t['name']}: the merged model holds {len(kept)} of its Gaussians (merge.json "
+                     f"{report['tiles'][k]['kept']}), its PLY has {len(expected)} in its cell, or they differ")
+    per_tile = [len(p) for p in per_tile]
     print(f"{len(rows)} Gaussians, each in its own tile's cell and no other; per tile {per_tile}")
 
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <set>
 
 #include "core/atomic_file.h"
@@ -33,7 +34,19 @@ struct TempDir {
   ~TempDir() { fs::remove_all(path); }
 };
 
-// Four 6 x 8 m houses in a row at x = 0, 10, 20, 30; view v sees house v with 1000 pixels and each
+// From a dense views x buildings table.
+BuildingPixels sparse(const std::vector<std::vector<int64_t>>& dense) {
+  BuildingPixels p(dense.size());
+  for (size_t v = 0; v < dense.size(); ++v)
+    for (size_t b = 0; b < dense[v].size(); ++b)
+      if (dense[v][b] > 0) {
+        p[v].pixels.push_back({static_cast<int32_t>(b), dense[v][b]});
+        p[v].total += dense[v][b];
+      }
+  return p;
+}
+
+// n 6 x 8 m houses in a row at x = 0, 10, 20, ...; view v sees house v with 1000 pixels and each
 // neighbour with 100.
 std::vector<BuildingFootprint> row_of_houses(int n) {
   std::vector<BuildingFootprint> f;
@@ -41,29 +54,35 @@ std::vector<BuildingFootprint> row_of_houses(int n) {
   return f;
 }
 BuildingPixels one_view_per_house(int n) {
-  BuildingPixels p(n, std::vector<int64_t>(n, 0));
+  std::vector<std::vector<int64_t>> p(n, std::vector<int64_t>(n, 0));
   for (int v = 0; v < n; ++v) {
     p[v][v] = 1000;
     if (v > 0) p[v][v - 1] = 100;
     if (v + 1 < n) p[v][v + 1] = 100;
   }
-  return p;
+  return sparse(p);
+}
+
+std::vector<char> set_of(std::initializer_list<int> buildings, size_t n) {
+  std::vector<char> in(n, 0);
+  for (int b : buildings) in[b] = 1;
+  return in;
 }
 
 TEST(TilePartition, ViewsJoinWhereTheirShareIsReached) {
   const BuildingPixels p = one_view_per_house(4);
   // View 1 has 1200 building pixels: house 0 is 100/1200 = 8.3% of them.
-  EXPECT_EQ(views_of_buildings({0}, p, 0.05), (std::vector<int>{0, 1}));
-  EXPECT_EQ(views_of_buildings({0}, p, 0.09), (std::vector<int>{0}));
-  EXPECT_EQ(views_of_buildings({1, 2}, p, 0.5), (std::vector<int>{1, 2}));
-  EXPECT_TRUE(views_of_buildings({0}, BuildingPixels(2, std::vector<int64_t>(4, 0)), 0.0).empty());
+  EXPECT_EQ(views_of_buildings(set_of({0}, 4), p, 0.05), (std::vector<int>{0, 1}));
+  EXPECT_EQ(views_of_buildings(set_of({0}, 4), p, 0.09), (std::vector<int>{0}));
+  EXPECT_EQ(views_of_buildings(set_of({1, 2}, 4), p, 0.5), (std::vector<int>{1, 2}));
+  EXPECT_TRUE(views_of_buildings(set_of({0}, 4), sparse({{0, 0, 0, 0}, {0, 0, 0, 0}}), 0.0).empty());
 }
 
 TEST(TilePartition, BisectsAtTheMedianUntilTheImagesFit) {
   // min_share 0.05: a house is seen by its own view and by its neighbours' (100 of 1100 or 1200
   // pixels, >= 8%). All four have 4 views; a budget of 3 cuts the row once, at x = 18 (between the
   // centres 13 and 23): {0, 1} has views 0, 1, 2 and {2, 3} views 1, 2, 3.
-  const auto two = partition_buildings(row_of_houses(4), one_view_per_house(4), 3, 0.05);
+  const auto two = partition_buildings(row_of_houses(4), one_view_per_house(4), 3, 0.05).tiles;
   ASSERT_EQ(two.size(), 2u);
   EXPECT_EQ(two[0].buildings, (std::vector<int>{0, 1}));
   EXPECT_EQ(two[0].views, (std::vector<int>{0, 1, 2}));
@@ -74,7 +93,7 @@ TEST(TilePartition, BisectsAtTheMedianUntilTheImagesFit) {
   EXPECT_EQ(two[1].cell.x0, 18);
   // A budget of 2 cuts each half again, at 8 and 28; the inner houses keep their 3 views (one
   // building is never split).
-  const auto four = partition_buildings(row_of_houses(4), one_view_per_house(4), 2, 0.05);
+  const auto four = partition_buildings(row_of_houses(4), one_view_per_house(4), 2, 0.05).tiles;
   ASSERT_EQ(four.size(), 4u);
   const double cuts[] = {-TileCell::kInf, 8, 18, 28, TileCell::kInf};
   const std::vector<std::vector<int>> views = {{0, 1}, {0, 1, 2}, {1, 2, 3}, {2, 3}};
@@ -92,12 +111,12 @@ TEST(TilePartition, CellsPartitionThePlaneAndHoldTheirBuildings) {
   std::vector<BuildingFootprint> f;
   for (int i = 0; i < 5; ++i)
     for (int j = 0; j < 3; ++j) f.push_back({"b", 10.0 * i, 12.0 * j, 10.0 * i + 6, 12.0 * j + 8});
-  BuildingPixels p(20, std::vector<int64_t>(f.size(), 0));
+  std::vector<std::vector<int64_t>> dense(20, std::vector<int64_t>(f.size(), 0));
   at::manual_seed(3);
-  const at::Tensor r = at::randint(0, 50, {20, static_cast<int64_t>(f.size())}, at::kLong);
+  const at::Tensor r = at::randint(1, 50, {20, static_cast<int64_t>(f.size())}, at::kLong);
   for (int v = 0; v < 20; ++v)
-    for (size_t b = 0; b < f.size(); ++b) p[v][b] = r[v][b].item<int64_t>();
-  const auto tiles = partition_buildings(f, p, 8, 0.1);
+    for (size_t b = 0; b < f.size(); ++b) dense[v][b] = r[v][b].item<int64_t>();
+  const auto tiles = partition_buildings(f, sparse(dense), 8, 0.1).tiles;
   ASSERT_GT(tiles.size(), 1u);
   std::set<int> seen;
   for (size_t t = 0; t < tiles.size(); ++t)
@@ -114,20 +133,26 @@ TEST(TilePartition, CellsPartitionThePlaneAndHoldTheirBuildings) {
     }
 }
 
-TEST(TilePartition, OneBuildingIsNeverSplitAndCoincidentCentresUseTheOtherAxis) {
-  const auto one = partition_buildings(row_of_houses(1), {{5}, {5}, {5}}, 1, 0.1);
+TEST(TilePartition, UnseenBuildingsAreLeftOutAndTheWiderAxisIsCut) {
+  // House 2 of 3 is seen by no view: no tile holds it, the other two still split, and the cells cover it.
+  const auto p = partition_buildings(row_of_houses(3), sparse({{1000, 0, 0}, {0, 1000, 0}}), 1, 0.5);
+  EXPECT_EQ(p.unseen, (std::vector<int>{2}));
+  ASSERT_EQ(p.tiles.size(), 2u);
+  EXPECT_TRUE(p.tiles[1].cell.contains(23, 4));
+  // One building with more views than the budget stays one tile.
+  const auto one = partition_buildings(row_of_houses(1), sparse({{5}, {5}, {5}}), 1, 0.1).tiles;
   ASSERT_EQ(one.size(), 1u);
   EXPECT_EQ(one[0].views.size(), 3u);
-  // Two houses with the same x centre, one above the other: the cut is in y (at 10).
+  // Two houses one above the other (same x centre, y centres 4 and 16): the cut is in y, at 10.
   const std::vector<BuildingFootprint> stacked = {{"a", 0, 0, 6, 8}, {"b", -2, 12, 8, 20}};
-  const auto tiles = partition_buildings(stacked, {{9, 0}, {0, 9}}, 1, 0.5);
+  const auto tiles = partition_buildings(stacked, sparse({{9, 0}, {0, 9}}), 1, 0.5).tiles;
   ASSERT_EQ(tiles.size(), 2u);
   EXPECT_EQ(tiles[0].cell.y1, 10);
   EXPECT_EQ(tiles[1].cell.y0, 10);
+  EXPECT_TRUE(std::isinf(tiles[0].cell.x0) && std::isinf(tiles[0].cell.x1));
 }
 
-TEST(TilePlanFile, RoundTripsWithUnboundedSides) {
-  TempDir dir("plan");
+TilePlan two_tile_plan() {
   TilePlan plan;
   plan.scene = "/data/district";
   plan.city_model = "/data/city.json";
@@ -135,28 +160,53 @@ TEST(TilePlanFile, RoundTripsWithUnboundedSides) {
   plan.max_images = 24;
   plan.overlap = 5;
   plan.min_share = 0.2;
-  plan.tiles.push_back({"tile_000", {"a", "b"}, {-TileCell::kInf, -TileCell::kInf, 18, TileCell::kInf}, {-5, -5, 21, 13}, {"0001.png"}});
+  plan.unseen = {"c"};
+  plan.tiles.push_back({"tile_000", {"a"}, {-TileCell::kInf, -TileCell::kInf, 10, TileCell::kInf}, {-5, -5, 11, 13}, {"0.png"}});
+  plan.tiles.push_back({"tile_001", {"b"}, {10, -TileCell::kInf, TileCell::kInf, TileCell::kInf}, {5, -5, 21, 13}, {"1.png"}});
+  return plan;
+}
+
+TEST(TilePlanFile, RoundTripsWithUnboundedSidesAndRefusesBadNames) {
+  TempDir dir("plan");
+  const TilePlan plan = two_tile_plan();
   write_tile_plan(dir.path / "tiles.json", plan);
   const TilePlan back = read_tiles_dir(dir.path);
-  ASSERT_EQ(back.tiles.size(), 1u);
+  ASSERT_EQ(back.tiles.size(), 2u);
   EXPECT_TRUE(std::isinf(back.tiles[0].cell.x0) && back.tiles[0].cell.x0 < 0);
-  EXPECT_EQ(back.tiles[0].cell.x1, 18);
+  EXPECT_EQ(back.tiles[0].cell.x1, 10);
   EXPECT_TRUE(std::isinf(back.tiles[0].cell.y1) && back.tiles[0].cell.y1 > 0);
-  EXPECT_EQ(back.tiles[0].buildings, (std::vector<std::string>{"a", "b"}));
+  EXPECT_EQ(back.tiles[1].bounds, (std::array<double, 4>{5, -5, 21, 13}));
   EXPECT_EQ(back.scene, plan.scene);
-  write_text_atomic(dir.path / "tiles.json", R"({"tiles": [{"name": "../x"}]})");
-  EXPECT_THROW(read_tiles_dir(dir.path), Error);
+  EXPECT_EQ(back.unseen, plan.unseen);
+  // The same plan with a tile named out of the folder.
+  nlohmann::json j = nlohmann::json::parse(read_text_file(dir.path / "tiles.json"));
+  j["tiles"][1]["name"] = "../elsewhere";
+  write_text_atomic(dir.path / "tiles.json", j.dump());
+  try {
+    read_tiles_dir(dir.path);
+    ADD_FAILURE() << "a tile named ../elsewhere was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("not a plain directory name"), std::string::npos) << e.what();
+  }
   fs::remove(dir.path / "tiles.json");
   EXPECT_THROW(read_tiles_dir(dir.path), Error);
 }
 
-TEST(TileTasks, FinishedTasksAreForgottenWhenTheSettingsChange) {
+void mark_finished(const fs::path& tiles_dir, TilePhase phase, int index) {
+  write_text_atomic(task_marker(tiles_dir, phase, index),
+                    nlohmann::json({{"fingerprint", tasks_fingerprint(tiles_dir)}}).dump());
+}
+
+TEST(TileTasks, MarkersCountOnlyForThePlanAndSettingsTheyRanUnder) {
   TempDir dir("tasks");
-  TilePlan plan;
-  plan.tiles.resize(3);
+  TilePlan plan = two_tile_plan();
+  plan.tiles.push_back(plan.tiles.back());
+  plan.tiles.back().name = "tile_002";
+  write_tile_plan(dir.path / "tiles.json", plan);
   RunTilesSettings s;
   EXPECT_TRUE(write_run_settings(dir.path, s));
-  write_text_atomic(task_marker(dir.path, TilePhase::Features, 1), "{}");
+  mark_finished(dir.path, TilePhase::Features, 1);
+  write_text_atomic(task_marker(dir.path, TilePhase::Features, 2), "{\"fingerprint\": \"of another run\"}");
   EXPECT_EQ(pending_tasks(dir.path, plan, TilePhase::Features), (std::vector<int>{0, 2}));
   EXPECT_EQ(pending_tasks(dir.path, plan, TilePhase::Autoencoder), (std::vector<int>{0}));
   EXPECT_FALSE(write_run_settings(dir.path, s));  // the same settings keep what finished
@@ -165,6 +215,10 @@ TEST(TileTasks, FinishedTasksAreForgottenWhenTheSettingsChange) {
   EXPECT_TRUE(write_run_settings(dir.path, s));
   EXPECT_EQ(pending_tasks(dir.path, plan, TilePhase::Features).size(), 3u);
   EXPECT_EQ(read_run_settings(dir.path).language_iterations, 7);
+  mark_finished(dir.path, TilePhase::Features, 0);
+  plan.max_images = 12;  // a new plan: nothing it did not run counts
+  write_tile_plan(dir.path / "tiles.json", plan);
+  EXPECT_EQ(pending_tasks(dir.path, plan, TilePhase::Features).size(), 3u);
   EXPECT_EQ(parse_tile_phase("train"), TilePhase::Train);
   EXPECT_THROW(parse_tile_phase("merge"), UsageError);
 }
@@ -172,27 +226,36 @@ TEST(TileTasks, FinishedTasksAreForgottenWhenTheSettingsChange) {
 TEST(TaskScript, RetriesFailuresButNotInterruptionsAndQuotes) {
   TempDir dir("script");
   EXPECT_EQ(shell_quote("it's"), "'it'\\''s'");
-  EXPECT_EQ(array_spec({1, 3, 4}), "1,3,4");
-  // A stand-in binary that fails with the exit status named in a file and counts its calls.
-  const fs::path fake = dir.path / "fake bin";
-  write_text_atomic(fake, "#!/bin/sh\necho x >> \"$(dirname \"$0\")/calls\"\nexit $(cat \"$(dirname \"$0\")/code\")\n");
+  EXPECT_EQ(array_spec({0, 1, 2, 5, 7, 8}), "0-2,5,7-8");
+  EXPECT_EQ(array_spec({3}), "3");
+  // A stand-in binary (in a folder with a space and a quote) that records its task index and fails
+  // with the status named in a file.
+  const fs::path bin = dir.path / "it's here";
+  fs::create_directories(bin);
+  const fs::path fake = bin / "fake";
+  write_text_atomic(fake, "#!/bin/sh\necho \"$5\" >> \"$(dirname \"$0\")/calls\"\nexit $(cat \"$(dirname \"$0\")/code\")\n");
   fs::permissions(fake, fs::perms::owner_all);
   const fs::path script = write_task_script(dir.path, TilePhase::Train, fake.string(), 2);
-  auto run = [&](int code) {
-    write_text_atomic(dir.path / "code", std::to_string(code));
-    fs::remove(dir.path / "calls");
-    const pid_t pid = spawn_logged({"bash", script.string()}, dir.path / "log", {"SLURM_ARRAY_TASK_ID=1"});
+  auto run = [&](int code, std::vector<std::string> env) {
+    write_text_atomic(bin / "code", std::to_string(code));
+    fs::remove(bin / "calls");
+    const pid_t pid = spawn_logged({"bash", script.string()}, dir.path / "log", env);
     int status = -1;
-    EXPECT_EQ(wait_any_child(status), pid);
-    const std::string calls = read_text_file(dir.path / "calls");
-    return std::pair{status, static_cast<int>(std::count(calls.begin(), calls.end(), '\n'))};
+    pid_t ended = 0;
+    while ((ended = wait_any_child(status, 5)) == 0) {
+    }
+    EXPECT_EQ(ended, pid);
+    return std::pair{status, read_text_file(bin / "calls")};
   };
-  EXPECT_EQ(run(0), (std::pair{0, 1}));
-  EXPECT_EQ(run(1), (std::pair{1, 3}));      // 1 + 2 retries
-  EXPECT_EQ(run(130), (std::pair{130, 1}));  // interrupted: resumed by the next run, not retried
+  EXPECT_EQ(run(0, {"SLURM_ARRAY_TASK_ID=1"}), (std::pair<int, std::string>{0, "1\n"}));
+  EXPECT_EQ(run(1, {"SLURM_ARRAY_TASK_ID=1"}), (std::pair<int, std::string>{1, "1\n1\n1\n"}));  // 1 + 2 retries
+  EXPECT_EQ(run(130, {"SLURM_ARRAY_TASK_ID=1"}), (std::pair<int, std::string>{130, "1\n"}));  // resumed later
+  EXPECT_EQ(run(137, {"SLURM_ARRAY_TASK_ID=1"}), (std::pair<int, std::string>{137, "1\n"}));  // killed
+  // A chunk of a phase larger than MaxArraySize: task = array index + offset.
+  EXPECT_EQ(run(0, {"SLURM_ARRAY_TASK_ID=3", "CLS_TASK_OFFSET=1000"}), (std::pair<int, std::string>{0, "1003\n"}));
 }
 
-// A tile's language model: n Gaussians at the given x positions (y = 0), latents = x per level.
+// A tile's language model: Gaussians at the given x positions (y = 0), latents x + level.
 void write_tile_model(const fs::path& dir, const std::vector<float>& xs, uint64_t ae_seed) {
   const int64_t n = static_cast<int64_t>(xs.size());
   AutoencoderConfig config;
@@ -205,16 +268,21 @@ void write_tile_model(const fs::path& dir, const std::vector<float>& xs, uint64_
   save_language_model(dir.string(), m);
 }
 
-TEST(TileMerge, KeepsEachTilesOwnCellAndRefusesOtherAutoencoders) {
+TEST(TileMerge, KeepsEachTilesOwnCellAndRefusesWhatIsNotShared) {
   TempDir dir("merge");
-  TilePlan plan;
-  plan.scene = "/data/district";
-  plan.tiles.push_back({"tile_000", {"a"}, {-TileCell::kInf, -TileCell::kInf, 10, TileCell::kInf}, {}, {"0.png"}});
-  plan.tiles.push_back({"tile_001", {"b"}, {10, -TileCell::kInf, TileCell::kInf, TileCell::kInf}, {}, {"1.png"}});
+  const TilePlan plan = two_tile_plan();
   write_tile_plan(dir.path / "tiles.json", plan);
+  write_run_settings(dir.path, RunTilesSettings{});
+  const fs::path model0 = tile_run_dir(dir.path, plan.tiles[0]) / "language" / "citylangsplat";
+  const fs::path model1 = tile_run_dir(dir.path, plan.tiles[1]) / "language" / "citylangsplat";
   // Both tiles trained Gaussians across the seam at x = 10.
-  write_tile_model(tile_run_dir(dir.path, plan.tiles[0]) / "language" / "citylangsplat", {1, 9.5, 10, 12}, 1);
-  write_tile_model(tile_run_dir(dir.path, plan.tiles[1]) / "language" / "citylangsplat", {8, 10, 11}, 1);
+  write_tile_model(model0, {1, 9.5, 10, 12}, 1);
+  write_tile_model(model1, {8, 10, 11}, 1);
+  fs::copy_file(model0 / "autoencoder.safetensors", shared_autoencoder(dir.path));
+  mark_finished(dir.path, TilePhase::Train, 0);
+  EXPECT_THROW(merge_tiles(dir.path, dir.path / "merged"), Error);  // tile 1 has not finished
+  mark_finished(dir.path, TilePhase::Train, 1);
+
   const nlohmann::json r = merge_tiles(dir.path, dir.path / "merged");
   const auto& m = r["methods"]["citylangsplat"];
   EXPECT_EQ(m["gaussians"], 4);  // 1 and 9.5 of tile 0, 10 and 11 of tile 1
@@ -228,7 +296,7 @@ TEST(TileMerge, KeepsEachTilesOwnCellAndRefusesOtherAutoencoders) {
   EXPECT_TRUE(at::equal(merged.gaussians.extra("tile")->values, at::tensor({0, 0, 1, 1}, at::kInt)));
   EXPECT_EQ(merged.info["scene"], "/data/district");
 
-  write_tile_model(tile_run_dir(dir.path, plan.tiles[1]) / "language" / "citylangsplat", {8, 10, 11}, 2);
+  write_tile_model(model1, {8, 10, 11}, 2);  // trained with another autoencoder
   EXPECT_THROW(merge_tiles(dir.path, dir.path / "merged2"), Error);
 }
 
