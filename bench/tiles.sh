@@ -27,7 +27,7 @@ work=$(readlink -f "$work")
 if [ "$executor" = slurm ] && [ -z "${SLURM_CONF:-}" ]; then
   cluster=$(mktemp -d /tmp/cls-slurm.XXXXXX)
   trap 'bash "$repo/tests/tiles/slurm_cluster.sh" stop "$cluster"; rm -rf "$cluster"' EXIT
-  bash tests/tiles/slurm_cluster.sh start "$cluster"
+  bash tests/tiles/slurm_cluster.sh start "$cluster" --accounting || bash tests/tiles/slurm_cluster.sh start "$cluster"
   eval "$(bash tests/tiles/slurm_cluster.sh env "$cluster")"
 fi
 
@@ -52,36 +52,48 @@ else
 fi
 "$bin" merge "$work/tiles" --out "$work/merged" | tee "$work/merge.txt"
 tiled_s=$((SECONDS - start))
+if [ "$executor" = slurm ] && sacct -n -X -j 1 >/dev/null 2>&1; then
+  echo "--- sacct (the arrays of run-tiles):"
+  sacct --format=JobID%12,JobName%16,State,ExitCode,Elapsed -X
+fi
 
 start=$SECONDS
 "$bin" -q run "$work/district" --out "$work/untiled" --rgb-iterations "$untiled_rgb" \
   --language-iterations "$untiled_language" "${common[@]}" > "$work/untiled.log" 2>&1
+start=$SECONDS
+"$bin" -q run "$work/district" --out "$work/untiled_same" --rgb-iterations "$rgb" --language-iterations "$language" \
+  "${common[@]}" > "$work/untiled_same.log" 2>&1
+untiled_same_s=$((SECONDS - start))
 "$bin" -q render "$work/merged/language/citylangsplat" --scene "$work/district" --out "$work/merged_render" --views test
 untiled_s=$((SECONDS - start))
 
 "$bin" -q evaluate --scene "$work/district" --model tiled="$work/merged/language/citylangsplat" \
-  --model untiled="$work/untiled/language/citylangsplat" --out "$work/eval" > /dev/null
-python3 - "$work" "$tiles" "$tiled_s" "$untiled_s" "$rgb" "$language" "$executor" "$untiled_rgb" "$untiled_language" <<'PY'
+  --model untiled="$work/untiled/language/citylangsplat" --model untiled_same="$work/untiled_same/language/citylangsplat" \
+  --out "$work/eval" > /dev/null
+python3 - "$work" "$tiles" "$tiled_s" "$untiled_s" "$rgb" "$language" "$executor" "$untiled_rgb" "$untiled_language" \
+  "$untiled_same_s" <<'PY'
 import json, sys
-work, tiles, tiled_s, untiled_s, rgb, language, executor, untiled_rgb, untiled_language = sys.argv[1:]
+work, tiles, tiled_s, untiled_s, rgb, language, executor, untiled_rgb, untiled_language, untiled_same_s = sys.argv[1:]
 plan = json.load(open(f"{work}/tiles/tiles.json"))
 merge = json.load(open(f"{work}/merged/merge.json"))["methods"]["citylangsplat"]
 e = json.load(open(f"{work}/eval/eval.json"))["results"]
 images = [len(t["images"]) for t in plan["tiles"]]
 print(f"district: 8 buildings, 48 images 200x150; {tiles} tiles, images per tile {images}; executor {executor}")
 print(f"tiles: {rgb} photometric + {language} language iterations each; untiled: {untiled_rgb} + {untiled_language} "
-      "(the same steps per image)")
+      f"(the same steps per image); untiled_same: {rgb} + {language} (the tiles' settings)")
 print(f"merged: {merge['gaussians']} Gaussians; in another tile's cell: {merge['in_another_tiles_cell']} "
       f"(a plain union of the tiles: {merge['naive_union_in_another_tiles_cell']})")
 psnr = {"tiled": json.load(open(f"{work}/merged_render/render.json"))["mean_psnr"],
-        "untiled": json.load(open(f"{work}/untiled/render/render.json"))["mean_psnr"]}
+        "untiled": json.load(open(f"{work}/untiled/render/render.json"))["mean_psnr"],
+        "untiled_same": json.load(open(f"{work}/untiled_same/render/render.json"))["mean_psnr"]}
 print("| | wall (s) | Gaussians | held-out PSNR (dB) | 2D mIoU | 3D mIoU | 3D mIoU, best labelling |")
 print("|---|---:|---:|---:|---:|---:|---:|")
-for name, secs in (("tiled", tiled_s), ("untiled", untiled_s)):
+for name, secs in (("tiled", tiled_s), ("untiled", untiled_s), ("untiled_same", untiled_same_s)):
     r = e[name]
     print(f"| {name} | {float(secs):.0f} | {r['3d']['gaussians']} | {psnr[name]:.2f} | {100 * r['2d']['miou']:.2f} | "
           f"{100 * r['3d']['miou']:.2f} | {100 * r['3d']['best_labelling']['miou']:.2f} |")
-d2 = 100 * (e["tiled"]["2d"]["miou"] - e["untiled"]["2d"]["miou"])
-d3 = 100 * (e["tiled"]["3d"]["miou"] - e["untiled"]["3d"]["miou"])
-print(f"tiled - untiled: 2D {d2:+.2f}, 3D {d3:+.2f} mIoU points")
+for other in ("untiled", "untiled_same"):
+    d2 = 100 * (e["tiled"]["2d"]["miou"] - e[other]["2d"]["miou"])
+    d3 = 100 * (e["tiled"]["3d"]["miou"] - e[other]["3d"]["miou"])
+    print(f"tiled - {other}: 2D {d2:+.2f}, 3D {d3:+.2f} mIoU points")
 PY

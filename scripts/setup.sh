@@ -2,18 +2,21 @@
 # One-command set-up on a fresh Debian 12 machine: installs the Debian packages the project needs
 # (idempotent), configures and builds into build/, installs the viewer page's npm packages
 # (scripts/install_web.sh) and generates the bundled example scene.
-#   bash scripts/setup.sh [--no-example] [--slurm]
+#   bash scripts/setup.sh [--no-example] [--slurm] [--slurm-accounting]
 # --slurm also installs Slurm and MUNGE for the tests that run a private cluster
 # (tests/tiles/slurm_cluster.sh); without them those tests are skipped.
+# --slurm-accounting installs what --slurm does plus slurmdbd and MariaDB, for
+# `slurm_cluster.sh start DIR --accounting` (a private cluster with sacct).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-EXAMPLE=1; SLURM=0
+EXAMPLE=1; SLURM=0; SLURM_ACCOUNTING=0
 for arg in "$@"; do
   case $arg in
     --no-example) EXAMPLE=0 ;;
     --slurm) SLURM=1 ;;
-    *) echo "usage: $0 [--no-example] [--slurm]" >&2; exit 2 ;;
+    --slurm-accounting) SLURM=1; SLURM_ACCOUNTING=1 ;;
+    *) echo "usage: $0 [--no-example] [--slurm] [--slurm-accounting]" >&2; exit 2 ;;
   esac
 done
 
@@ -25,6 +28,7 @@ PACKAGES=(build-essential cmake ninja-build pkg-config
 # npm installs the viewer page's packages (three, Spark); Debian's when no npm is on the PATH.
 command -v npm >/dev/null 2>&1 || PACKAGES+=(npm)
 [ "$SLURM" = 0 ] || PACKAGES+=(slurm-wlm munge)
+[ "$SLURM_ACCOUNTING" = 0 ] || PACKAGES+=(slurmdbd mariadb-server)
 
 missing=()
 for p in "${PACKAGES[@]}"; do

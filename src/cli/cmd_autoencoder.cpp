@@ -8,6 +8,7 @@
 #include "core/args.h"
 #include "cli/commands.h"
 #include "core/error.h"
+#include "core/strings.h"
 #include "language/autoencoder_stage.h"
 
 namespace cls {
@@ -40,12 +41,6 @@ std::vector<int> parse_dims(const std::string& option, const std::string& text) 
   return dims;
 }
 
-std::string to_string(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
 }  // namespace
 
 int cmd_autoencoder(int argc, char** argv) {
@@ -60,9 +55,9 @@ int cmd_autoencoder(int argc, char** argv) {
       .option("out", "", "the model file to write, e.g. OUT/autoencoder.safetensors (required)")
       .option("epochs", std::to_string(dt.epochs), "training epochs")
       .option("batch-size", std::to_string(dt.batch_size), "mini-batch size (>= 2)")
-      .option("lr", to_string(dt.lr), "Adam learning rate")
-      .option("lambda-cos", to_string(dt.lambda_cos), "weight of the cosine term")
-      .option("holdout", to_string(dt.holdout_fraction), "fraction of features held out for the reported cosine")
+      .option("lr", format_number(dt.lr), "Adam learning rate")
+      .option("lambda-cos", format_number(dt.lambda_cos), "weight of the cosine term")
+      .option("holdout", format_number(dt.holdout_fraction), "fraction of features held out for the reported cosine")
       .option("encoder-dims", join(dc.encoder_dims), "encoder layer sizes after the input; the last is the latent")
       .option("decoder-dims", join(dc.decoder_dims), "decoder layer sizes; the last must be the feature size")
       .option("seed", std::to_string(dt.seed), "seed of initialisation, split and shuffling");

@@ -23,9 +23,9 @@ int cmd_run_tiles(int argc, char** argv) {
   Args args("run-tiles",
             "Run the pipeline on every tile of a `tile` directory: features per tile, then ONE autoencoder on "
             "SAM features sampled from all tiles (latents of different tiles must mean the same to be merged), "
-            "then photometric and language training per tile. --executor slurm submits one sbatch array per "
-            "phase, chained with afterok dependencies, and returns (add --wait to wait); --executor local runs "
-            "the same tasks here, --jobs at a time. A rerun submits only the tasks that have not finished "
+            "then photometric and language training per tile. --executor slurm submits an sbatch array per "
+            "phase (several past the cluster's MaxArraySize), chained with afterok dependencies, and returns "
+            "(add --wait to wait); --executor local runs the same tasks here, --jobs at a time. A rerun submits only the tasks that have not finished "
             "(TILES/status); `citylangsplat tiles status TILES` shows progress, TILES/logs has a log per task.");
   args.positional("TILES", "tiles directory (`citylangsplat tile --out`)")
       .option("executor", "local", "local or slurm")

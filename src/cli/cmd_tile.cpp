@@ -7,6 +7,7 @@
 #include "cli/commands.h"
 #include "core/args.h"
 #include "core/error.h"
+#include "core/strings.h"
 #include "pipeline/pipeline_config.h"
 #include "scene/scene.h"
 #include "tiles/tile_scene.h"
@@ -26,8 +27,8 @@ int cmd_tile(int argc, char** argv) {
   add_scene_city_options(args);
   args.option("out", "", "tiles directory to write (required)")
       .option("max-images", std::to_string(d.max_images), "images per tile before it is split")
-      .option("overlap", "5", "margin around a tile's buildings for its sparse points (scene units)")
-      .option("min-share", "0.2", "share of an image's building pixels that makes it join a tile")
+      .option("overlap", format_number(d.overlap), "margin around a tile's buildings for its sparse points (scene units)")
+      .option("min-share", format_number(d.min_share), "share of an image's building pixels that makes it join a tile")
       .flag("overwrite", "plan again over an existing tiles directory (run-tiles then reruns every task; the stages "
                         "whose inputs did not change are reused)");
   if (!args.parse(argc, argv)) return 0;

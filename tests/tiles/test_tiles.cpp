@@ -9,11 +9,13 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <thread>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/subprocess.h"
 #include "language/language_model.h"
+#include "tiles/local_executor.h"
 #include "tiles/slurm_executor.h"
 #include "tiles/task_script.h"
 #include "tiles/tile_merge.h"
@@ -253,6 +255,47 @@ TEST(TaskScript, RetriesFailuresButNotInterruptionsAndQuotes) {
   EXPECT_EQ(run(137, {"SLURM_ARRAY_TASK_ID=1"}), (std::pair<int, std::string>{137, "1\n"}));  // killed
   // A chunk of a phase larger than MaxArraySize: task = array index + offset.
   EXPECT_EQ(run(0, {"SLURM_ARRAY_TASK_ID=3", "CLS_TASK_OFFSET=1000"}), (std::pair<int, std::string>{0, "1003\n"}));
+}
+
+TEST(LocalExecutor, RunsThePhasesInOrderAndStopsAfterAFailure) {
+  TempDir dir("local");
+  TilePlan plan = two_tile_plan();
+  plan.tiles.push_back(plan.tiles.back());
+  plan.tiles.back().name = "tile_002";
+  write_tile_plan(dir.path / "tiles.json", plan);
+  write_run_settings(dir.path, RunTilesSettings{});
+  mark_finished(dir.path, TilePhase::Features, 1);  // finished before: not run again
+  // A stand-in binary that logs "phase index OMP_NUM_THREADS" and fails where a file says so.
+  const fs::path fake = dir.path / "fake";
+  write_text_atomic(fake, "#!/bin/sh\necho \"$4 $5 $OMP_NUM_THREADS\" >> \"$(dirname \"$0\")/calls\"\n"
+                          "[ -e \"$(dirname \"$0\")/fail_$4_$5\" ] && exit 3\nexit 0\n");
+  fs::permissions(fake, fs::perms::owner_all);
+  LocalExecutorOptions o;
+  o.binary = fake.string();
+  o.jobs = 2;
+  o.retries = 0;
+  EXPECT_EQ(run_tiles_locally(dir.path, plan, o), 0);
+  std::string calls = read_text_file(dir.path / "calls");
+  const std::string threads = std::to_string(std::max(1u, std::thread::hardware_concurrency() / 2));
+  auto lines = [](std::string text) {
+    std::vector<std::string> out;
+    for (size_t p; (p = text.find('\n')) != std::string::npos; text.erase(0, p + 1)) out.push_back(text.substr(0, p));
+    return out;
+  };
+  std::vector<std::string> got = lines(calls);
+  ASSERT_EQ(got.size(), 6u) << calls;  // features 0, 2; autoencoder 0; train 0, 1, 2
+  std::sort(got.begin(), got.begin() + 2);
+  std::sort(got.begin() + 3, got.end());
+  EXPECT_EQ(got, (std::vector<std::string>{"features 0 " + threads, "features 2 " + threads, "autoencoder 0 " + threads,
+                                           "train 0 " + threads, "train 1 " + threads, "train 2 " + threads}));
+  // A failing feature task: its status comes back, and no later phase starts.
+  fs::remove(dir.path / "calls");
+  write_text_atomic(dir.path / "fail_features_2", "");
+  EXPECT_EQ(run_tiles_locally(dir.path, plan, o), 3);
+  got = lines(read_text_file(dir.path / "calls"));
+  EXPECT_EQ(got.size(), 2u);
+  for (const std::string& line : got) EXPECT_EQ(line.rfind("features", 0), 0u) << line;
+  EXPECT_TRUE(fs::exists(task_log(dir.path, TilePhase::Features, "2")));
 }
 
 // A tile's language model: Gaussians at the given x positions (y = 0), latents x + level.
