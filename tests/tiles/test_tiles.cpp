@@ -194,6 +194,14 @@ TEST(TilePlanFile, RoundTripsWithUnboundedSidesAndRefusesBadNames) {
   EXPECT_THROW(read_tiles_dir(dir.path), Error);
 }
 
+// Three tiles (the third a copy of the second under another name): enough for the task bookkeeping.
+TilePlan three_tile_plan() {
+  TilePlan plan = two_tile_plan();
+  plan.tiles.push_back(plan.tiles.back());
+  plan.tiles.back().name = "tile_002";
+  return plan;
+}
+
 void mark_finished(const fs::path& tiles_dir, TilePhase phase, int index) {
   write_text_atomic(task_marker(tiles_dir, phase, index),
                     nlohmann::json({{"fingerprint", tasks_fingerprint(tiles_dir)}}).dump());
@@ -201,9 +209,7 @@ void mark_finished(const fs::path& tiles_dir, TilePhase phase, int index) {
 
 TEST(TileTasks, MarkersCountOnlyForThePlanAndSettingsTheyRanUnder) {
   TempDir dir("tasks");
-  TilePlan plan = two_tile_plan();
-  plan.tiles.push_back(plan.tiles.back());
-  plan.tiles.back().name = "tile_002";
+  TilePlan plan = three_tile_plan();
   write_tile_plan(dir.path / "tiles.json", plan);
   RunTilesSettings s;
   EXPECT_TRUE(write_run_settings(dir.path, s));
@@ -259,9 +265,7 @@ TEST(TaskScript, RetriesFailuresButNotInterruptionsAndQuotes) {
 
 TEST(LocalExecutor, RunsThePhasesInOrderAndStopsAfterAFailure) {
   TempDir dir("local");
-  TilePlan plan = two_tile_plan();
-  plan.tiles.push_back(plan.tiles.back());
-  plan.tiles.back().name = "tile_002";
+  TilePlan plan = three_tile_plan();
   write_tile_plan(dir.path / "tiles.json", plan);
   write_run_settings(dir.path, RunTilesSettings{});
   mark_finished(dir.path, TilePhase::Features, 1);  // finished before: not run again
