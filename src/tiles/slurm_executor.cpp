@@ -67,12 +67,12 @@ std::vector<SubmittedJob> submit_tiles_to_slurm(const fs::path& tiles_dir, const
       first = next;
       std::string array = array_spec(indices);
       if (o.array_limit > 0) array += "%" + std::to_string(o.array_limit);
+      // %a is the array index: past the first chunk, the log name says the chunk's offset too.
+      const fs::path log = task_log(tiles_dir, phase, offset > 0 ? "chunk" + std::to_string(offset) + "+%a" : "%a");
       std::vector<std::string> argv = {"sbatch", "--parsable", "--job-name=cls-" + std::string(phase_name(phase)),
-                                       "--array=" + array, "--output=" + task_log(tiles_dir, phase, "%a").string(),
+                                       "--array=" + array, "--output=" + log.string(),
                                        "--open-mode=append",  // a rerun's attempt follows the earlier ones
                                        "--kill-on-invalid-dep=yes", "--export=ALL,CLS_TASK_OFFSET=" + std::to_string(offset)};
-      if (offset > 0)  // %a is the array index: name the chunk's logs by the task instead
-        argv[4] = "--output=" + task_log(tiles_dir, phase, "chunk" + std::to_string(offset) + "+%a").string();
       if (!previous.empty()) argv.push_back("--dependency=afterok:" + previous);
       if (!o.partition.empty()) argv.push_back("--partition=" + o.partition);
       if (o.cpus_per_task > 0) argv.push_back("--cpus-per-task=" + std::to_string(o.cpus_per_task));

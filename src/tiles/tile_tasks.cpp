@@ -143,7 +143,7 @@ PipelineConfig tile_pipeline_config(const fs::path& tiles_dir, const Tile& tile,
 
 namespace {
 
-int run_shared_autoencoder(const fs::path& tiles_dir, const TilePlan& plan, const RunTilesSettings& s) {
+void run_shared_autoencoder(const fs::path& tiles_dir, const TilePlan& plan, const RunTilesSettings& s) {
   AutoencoderStageOptions o;
   for (const Tile& t : plan.tiles) o.features_dirs.push_back(tile_run_dir(tiles_dir, t) / "features");
   o.out = shared_autoencoder(tiles_dir);
@@ -152,7 +152,6 @@ int run_shared_autoencoder(const fs::path& tiles_dir, const TilePlan& plan, cons
   const AutoencoderReport r = run_autoencoder_stage(o);
   log_info(cat("tiles: shared autoencoder: ", r.train_samples, " SAM features from ", plan.tiles.size(),
                " tiles, held-out cosine ", r.holdout_cosine));
-  return kExitOk;
 }
 
 }  // namespace
@@ -165,15 +164,14 @@ int run_tile_task(const fs::path& tiles_dir, TilePhase phase, int index) {
                          ", not ", index));
   const std::string fingerprint = tasks_fingerprint(tiles_dir);  // what this task runs under
   const auto start = std::chrono::steady_clock::now();
-  int code = kExitOk;
   if (phase == TilePhase::Autoencoder) {
-    code = run_shared_autoencoder(tiles_dir, plan, settings);
+    run_shared_autoencoder(tiles_dir, plan, settings);  // throws on failure
   } else {
     const Tile& tile = plan.tiles[index];
     log_info(cat("tiles: ", phase_name(phase), " of ", tile.name, " (", tile.images.size(), " images)"));
-    code = exit_code(run_pipeline(tile_pipeline_config(tiles_dir, tile, settings, phase)).outcome);
+    const int code = exit_code(run_pipeline(tile_pipeline_config(tiles_dir, tile, settings, phase)).outcome);
+    if (code != kExitOk) return code;
   }
-  if (code != kExitOk) return code;
   char host[256] = "";
   gethostname(host, sizeof host - 1);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -2,8 +2,6 @@
 // merge on hand-made tile models (the Slurm scenario is slurm_tiles_test.sh).
 #include <ATen/ATen.h>
 #include <gtest/gtest.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -15,6 +13,7 @@
 #include "core/error.h"
 #include "core/subprocess.h"
 #include "language/language_model.h"
+#include "models/temp_dir.h"
 #include "tiles/local_executor.h"
 #include "tiles/slurm_executor.h"
 #include "tiles/task_script.h"
@@ -26,15 +25,7 @@ namespace cls {
 namespace {
 namespace fs = std::filesystem;
 
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& name)
-      : path(fs::temp_directory_path() / ("cls_tiles_" + name + "_" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
+using test::TempDir;
 
 // From a dense views x buildings table.
 BuildingPixels sparse(const std::vector<std::vector<int64_t>>& dense) {
@@ -169,7 +160,7 @@ TilePlan two_tile_plan() {
 }
 
 TEST(TilePlanFile, RoundTripsWithUnboundedSidesAndRefusesBadNames) {
-  TempDir dir("plan");
+  TempDir dir;
   const TilePlan plan = two_tile_plan();
   write_tile_plan(dir.path / "tiles.json", plan);
   const TilePlan back = read_tiles_dir(dir.path);
@@ -208,7 +199,7 @@ void mark_finished(const fs::path& tiles_dir, TilePhase phase, int index) {
 }
 
 TEST(TileTasks, MarkersCountOnlyForThePlanAndSettingsTheyRanUnder) {
-  TempDir dir("tasks");
+  TempDir dir;
   TilePlan plan = three_tile_plan();
   write_tile_plan(dir.path / "tiles.json", plan);
   RunTilesSettings s;
@@ -232,7 +223,7 @@ TEST(TileTasks, MarkersCountOnlyForThePlanAndSettingsTheyRanUnder) {
 }
 
 TEST(TaskScript, RetriesFailuresButNotInterruptionsAndQuotes) {
-  TempDir dir("script");
+  TempDir dir;
   EXPECT_EQ(shell_quote("it's"), "'it'\\''s'");
   EXPECT_EQ(array_spec({0, 1, 2, 5, 7, 8}), "0-2,5,7-8");
   EXPECT_EQ(array_spec({3}), "3");
@@ -264,7 +255,7 @@ TEST(TaskScript, RetriesFailuresButNotInterruptionsAndQuotes) {
 }
 
 TEST(LocalExecutor, RunsThePhasesInOrderAndStopsAfterAFailure) {
-  TempDir dir("local");
+  TempDir dir;
   TilePlan plan = three_tile_plan();
   write_tile_plan(dir.path / "tiles.json", plan);
   write_run_settings(dir.path, RunTilesSettings{});
@@ -316,7 +307,7 @@ void write_tile_model(const fs::path& dir, const std::vector<float>& xs, uint64_
 }
 
 TEST(TileMerge, KeepsEachTilesOwnCellAndRefusesWhatIsNotShared) {
-  TempDir dir("merge");
+  TempDir dir;
   const TilePlan plan = two_tile_plan();
   write_tile_plan(dir.path / "tiles.json", plan);
   write_run_settings(dir.path, RunTilesSettings{});
