@@ -35,7 +35,7 @@ python3 tests/tiles/cityjson_subset.py data/citygml/citygml4j/lod2_buildings_v2.
   --out "$work/district.city.json"
 "$bin" -q synth --city "$work/district.city.json" --out "$work/district" --per-building --views 48 \
   --width 200 --height 150 --gt-density 50
-"$bin" tile --scene "$work/district" --out "$work/tiles" --max-images 24 --min-share 0.2
+"$bin" tile --scene "$work/district" --out "$work/tiles" --max-images 28 --min-share 0.2
 tiles=$(python3 -c "import json,sys; print(len(json.load(open(sys.argv[1]))['tiles']))" "$work/tiles/tiles.json")
 # Steps per image equal: a tile of m images runs N iterations; the district of 48 runs N * 48 / mean(m).
 scale=$(python3 -c "import json,sys; t=json.load(open(sys.argv[1]))['tiles']; print(48 * len(t) / sum(len(x['images']) for x in t))" \
@@ -60,12 +60,12 @@ fi
 start=$SECONDS
 "$bin" -q run "$work/district" --out "$work/untiled" --rgb-iterations "$untiled_rgb" \
   --language-iterations "$untiled_language" "${common[@]}" > "$work/untiled.log" 2>&1
+untiled_s=$((SECONDS - start))
 start=$SECONDS
 "$bin" -q run "$work/district" --out "$work/untiled_same" --rgb-iterations "$rgb" --language-iterations "$language" \
   "${common[@]}" > "$work/untiled_same.log" 2>&1
 untiled_same_s=$((SECONDS - start))
 "$bin" -q render "$work/merged/language/citylangsplat" --scene "$work/district" --out "$work/merged_render" --views test
-untiled_s=$((SECONDS - start))
 
 "$bin" -q evaluate --scene "$work/district" --model tiled="$work/merged/language/citylangsplat" \
   --model untiled="$work/untiled/language/citylangsplat" --model untiled_same="$work/untiled_same/language/citylangsplat" \

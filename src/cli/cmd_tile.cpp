@@ -21,13 +21,12 @@ int cmd_tile(int argc, char** argv) {
             "Cut a district into tiles for run-tiles (docs/scale.md): the city model's buildings are split by "
             "recursive bisection of their footprints until each tile's images fit --max-images; an image joins "
             "every tile whose buildings cover at least --min-share of its building pixels (one raycast per "
-            "image). Writes TILES/<tile>/ (scene.json, images linked, the COLMAP model cut to the tile) and "
+            "image) and the tile whose cell its camera stands in; a tile keeps the sparse points its images see. Writes TILES/<tile>/ (scene.json, images linked, the COLMAP model cut to the tile) and "
             "TILES/tiles.json. The city model comes from --config FILE or SCENE_DIR/scene.json unless given.");
   args.option("scene", "", "the district's scene directory (COLMAP model; required)");
   add_scene_city_options(args);
   args.option("out", "", "tiles directory to write (required)")
       .option("max-images", std::to_string(d.max_images), "images per tile before it is split")
-      .option("overlap", format_number(d.overlap), "margin around a tile's buildings for its sparse points (scene units)")
       .option("min-share", format_number(d.min_share), "share of an image's building pixels that makes it join a tile")
       .flag("overwrite", "plan again over an existing tiles directory (run-tiles then reruns every task; the stages "
                         "whose inputs did not change are reused)");
@@ -40,10 +39,8 @@ int cmd_tile(int argc, char** argv) {
   if (c.city.empty()) throw UsageError("tile: no city model: give --city, or a scene.json with \"city_model\"");
   TileOptions o;
   o.max_images = static_cast<int>(args.get_int("max-images"));
-  o.overlap = args.get_double("overlap");
   o.min_share = args.get_double("min-share");
   if (o.max_images < 1) throw UsageError("tile: --max-images must be >= 1");
-  if (!(o.overlap >= 0)) throw UsageError("tile: --overlap must be >= 0");
   if (!(o.min_share > 0 && o.min_share <= 1)) throw UsageError("tile: --min-share must be in (0, 1]");
   if (fs::exists(out / "tiles.json") && !args.flag_set("overwrite"))
     throw UsageError("tile: " + (out / "tiles.json").string() + " exists: give --overwrite to plan again");

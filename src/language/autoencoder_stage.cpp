@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
@@ -38,6 +39,20 @@ std::vector<fs::path> find_sam_feature_files(const fs::path& dir) {
   }
   if (ec) fail(dir.string(), "cannot list the directory: " + ec.message());
   std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::vector<fs::path> find_sam_feature_files(const std::vector<fs::path>& dirs) {
+  std::map<fs::path, fs::path> by_name;  // path within its directory -> file
+  for (const fs::path& dir : dirs) {
+    const std::vector<fs::path> found = find_sam_feature_files(dir);
+    if (found.empty())
+      fail(dir.string(),
+           "no SAM feature files (*_f.npy; *_gml_f.npy are not used for training): run the features stage first");
+    for (const fs::path& file : found) by_name.emplace(file.lexically_relative(dir), file);
+  }
+  std::vector<fs::path> files;
+  for (const auto& [name, file] : by_name) files.push_back(file);
   return files;
 }
 
@@ -89,14 +104,7 @@ at::Tensor read_sam_features(const std::vector<fs::path>& files, int input_dim, 
 AutoencoderReport run_autoencoder_stage(const AutoencoderStageOptions& o) {
   if (o.features_dirs.empty()) throw UsageError("autoencoder: no features directory given");
   const std::string where = o.features_dirs.front().string();
-  std::vector<fs::path> files;
-  for (const fs::path& dir : o.features_dirs) {
-    const std::vector<fs::path> found = find_sam_feature_files(dir);
-    if (found.empty())
-      fail(dir.string(),
-           "no SAM feature files (*_f.npy; *_gml_f.npy are not used for training): run the features stage first");
-    files.insert(files.end(), found.begin(), found.end());
-  }
+  const std::vector<fs::path> files = find_sam_feature_files(o.features_dirs);
   int64_t rows_read = 0;
   const at::Tensor features = read_sam_features(files, o.config.input_dim, o.max_samples, o.train.seed, &rows_read);
   if (rows_read == 0) fail(where, "the SAM feature files hold no rows");

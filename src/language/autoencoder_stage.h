@@ -15,6 +15,11 @@ namespace cls {
 // Every *_f.npy under `dir` (recursively) that is not a *_gml_f.npy, sorted by path. cls::Error when
 // `dir` is not a directory.
 std::vector<std::filesystem::path> find_sam_feature_files(const std::filesystem::path& dir);
+// The same over several directories (one per tile), sorted by a file's path within its directory. A path
+// found in several (an image in two tiles, whose features are the same in both) is taken once, from the
+// first: tiles that share images train on the pool one run of the whole district would. cls::Error for a
+// directory without any.
+std::vector<std::filesystem::path> find_sam_feature_files(const std::vector<std::filesystem::path>& dirs);
 
 // The rows of all files stacked (float32, sum N x input_dim); with max_samples > 0 and more rows than
 // that, a uniform random sample of max_samples rows (reservoir sampling, seeded: one file in memory at a
@@ -24,7 +29,7 @@ at::Tensor read_sam_features(const std::vector<std::filesystem::path>& files, in
                              uint64_t seed = 0, int64_t* rows_read = nullptr);
 
 struct AutoencoderStageOptions {
-  // One features directory, or one per tile (a shared autoencoder: docs/scale.md).
+  // One features directory, or one per tile (a shared autoencoder: docs/scale.md): find_sam_feature_files.
   std::vector<std::filesystem::path> features_dirs;
   // Train on at most this many rows, a uniform sample (train.seed) of all of them; 0 = every row.
   int64_t max_samples = 0;

@@ -24,18 +24,24 @@ std::vector<int> views_of_buildings(const std::vector<char>& in_set, const Build
   return views;
 }
 
+std::vector<int> views_of_tile(const std::vector<char>& in_set, const TileCell& cell, const BuildingPixels& pixels,
+                               double min_share) {
+  std::vector<int> views = views_of_buildings(in_set, pixels, min_share);
+  for (size_t v = 0; v < pixels.size(); ++v)
+    if (cell.contains(pixels[v].camera_x, pixels[v].camera_y)) views.push_back(static_cast<int>(v));
+  std::sort(views.begin(), views.end());
+  views.erase(std::unique(views.begin(), views.end()), views.end());
+  return views;
+}
+
 Partition partition_buildings(const std::vector<BuildingFootprint>& footprints, const BuildingPixels& pixels,
                               int max_images, double min_share) {
   Partition result;
   std::vector<char> in_set(footprints.size(), 0);
-  auto views_of = [&](const std::vector<int>& set) {
-    for (int b : set) in_set[b] = 1;
-    std::vector<int> views = views_of_buildings(in_set, pixels, min_share);
-    for (int b : set) in_set[b] = 0;
-    return views;
-  };
   std::function<void(std::vector<int>, TileCell)> split = [&](std::vector<int> set, TileCell cell) {
-    std::vector<int> views = views_of(set);
+    for (int b : set) in_set[b] = 1;
+    std::vector<int> views = views_of_tile(in_set, cell, pixels, min_share);
+    for (int b : set) in_set[b] = 0;
     if (static_cast<int>(views.size()) > max_images && set.size() > 1) {
       double lo[2] = {TileCell::kInf, TileCell::kInf}, hi[2] = {-TileCell::kInf, -TileCell::kInf};
       for (int b : set) {
@@ -68,8 +74,11 @@ Partition partition_buildings(const std::vector<BuildingFootprint>& footprints, 
     result.tiles.push_back({std::move(set), cell, std::move(views)});
   };
   std::vector<int> seen;
-  for (size_t b = 0; b < footprints.size(); ++b)
-    (views_of({static_cast<int>(b)}).empty() ? result.unseen : seen).push_back(static_cast<int>(b));
+  for (size_t b = 0; b < footprints.size(); ++b) {
+    in_set[b] = 1;
+    (views_of_buildings(in_set, pixels, min_share).empty() ? result.unseen : seen).push_back(static_cast<int>(b));
+    in_set[b] = 0;
+  }
   if (!seen.empty()) split(seen, TileCell{});
   return result;
 }
@@ -88,12 +97,11 @@ void write_tile_plan(const fs::path& file, const TilePlan& plan) {
     tiles.push_back({{"name", t.name},
                      {"buildings", t.buildings},
                      {"cell", {side(t.cell.x0), side(t.cell.y0), side(t.cell.x1), side(t.cell.y1)}},
-                     {"bounds", t.bounds},
                      {"images", t.images}});
   const json j = {{"scene", plan.scene.string()},     {"city_model", plan.city_model},
                   {"city_transform", plan.city_transform}, {"taxonomy", plan.taxonomy},
                   {"lod", plan.lod},                   {"max_images", plan.max_images},
-                  {"overlap", plan.overlap},           {"min_share", plan.min_share},
+                  {"min_share", plan.min_share},
                   {"unseen", plan.unseen},             {"tiles", tiles}};
   write_text_atomic(file, j.dump(2) + "\n");
 }
@@ -108,7 +116,6 @@ TilePlan read_tile_plan(const fs::path& file) {
     plan.taxonomy = j.at("taxonomy").get<std::string>();
     plan.lod = j.at("lod").get<int>();
     plan.max_images = j.at("max_images").get<int>();
-    plan.overlap = j.at("overlap").get<double>();
     plan.min_share = j.at("min_share").get<double>();
     plan.unseen = j.value("unseen", std::vector<std::string>{});
     for (const json& t : j.at("tiles")) {
@@ -119,7 +126,6 @@ TilePlan read_tile_plan(const fs::path& file) {
       if (!c.is_array() || c.size() != 4) fail(file.string(), "tile " + tile.name + ": \"cell\" must be [x0, y0, x1, y1]");
       tile.cell = {side_of(c[0], -TileCell::kInf), side_of(c[1], -TileCell::kInf), side_of(c[2], TileCell::kInf),
                    side_of(c[3], TileCell::kInf)};
-      tile.bounds = t.at("bounds").get<std::array<double, 4>>();
       tile.images = t.at("images").get<std::vector<std::string>>();
       if (tile.name.empty() || tile.name.find('/') != std::string::npos || tile.name[0] == '.')
         fail(file.string(), "tile name '" + tile.name + "' is not a plain directory name");

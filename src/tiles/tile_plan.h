@@ -28,10 +28,12 @@ struct BuildingFootprint {
 };
 
 // Which buildings a view sees: the pixels of each building whose first hit it is (sparse: a view of a
-// city sees a few of its buildings), and their sum.
+// city sees a few of its buildings), and their sum; and where the view stands.
 struct ViewBuildings {
   std::vector<std::pair<int32_t, int64_t>> pixels;  // (building, pixels), pixels > 0
   int64_t total = 0;
+  // The camera centre on the ground plane (scene x, y); NaN where unknown (in no cell).
+  double camera_x = std::numeric_limits<double>::quiet_NaN(), camera_y = std::numeric_limits<double>::quiet_NaN();
 };
 using BuildingPixels = std::vector<ViewBuildings>;  // one per view
 
@@ -39,13 +41,20 @@ using BuildingPixels = std::vector<ViewBuildings>;  // one per view
 // `min_share` of the pixels the view has on any building (and at least one pixel).
 std::vector<int> views_of_buildings(const std::vector<char>& in_set, const BuildingPixels& pixels, double min_share);
 
+// The views of a tile: those of its buildings, and every view whose camera stands in its cell. A camera
+// in the cell sees the tile's Gaussians nearest to it, whatever it looks at: a tile that never trained
+// from it leaves floaters there that fill that view of the merged model (VastGaussian's camera selection
+// has the same reason).
+std::vector<int> views_of_tile(const std::vector<char>& in_set, const TileCell& cell, const BuildingPixels& pixels,
+                               double min_share);
+
 struct PlannedTile {
   std::vector<int> buildings;  // indices into the footprints
   TileCell cell;
   std::vector<int> views;      // indices into the views, ascending
 };
 
-// Recursive bisection: a set of buildings whose views exceed `max_images` is split at the median of
+// Recursive bisection: a set of buildings whose views (views_of_tile) exceed `max_images` is split at the median of
 // its footprint centres along the wider axis; a single building (or several with one centre) is never
 // split: its tile may then hold more than max_images views (the caller says so). Buildings that no view
 // sees at `min_share` on their own take no part (`unseen`): every tile has views, and the cells still
@@ -62,7 +71,6 @@ struct Tile {
   std::string name;                    // tile_000, ...: also its directory under the tiles folder
   std::vector<std::string> buildings;  // building ids
   TileCell cell;                       // the part of the plane this tile owns in the merged model
-  std::array<double, 4> bounds{};      // x0, y0, x1, y1: its buildings' footprints plus the overlap margin
   std::vector<std::string> images;     // image names as in the scene's model
 };
 
@@ -71,7 +79,7 @@ struct TilePlan {
   std::string city_model, city_transform, taxonomy;  // absolute paths ("" = none / built-in)
   int lod = 0;
   int max_images = 30;
-  double overlap = 0, min_share = 0;
+  double min_share = 0;
   std::vector<Tile> tiles;
   std::vector<std::string> unseen;  // buildings no view sees: in no tile (the cells still cover them)
 };

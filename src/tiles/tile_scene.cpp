@@ -59,6 +59,8 @@ BuildingPixels building_pixels(const Scene& scene, const SceneCityModel& city, i
         pixels[v].pixels.push_back({static_cast<int32_t>(b - 1), count[b]});
         pixels[v].total += count[b];
       }
+    const Vec3d centre = scene.views[v].pose.center();
+    pixels[v].camera_x = centre.x, pixels[v].camera_y = centre.y;
     progress.advance();
   }
   return pixels;
@@ -83,7 +85,6 @@ TilePlan make_tile_plan(const Scene& scene, const SceneCityModel& city, const Ti
   plan.taxonomy = absolute(taxonomy_path);
   plan.lod = lod;
   plan.max_images = o.max_images;
-  plan.overlap = o.overlap;
   plan.min_share = o.min_share;
   for (int b : partition.unseen) plan.unseen.push_back(footprints[b].id);
   if (!plan.unseen.empty())
@@ -96,13 +97,7 @@ TilePlan make_tile_plan(const Scene& scene, const SceneCityModel& city, const Ti
     std::snprintf(name, sizeof name, "tile_%03zu", i);
     t.name = name;
     t.cell = p.cell;
-    t.bounds = {TileCell::kInf, TileCell::kInf, -TileCell::kInf, -TileCell::kInf};
-    for (int b : p.buildings) {
-      const BuildingFootprint& f = footprints[b];
-      t.buildings.push_back(f.id);
-      t.bounds = {std::min(t.bounds[0], f.x0 - o.overlap), std::min(t.bounds[1], f.y0 - o.overlap),
-                  std::max(t.bounds[2], f.x1 + o.overlap), std::max(t.bounds[3], f.y1 + o.overlap)};
-    }
+    for (int b : p.buildings) t.buildings.push_back(footprints[b].id);
     for (int v : p.views) t.images.push_back(scene.views[v].name);
     if (static_cast<int>(t.images.size()) > o.max_images)
       log_warn(cat("tile: ", t.name, " has ", t.images.size(), " images (> --max-images ", o.max_images,
@@ -120,12 +115,8 @@ std::string require_colmap_model(const fs::path& scene_dir) {
   return model_dir;
 }
 
-namespace {
-
-// The district's COLMAP model cut to one tile: its images (and their cameras), the points whose
-// x, y lie in its bounds, tracks and 2D observations pointing only at what is kept.
-ColmapModel tile_colmap(const ColmapModel& all, const Tile& tile) {
-  const std::set<std::string> names(tile.images.begin(), tile.images.end());
+ColmapModel tile_colmap(const ColmapModel& all, const std::vector<std::string>& images) {
+  const std::set<std::string> names(images.begin(), images.end());
   ColmapModel m;
   for (const auto& [id, image] : all.images)
     if (names.count(image.name)) {
@@ -133,8 +124,6 @@ ColmapModel tile_colmap(const ColmapModel& all, const Tile& tile) {
       m.cameras[image.camera_id] = all.cameras.at(image.camera_id);
     }
   for (const auto& [id, point] : all.points) {
-    const double x = point.xyz[0], y = point.xyz[1];
-    if (x < tile.bounds[0] || x > tile.bounds[2] || y < tile.bounds[1] || y > tile.bounds[3]) continue;
     ColmapPoint3D p = point;
     p.track.erase(std::remove_if(p.track.begin(), p.track.end(), [&](const auto& obs) { return !m.images.count(obs.first); }), p.track.end());
     if (!p.track.empty()) m.points[id] = std::move(p);
@@ -144,8 +133,6 @@ ColmapModel tile_colmap(const ColmapModel& all, const Tile& tile) {
       if (p2.point3d_id != ColmapPoint2D{}.point3d_id && !m.points.count(p2.point3d_id)) p2.point3d_id = ColmapPoint2D{}.point3d_id;
   return m;
 }
-
-}  // namespace
 
 void write_tiles(const TilePlan& plan, const fs::path& tiles_dir) {
   const ColmapModel all = read_colmap(require_colmap_model(plan.scene));
@@ -166,11 +153,11 @@ void write_tiles(const TilePlan& plan, const fs::path& tiles_dir) {
     }
     const fs::path sparse = dir / "sparse" / "0";
     fs::create_directories(sparse);
-    write_colmap_binary(sparse.string(), tile_colmap(all, tile));
+    write_colmap_binary(sparse.string(), tile_colmap(all, tile.images));
     nlohmann::json scene = {{"city_model", plan.city_model}, {"lod", plan.lod}};
     if (!plan.city_transform.empty()) scene["city_transform"] = plan.city_transform;
     if (!plan.taxonomy.empty()) scene["taxonomy"] = plan.taxonomy;
-    scene["tile"] = {{"name", tile.name}, {"buildings", tile.buildings}, {"bounds", tile.bounds},
+    scene["tile"] = {{"name", tile.name}, {"buildings", tile.buildings},
                      {"district", plan.scene.string()}};
     write_text_atomic(dir / "scene.json", scene.dump(2) + "\n");
     log_info(cat("tile: ", tile.name, ": ", tile.buildings.size(), " buildings, ", tile.images.size(), " images"));

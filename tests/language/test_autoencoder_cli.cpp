@@ -52,6 +52,23 @@ TEST(AutoencoderStage, FindsSamFeatureFilesOnly) {
   EXPECT_THROW(find_sam_feature_files(dir.path / "a_f.npy"), Error);
 }
 
+TEST(AutoencoderStage, ReadsAFileInSeveralTilesOnce) {
+  // Tile 1 holds a, sub/b and c; tile 0 holds c, sub/b (a view in both tiles) and d: one pool of four
+  // files, ordered by their path within the tile, each shared one taken from the first directory given.
+  TempDir dir;
+  make_features_dir(dir.path / "tile1");
+  fs::create_directories(dir.path / "tile0" / "sub");
+  for (const char* shared : {"c_f.npy", "sub/b_f.npy"}) fs::copy_file(dir.path / "tile1" / shared, dir.path / "tile0" / shared);
+  write_features(dir.path / "tile0" / "d_f.npy", at::ones({5, 512}));
+  const auto files = find_sam_feature_files(std::vector<fs::path>{dir.path / "tile0", dir.path / "tile1"});
+  const std::vector<fs::path> expected = {dir.path / "tile1" / "a_f.npy", dir.path / "tile0" / "c_f.npy",
+                                          dir.path / "tile0" / "d_f.npy", dir.path / "tile0" / "sub" / "b_f.npy"};
+  EXPECT_EQ(files, expected);
+  EXPECT_EQ(read_sam_features(files, 512).size(0), 40 + 0 + 5 + 60);
+  fs::create_directories(dir.path / "empty");
+  EXPECT_THROW(find_sam_feature_files(std::vector<fs::path>{dir.path / "tile0", dir.path / "empty"}), Error);
+}
+
 TEST(AutoencoderStage, SamplesRowsUniformlyAcrossFiles) {
   // 40 rows in files of 7, 0, 21 and 12 rows, row r holding r in its first column; 10 of them kept.
   TempDir dir;

@@ -29,7 +29,7 @@ python3 "$here/cityjson_subset.py" "$repo/data/citygml/citygml4j/lod2_buildings_
   --out "$work/district.city.json"
 "$bin" -q synth --city "$work/district.city.json" --out "$work/district" --per-building --views 48 \
   --width 160 --height 120 --gt-density 50
-"$bin" -q tile --scene "$work/district" --out "$work/tiles" --max-images 24 --min-share 0.2
+"$bin" -q tile --scene "$work/district" --out "$work/tiles" --max-images 28 --min-share 0.2
 tiles=$(python3 -c "import json,sys; print(len(json.load(open(sys.argv[1]))['tiles']))" "$work/tiles/tiles.json")
 echo "tiles: $tiles"
 [ "$tiles" -ge 2 ] || { echo "FAIL: expected several tiles, got $tiles"; exit 1; }

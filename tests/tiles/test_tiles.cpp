@@ -19,6 +19,7 @@
 #include "tiles/task_script.h"
 #include "tiles/tile_merge.h"
 #include "tiles/tile_plan.h"
+#include "tiles/tile_scene.h"
 #include "tiles/tile_tasks.h"
 
 namespace cls {
@@ -69,6 +70,31 @@ TEST(TilePartition, ViewsJoinWhereTheirShareIsReached) {
   EXPECT_EQ(views_of_buildings(set_of({0}, 4), p, 0.09), (std::vector<int>{0}));
   EXPECT_EQ(views_of_buildings(set_of({1, 2}, 4), p, 0.5), (std::vector<int>{1, 2}));
   EXPECT_TRUE(views_of_buildings(set_of({0}, 4), sparse({{0, 0, 0, 0}, {0, 0, 0, 0}}), 0.0).empty());
+}
+
+TEST(TilePartition, ACameraStandingInATilesCellJoinsIt) {
+  // Two houses at x = 0..6 and 10..16, cut at x = 8. View 0 stands at x = 3 and sees house 0; view 1
+  // stands at x = 5, in house 0's cell, but looks at house 1 only; view 2 stands at x = 30 and sees
+  // house 1; view 3 has no known position.
+  BuildingPixels p = sparse({{1000, 0}, {0, 1000}, {0, 1000}, {0, 1000}});
+  const double x[] = {3, 5, 30};
+  for (int v = 0; v < 3; ++v) p[v].camera_x = x[v], p[v].camera_y = 4;
+  const TileCell left{-TileCell::kInf, -TileCell::kInf, 8, TileCell::kInf};
+  EXPECT_EQ(views_of_tile(set_of({0}, 2), left, p, 0.2), (std::vector<int>{0, 1}));
+  EXPECT_EQ(views_of_buildings(set_of({0}, 2), p, 0.2), (std::vector<int>{0}));
+  // The partition: budget 3 splits the pair; view 1 is in both tiles, view 3 only in house 1's.
+  const auto tiles = partition_buildings(row_of_houses(2), p, 3, 0.2).tiles;
+  ASSERT_EQ(tiles.size(), 2u);
+  EXPECT_EQ(tiles[0].cell.x1, 8);
+  EXPECT_EQ(tiles[0].views, (std::vector<int>{0, 1}));
+  EXPECT_EQ(tiles[1].views, (std::vector<int>{1, 2, 3}));
+  // A camera in the cell counts toward the budget: with every camera on the left, the left house alone
+  // has 4 views.
+  for (int v = 0; v < 4; ++v) p[v].camera_x = 1, p[v].camera_y = 1;
+  const auto crowded = partition_buildings(row_of_houses(2), p, 3, 0.2).tiles;
+  ASSERT_EQ(crowded.size(), 2u);
+  EXPECT_EQ(crowded[0].views, (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_EQ(crowded[1].views, (std::vector<int>{1, 2, 3}));
 }
 
 TEST(TilePartition, BisectsAtTheMedianUntilTheImagesFit) {
@@ -145,17 +171,39 @@ TEST(TilePartition, UnseenBuildingsAreLeftOutAndTheWiderAxisIsCut) {
   EXPECT_TRUE(std::isinf(tiles[0].cell.x0) && std::isinf(tiles[0].cell.x1));
 }
 
+TEST(TileScene, ATileKeepsThePointsItsImagesSeeWhereverTheyLie) {
+  // Image 1 sees point 10 (1 km away) and 11; image 2 sees 11 and 12.
+  ColmapModel all;
+  all.cameras[1] = Camera{};
+  all.images[1] = {1, {1, 0, 0, 0}, {0, 0, 0}, 1, "a.png", {{5, 5, 10}, {6, 6, 11}}};
+  all.images[2] = {2, {1, 0, 0, 0}, {1, 0, 0}, 1, "b.png", {{7, 7, 11}, {8, 8, 12}}};
+  all.points[10] = {10, {1000, 0, 0}, {}, 0, {{1, 0}}};
+  all.points[11] = {11, {0, 0, 5}, {}, 0, {{1, 1}, {2, 0}}};
+  all.points[12] = {12, {1, 0, 5}, {}, 0, {{2, 1}}};
+  const ColmapModel a = tile_colmap(all, {"a.png"});
+  EXPECT_EQ(a.images.size(), 1u);
+  EXPECT_EQ(a.cameras.size(), 1u);
+  ASSERT_EQ(a.points.size(), 2u);
+  EXPECT_EQ(a.points.at(10).xyz[0], 1000);
+  EXPECT_EQ(a.points.at(11).track, (std::vector<std::pair<uint32_t, uint32_t>>{{1, 1}}));
+  EXPECT_EQ(a.images.at(1).points2d[1].point3d_id, 11u);
+  const ColmapModel b = tile_colmap(all, {"b.png"});
+  EXPECT_EQ(b.points.count(10), 0u);
+  EXPECT_EQ(b.points.at(11).track, (std::vector<std::pair<uint32_t, uint32_t>>{{2, 0}}));
+  EXPECT_EQ(b.points.count(12), 1u);
+  EXPECT_TRUE(tile_colmap(all, {"c.png"}).points.empty());
+}
+
 TilePlan two_tile_plan() {
   TilePlan plan;
   plan.scene = "/data/district";
   plan.city_model = "/data/city.json";
   plan.lod = 2;
   plan.max_images = 24;
-  plan.overlap = 5;
   plan.min_share = 0.2;
   plan.unseen = {"c"};
-  plan.tiles.push_back({"tile_000", {"a"}, {-TileCell::kInf, -TileCell::kInf, 10, TileCell::kInf}, {-5, -5, 11, 13}, {"0.png"}});
-  plan.tiles.push_back({"tile_001", {"b"}, {10, -TileCell::kInf, TileCell::kInf, TileCell::kInf}, {5, -5, 21, 13}, {"1.png"}});
+  plan.tiles.push_back({"tile_000", {"a"}, {-TileCell::kInf, -TileCell::kInf, 10, TileCell::kInf}, {"0.png"}});
+  plan.tiles.push_back({"tile_001", {"b"}, {10, -TileCell::kInf, TileCell::kInf, TileCell::kInf}, {"1.png"}});
   return plan;
 }
 
@@ -168,7 +216,8 @@ TEST(TilePlanFile, RoundTripsWithUnboundedSidesAndRefusesBadNames) {
   EXPECT_TRUE(std::isinf(back.tiles[0].cell.x0) && back.tiles[0].cell.x0 < 0);
   EXPECT_EQ(back.tiles[0].cell.x1, 10);
   EXPECT_TRUE(std::isinf(back.tiles[0].cell.y1) && back.tiles[0].cell.y1 > 0);
-  EXPECT_EQ(back.tiles[1].bounds, (std::array<double, 4>{5, -5, 21, 13}));
+  EXPECT_EQ(back.tiles[1].buildings, (std::vector<std::string>{"b"}));
+  EXPECT_EQ(back.tiles[1].images, (std::vector<std::string>{"1.png"}));
   EXPECT_EQ(back.scene, plan.scene);
   EXPECT_EQ(back.unseen, plan.unseen);
   // The same plan with a tile named out of the folder.
