@@ -3,8 +3,10 @@
 // fixture arrays.
 #include <torch/torch.h>
 
+#include <nlohmann/json.hpp>
 #include <string>
 
+#include "core/atomic_file.h"
 #include "core/npy.h"
 #include "models/sam/sam_model.h"
 #include "models/weights/npy_tensor.h"
@@ -15,6 +17,14 @@ namespace cls::sam::testing {
 inline std::string sam_fixture(const std::string& name) { return std::string(CLS_TEST_FIXTURES) + "/sam/" + name; }
 
 inline torch::Tensor load_npy_tensor(const std::string& name) { return to_tensor(read_npy(sam_fixture(name))); }
+
+// config.json as plain JSON (not through the code under test): the sizes the tests expect.
+inline const nlohmann::json& sam_config_json() {
+  static const nlohmann::json j = nlohmann::json::parse(read_text_file(sam_fixture("config.json")));
+  return j;
+}
+// Masks per prompt with multimask_output (the s / m / l outputs the AMG uses).
+inline int64_t num_multimask_outputs() { return sam_config_json().at("num_multimask_outputs").get<int64_t>(); }
 
 // The tiny model of config.json with weights.safetensors loaded.
 inline Sam load_tiny_sam() {

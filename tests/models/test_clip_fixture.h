@@ -3,8 +3,10 @@
 #include <ATen/ATen.h>
 
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 
+#include "core/atomic_file.h"
 #include "core/npy.h"
 #include "models/weights/npy_tensor.h"
 
@@ -12,6 +14,11 @@ namespace cls::clip::testing {
 
 inline std::string fixture_dir(const std::string& model) {
   return std::string(CLS_TEST_FIXTURES) + "/clip/models/" + model;
+}
+
+// The model's config.json as plain JSON (not through read_clip_config, the code under test).
+inline nlohmann::json fixture_config(const std::string& model) {
+  return nlohmann::json::parse(read_text_file(fixture_dir(model) + "/config.json"));
 }
 
 inline at::Tensor load_npy(const std::string& path) { return to_tensor(read_npy(path)); }

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <ATen/ATen.h>
+#include <algorithm>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
@@ -48,7 +50,10 @@ TEST_P(ClipParity, FeaturesLogitsAndIntermediates) {
   const std::string model = GetParam();
   const std::string dir = fixture_dir(model);
   const Fixture f = load(model);
-  EXPECT_EQ(f.config.activation, model == "tiny_gelu" ? Activation::Gelu : Activation::QuickGelu);
+  const nlohmann::json cfg = fixture_config(model);
+  const std::string act = cfg.at("activation");
+  ASSERT_TRUE(act == "gelu" || act == "quick_gelu") << act;
+  EXPECT_EQ(f.config.activation, act == "gelu" ? Activation::Gelu : Activation::QuickGelu);
   const ClipModel clip(f.config, f.state, {}, dir);
   ClipTrace trace;
   const at::Tensor img = clip.encode_image(f.images, &trace);
@@ -56,24 +61,27 @@ TEST_P(ClipParity, FeaturesLogitsAndIntermediates) {
   expect_close(img, load_npy(dir + "/image_features.npy"), "image_features");
   expect_close(txt, load_npy(dir + "/text_features.npy"), "text_features");
   expect_close(clip.logits_per_image(img, txt), load_npy(dir + "/logits_per_image.npy"), "logits_per_image");
-  const char* names[] = {"visual.conv1", "visual.ln_pre", "visual.ln_post", "token_embedding", "ln_final",
-                         "text_pooled"};
-  int checked = 0;
+  // The captured intermediates: block 0 in detail and every block's output (layer counts from
+  // config.json); they must be exactly the files of intermediates/, so none goes unchecked.
+  std::vector<std::string> names = {"visual.conv1", "visual.ln_pre", "visual.ln_post", "token_embedding", "ln_final",
+                                    "text_pooled"};
+  const std::pair<std::string, int> towers[] = {{"visual.transformer.resblocks.", cfg.at("vision_layers").get<int>()},
+                                                {"transformer.resblocks.", cfg.at("transformer_layers").get<int>()}};
+  for (const auto& [tower, layers] : towers) {
+    for (const std::string part : {".ln_1", ".attn", ".ln_2", ".mlp"}) names.push_back(tower + "0" + part);
+    for (int i = 0; i < layers; ++i) names.push_back(tower + std::to_string(i));
+  }
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(dir + "/intermediates"))
+    if (e.path().extension() == ".npy") files.push_back(e.path().stem().string());
+  std::sort(files.begin(), files.end());
+  std::vector<std::string> sorted_names = names;
+  std::sort(sorted_names.begin(), sorted_names.end());
+  EXPECT_EQ(sorted_names, files);
   for (const std::string& name : names) {
     ASSERT_TRUE(trace.count(name)) << name;
     expect_close(trace.at(name), load_npy(dir + "/intermediates/" + name + ".npy"), name);
-    ++checked;
   }
-  for (const std::string tower : {"visual.transformer.resblocks.", "transformer.resblocks."}) {
-    for (const std::string part : {".ln_1", ".attn", ".ln_2", ".mlp", ""}) {
-      const std::string name = tower + "0" + part;
-      expect_close(trace.at(name), load_npy(dir + "/intermediates/" + name + ".npy"), name);
-      ++checked;
-    }
-    expect_close(trace.at(tower + "1"), load_npy(dir + "/intermediates/" + tower + "1.npy"), tower + "1");
-    ++checked;
-  }
-  EXPECT_EQ(checked, 18);
 }
 
 TEST_P(ClipParity, OneSampleAtATimeMatchesTheBatch) {
@@ -92,7 +100,7 @@ INSTANTIATE_TEST_SUITE_P(Fixtures, ClipParity, ::testing::Values("tiny_gelu", "t
 // The wrong activation must be detected far above the tolerance (the test can fail).
 TEST(ClipModel, SwappedActivationIsVisible) {
   Fixture f = load("tiny_gelu");
-  f.config.activation = Activation::QuickGelu;
+  f.config.activation = f.config.activation == Activation::Gelu ? Activation::QuickGelu : Activation::Gelu;
   const ClipModel clip(f.config, f.state);
   const at::Tensor want = load_npy(fixture_dir("tiny_gelu") + "/image_features.npy");
   EXPECT_GT((clip.encode_image(f.images) - want).abs().max().item<double>(), 1e-3);
@@ -152,18 +160,27 @@ TEST(ClipModel, BadWeightsAreReportedByNameBeforeCompute) {
     }
     return "";
   };
+  // Sizes of this fixture: the last vision block, one past it, and text_projection's shape.
+  const nlohmann::json cfg = fixture_config("tiny_quickgelu");
+  const int layers = cfg.at("vision_layers");
+  const std::string last_block = "visual.transformer.resblocks." + std::to_string(layers - 1) + ".";
+  const std::string past_block = "visual.transformer.resblocks." + std::to_string(layers) + ".";
   auto missing = f.state;
-  missing.erase("visual.transformer.resblocks.1.mlp.c_fc.bias");
-  EXPECT_NE(message(missing).find("1 missing:\n    visual.transformer.resblocks.1.mlp.c_fc.bias"), std::string::npos);
+  missing.erase(last_block + "mlp.c_fc.bias");
+  EXPECT_NE(message(missing).find("1 missing:\n    " + last_block + "mlp.c_fc.bias"), std::string::npos);
   auto extra = f.state;
-  extra["visual.transformer.resblocks.2.ln_1.weight"] = at::zeros({128});
+  extra[past_block + "ln_1.weight"] = at::zeros({cfg.at("vision_width").get<int64_t>()});
   extra["input_resolution"] = at::zeros({});  // OpenAI JIT extras are ignored
-  EXPECT_NE(message(extra).find("1 unexpected:\n    visual.transformer.resblocks.2.ln_1.weight"),
-            std::string::npos);
+  EXPECT_NE(message(extra).find("1 unexpected:\n    " + past_block + "ln_1.weight"), std::string::npos);
   auto shape = f.state;
-  shape["text_projection"] = at::zeros({32, 16});
+  const auto proj = cfg.at("tensors").at("text_projection").at("shape").get<std::vector<int64_t>>();
+  shape["text_projection"] = at::zeros({proj.at(0), proj.at(1) / 2});
+  auto dims = [](int64_t a, int64_t b) { return "[" + std::to_string(a) + ", " + std::to_string(b) + "]"; };
   const std::string m = message(shape);
-  EXPECT_NE(m.find("text_projection: expected [32, 32], stored text_projection [32, 16]"), std::string::npos) << m;
+  EXPECT_NE(m.find("text_projection: expected " + dims(proj[0], proj[1]) + ", stored text_projection " +
+                   dims(proj[0], proj[1] / 2)),
+            std::string::npos)
+      << m;
   EXPECT_EQ(m.rfind("w.safetensors: ", 0), 0u) << m;
   auto dtype = f.state;
   dtype["logit_scale"] = at::zeros({}, at::kLong);
@@ -174,9 +191,10 @@ TEST(ClipModel, BadWeightsAreReportedByNameBeforeCompute) {
 TEST(ClipModel, BadInputsAreErrors) {
   const Fixture f = load("tiny_quickgelu");
   const ClipModel clip(f.config, f.state);
-  EXPECT_THROW(clip.encode_image(at::zeros({1, 3, 32, 32})), cls::Error);
-  EXPECT_THROW(clip.encode_text(at::zeros({1, 76}, at::kLong)), cls::Error);
-  EXPECT_THROW(clip.encode_text(at::full({1, 77}, 49408, at::kLong)), cls::Error);
+  const int64_t res = f.config.arch.image_resolution, ctx = f.config.arch.context_length;
+  EXPECT_THROW(clip.encode_image(at::zeros({1, 3, res / 2, res / 2})), cls::Error);
+  EXPECT_THROW(clip.encode_text(at::zeros({1, ctx - 1}, at::kLong)), cls::Error);
+  EXPECT_THROW(clip.encode_text(at::full({1, ctx}, f.config.arch.vocab_size, at::kLong)), cls::Error);  // id = vocab size
   cls::clip::ClipOptions half;
   half.dtype = at::kHalf;
   EXPECT_THROW(ClipModel(f.config, f.state, half), cls::Error);  // fp16 is CUDA-only
@@ -205,17 +223,25 @@ TEST(ClipLoader, LoadsAWeightFileAndChecksItFirst) {
   const ClipModel clip = load_clip_model(dir + "/weights_fp16.safetensors", Activation::QuickGelu, config);
   expect_close(clip.encode_image(load_npy(dir + "/images.npy")),
                load_npy(dir + "/from_fp16_weights/image_features.npy"), "image_features via loader");
-  // Inferred sizes (text heads max(1, 32 / 64) = 1, unlike the fixture's 4): the shapes check passes.
+  // Inferred sizes (text heads max(1, width / 64), not the fixture's count): the shapes check passes.
   EXPECT_NO_THROW(load_clip_model(dir + "/weights_fp16.safetensors", Activation::QuickGelu));
-  // A wrong config is reported with the file name before any tensor is read.
-  config.arch.transformer_layers = 3;
+  // A wrong config (one text block too many) is reported with the file name before any tensor is
+  // read: every tensor of that block is missing (as many as block 0 has in config.json).
+  const int layers = config.arch.transformer_layers;
+  config.arch.transformer_layers = layers + 1;
+  const nlohmann::json tensors = fixture_config("tiny_quickgelu").at("tensors");
+  size_t per_block = 0;
+  for (const auto& [name, t] : tensors.items()) per_block += name.rfind("transformer.resblocks.0.", 0) == 0;
   try {
     load_clip_model(dir + "/weights_fp16.safetensors", Activation::QuickGelu, config);
     ADD_FAILURE() << "no error";
   } catch (const cls::Error& e) {
     const std::string m = e.what();
     EXPECT_NE(m.find("weights_fp16.safetensors"), std::string::npos) << m;
-    EXPECT_NE(m.find("12 missing:\n    transformer.resblocks.2.attn.in_proj_weight"), std::string::npos) << m;
+    EXPECT_NE(m.find(std::to_string(per_block) + " missing:\n    transformer.resblocks." + std::to_string(layers) +
+                     ".attn.in_proj_weight"),
+              std::string::npos)
+        << m;
   }
 }
 
@@ -225,7 +251,7 @@ namespace {
 
 // Hugging Face transformers CLIPModel names/values (modeling_clip.py), written from the canonical
 // state dict independently of the loader's table: q/k/v split, nn.Linear projections transposed.
-cls::WeightFile to_huggingface(const std::map<std::string, at::Tensor>& s) {
+cls::WeightFile to_huggingface(const std::map<std::string, at::Tensor>& s, const cls::ClipArch& arch) {
   cls::WeightFile w("hf-layout");
   auto tower = [&](const std::string& from, const std::string& to, int layers) {
     for (int i = 0; i < layers; ++i) {
@@ -245,8 +271,8 @@ cls::WeightFile to_huggingface(const std::map<std::string, at::Tensor>& s) {
       }
     }
   };
-  tower("transformer.resblocks.", "text_model", 2);
-  tower("visual.transformer.resblocks.", "vision_model", 2);
+  tower("transformer.resblocks.", "text_model", arch.transformer_layers);
+  tower("visual.transformer.resblocks.", "vision_model", arch.vision_layers);
   w.add("text_model.embeddings.token_embedding.weight", s.at("token_embedding.weight"));
   w.add("text_model.embeddings.position_embedding.weight", s.at("positional_embedding"));
   w.add("text_model.final_layer_norm.weight", s.at("ln_final.weight"));
@@ -267,7 +293,7 @@ cls::WeightFile to_huggingface(const std::map<std::string, at::Tensor>& s) {
 TEST(ClipLoader, HuggingFaceLayoutGivesTheSameFeatures) {
   const Fixture f = load("tiny_gelu");
   const std::string dir = fixture_dir("tiny_gelu");
-  const ClipModel clip(f.config, to_huggingface(f.state));
+  const ClipModel clip(f.config, to_huggingface(f.state, f.config.arch));
   expect_close(clip.encode_image(f.images), load_npy(dir + "/image_features.npy"), "image_features (HF layout)");
   expect_close(clip.encode_text(f.tokens), load_npy(dir + "/text_features.npy"), "text_features (HF layout)");
 }

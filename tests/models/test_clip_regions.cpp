@@ -118,9 +118,10 @@ TEST(ClipRegions, BatchedEncodingMatchesOneCropAtATime) {
     masks.push_back(m);
   }
   const at::Tensor batched = encode_regions(model, rgb, masks, 2);
-  ASSERT_EQ(batched.sizes(), (std::vector<int64_t>{5, 32}));
+  ASSERT_EQ(batched.sizes(), (std::vector<int64_t>{5, config.arch.embed_dim}));
   for (size_t i = 0; i < masks.size(); ++i) {
-    const at::Tensor one = model.encode_image(normalize_crops({langsplat_region_crop(rgb, masks[i], 64)}));
+    const at::Tensor one =
+        model.encode_image(normalize_crops({langsplat_region_crop(rgb, masks[i], config.arch.image_resolution)}));
     const at::Tensor want = one / one.norm(2, -1, true);
     EXPECT_TRUE(at::allclose(batched[i], want[0], 1e-5, 1e-5)) << i;
     EXPECT_NEAR(batched[i].norm().item<double>(), 1.0, 1e-5);

@@ -21,11 +21,7 @@ nlohmann::json read_json(const std::string& path) { return nlohmann::json::parse
 void check_post_run(const std::string& run, MaskNmsMethod method) {
   const MaskLevels records = read_levels_file(amg_fixture(run + "_records.json"));
   const nlohmann::json post = read_json(amg_fixture(run + "_post.json"));
-  MaskNmsParams params;
-  params.iou_thr = post["params_used"]["iou_thr"].get<double>();
-  params.score_thr = post["params_used"]["score_thr"].get<double>();
-  params.inner_thr = post["params_used"]["inner_thr"].get<double>();
-  const MasksUpdateResult result = masks_update(records, params, method);
+  const MasksUpdateResult result = masks_update(records, amg_test::post_params(post), method);
   const MaskLevels expected = levels_from_json(post["levels"], run + "_post.json");
   for (int l = 0; l < kNumLevels; ++l) {
     SCOPED_TRACE(run + " level " + level_name(l));

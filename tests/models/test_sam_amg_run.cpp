@@ -95,7 +95,7 @@ void check_run(const std::string& run) {
 
   // LangSplat post-processing of *our* records and the seg map vs the reference files.
   const auto post = nlohmann::json::parse(cls::read_text_file(amg_fixture(run + "_post.json")));
-  const MasksUpdateResult updated = masks_update(got, MaskNmsParams{});
+  const MasksUpdateResult updated = masks_update(got, amg_test::post_params(post));
   for (int l = 0; l < kNumLevels; ++l)
     EXPECT_EQ(updated.kept[l], post["kept_input_indices"][level_name(l)].get<std::vector<int>>()) << level_name(l);
   const cls::NpyArray ref = cls::read_npy(amg_fixture(run + "_seg_map.npy"));
@@ -111,13 +111,19 @@ void check_run(const std::string& run) {
 }  // namespace
 
 TEST(SamAmgRun, FirstBatchMatchesDebugDump) {
-  // Crop 0, first 64 grid points, before any filtering: the prompts and the model's outputs.
+  // Crop 0, first points_per_batch grid points, before any filtering: the prompts and the model's outputs.
   // The dump writes NaN stability scores as a bare NaN, which is not JSON: read them as null.
   std::string text = cls::read_text_file(amg_fixture("relaxed_debug_crop0_batch0.json"));
   for (size_t at = text.find("NaN"); at != std::string::npos; at = text.find("NaN", at)) text.replace(at, 3, "null");
   const auto dump = nlohmann::json::parse(text);
+  // The relaxed run's parameters; crop 0 (the whole image) uses the layer-0 grid.
+  const AmgParams params =
+      params_from_json(nlohmann::json::parse(cls::read_text_file(amg_fixture("relaxed_records.json")))["params"]);
   const TestImage& im = test_image();
-  const auto grid = build_point_grid(8);
+  ASSERT_EQ(im.height, dump["original_size_hw"][0].get<int>());
+  ASSERT_EQ(im.width, dump["original_size_hw"][1].get<int>());
+  auto grid = build_point_grid(params.points_per_side);
+  grid.resize(std::min(grid.size(), dump["points_per_batch"].get<size_t>()));
   std::vector<Point2d> pts;
   for (const auto& g : grid) pts.push_back(resize_coords({g[0] * im.width, g[1] * im.height}, im.height, im.width));
   const auto expected_pts = dump["transformed_points"];
@@ -130,12 +136,15 @@ TEST(SamAmgRun, FirstBatchMatchesDebugDump) {
   model.set_image(im.rgb.data(), im.height, im.width);
   std::vector<float> logits, ious;
   model.predict_points(pts, ious);
-  std::vector<int64_t> all(pts.size() * 3);
+  const size_t per_point = static_cast<size_t>(cls::sam::testing::num_multimask_outputs());
+  ASSERT_EQ(dump["iou_predictions"].at(0).size(), per_point);
+  std::vector<int64_t> all(pts.size() * per_point);
   for (size_t m = 0; m < all.size(); ++m) all[m] = static_cast<int64_t>(m);
   model.upsample_masks(all, logits);
   ASSERT_EQ(logits.size(), all.size() * static_cast<size_t>(im.height) * im.width);
   {  // The generator upsamples only some masks: a subset, in any order, gives the same planes.
-    const std::vector<int64_t> some = {17, 0, 5, 191};
+    const int64_t n = static_cast<int64_t>(all.size());
+    const std::vector<int64_t> some = {17 % n, 0, 5 % n, n - 1};
     std::vector<float> sub;
     model.upsample_masks(some, sub);
     const size_t plane = static_cast<size_t>(im.height) * im.width;
@@ -147,11 +156,12 @@ TEST(SamAmgRun, FirstBatchMatchesDebugDump) {
   }
   const size_t plane = static_cast<size_t>(im.height) * im.width;
   for (size_t p = 0; p < pts.size(); ++p)
-    for (int k = 0; k < 3; ++k) {
-      const float* m = logits.data() + (p * 3 + k) * plane;
-      EXPECT_NEAR(ious[p * 3 + k], dump["iou_predictions"][p][k].get<double>(), 1e-5);
+    for (size_t k = 0; k < per_point; ++k) {
+      const float* m = logits.data() + (p * per_point + k) * plane;
+      EXPECT_NEAR(ious[p * per_point + k], dump["iou_predictions"][p][k].get<double>(), 1e-5);
       const auto& s = dump["stability_score"][p][k];
-      const float stab = stability_score(m, im.height, im.width, 0.0f, 1.0f);
+      const float stab = stability_score(m, im.height, im.width, params.mask_threshold,
+                                         static_cast<float>(params.stability_score_offset));
       if (s.is_number()) EXPECT_NEAR(stab, s.get<double>(), 2e-3) << p << " " << k;
       else EXPECT_TRUE(std::isnan(stab)) << p << " " << k;  // 0/0
       int64_t area = 0;

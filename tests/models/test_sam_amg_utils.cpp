@@ -58,20 +58,27 @@ TEST(SamAmgUtils, BoxNmsTorchvisionSemantics) {
 
 TEST(SamAmgUtils, CropBoxesAndGridsMatchFixture) {
   const auto j = nlohmann::json::parse(cls::read_text_file(amg_test::amg_fixture("strict_records.json")));
-  const auto crops = generate_crop_boxes(302, 403, 1, 512.0 / 1500.0);
+  // The run's own image size and parameters.
+  const auto& params = j["params"];
+  const int n_layers = params["crop_n_layers"].get<int>(), n = params["points_per_side"].get<int>();
+  const auto crops = generate_crop_boxes(j["image_hw"][0].get<int>(), j["image_hw"][1].get<int>(), n_layers,
+                                         params["crop_overlap_ratio"].get<double>());
   const auto expected = j["crop_boxes_xyxy"];
   ASSERT_EQ(crops.size(), expected.size());
   for (size_t i = 0; i < crops.size(); ++i) {
     EXPECT_EQ((std::vector<int>{crops[i].x0, crops[i].y0, crops[i].x1, crops[i].y1}), expected[i].get<std::vector<int>>());
     EXPECT_EQ(crops[i].layer, j["crop_layer_idxs"][i].get<int>());
   }
-  const auto grids = build_all_layer_point_grids(32, 1, 1);
-  ASSERT_EQ(grids.size(), 2u);
-  EXPECT_EQ(static_cast<int>(grids[0].size()), j["point_grid_sizes"][0].get<int>());
-  EXPECT_EQ(grids[0][0], (Point2d{1.0 / 64, 1.0 / 64}));
-  EXPECT_EQ(grids[0][1][1], 1.0 / 64);  // x varies fastest
-  EXPECT_DOUBLE_EQ(grids[0][31][0], 1.0 - 1.0 / 64);
-  EXPECT_EQ(build_all_layer_point_grids(32, 2, 2)[2].size(), 64u);  // int(32 / 2^2) = 8 per side
+  const auto grids = build_all_layer_point_grids(n, n_layers, params["crop_n_points_downscale_factor"].get<int>());
+  ASSERT_EQ(grids.size(), static_cast<size_t>(n_layers + 1));
+  ASSERT_EQ(grids.size(), j["point_grid_sizes"].size());
+  for (size_t l = 0; l < grids.size(); ++l)
+    EXPECT_EQ(static_cast<int>(grids[l].size()), j["point_grid_sizes"][l].get<int>()) << "layer " << l;
+  const double offset = 1.0 / (2 * n);
+  EXPECT_EQ(grids[0][0], (Point2d{offset, offset}));
+  EXPECT_EQ(grids[0][1][1], offset);  // x varies fastest
+  EXPECT_DOUBLE_EQ(grids[0][n - 1][0], 1.0 - offset);
+  EXPECT_EQ(build_all_layer_point_grids(32, 2, 2)[2].size(), 64u);  // hand case: int(32 / 2^2) = 8 per side
 }
 
 TEST(SamAmgUtils, ResizeCoordsLongestSide) {

@@ -101,14 +101,17 @@ TEST(SamImageEncoder, RelPosTableByHand) {
 
 TEST(SamPromptEncoder, DensePeMatchesTheFormulaInDouble) {
   Sam model = testing::load_tiny_sam();
-  const auto pe = model->prompt_encoder->get_dense_pe();  // [1, 64, 64, 64]
+  const auto pe = model->prompt_encoder->get_dense_pe();  // [1, C, H, W]: the embedding grid
   const auto G = model->prompt_encoder->pe_layer->positional_encoding_gaussian_matrix.to(torch::kDouble);
-  ASSERT_EQ(pe.sizes(), (std::vector<int64_t>{1, 64, 64, 64}));
+  const auto& pc = testing::sam_config_json().at("prompt_encoder");
+  const int64_t C = pc.at("embed_dim"), H = pc.at("image_embedding_size")[0], W = pc.at("image_embedding_size")[1];
+  ASSERT_EQ(pe.sizes(), (std::vector<int64_t>{1, C, H, W}));
   const int F = int(G.size(1));
+  ASSERT_EQ(2 * F, C);
   double worst = 0;
-  for (int i = 0; i < 64; i += 7)
-    for (int j = 0; j < 64; j += 5) {
-      const double cx = 2 * ((j + 0.5) / 64) - 1, cy = 2 * ((i + 0.5) / 64) - 1;
+  for (int i = 0; i < H; i += 7)
+    for (int j = 0; j < W; j += 5) {
+      const double cx = 2 * ((j + 0.5) / W) - 1, cy = 2 * ((i + 0.5) / H) - 1;
       for (int f = 0; f < F; ++f) {
         const double a = 2 * M_PI * (cx * G[0][f].item<double>() + cy * G[1][f].item<double>());
         worst = std::max(worst, std::abs(pe[0][f][i][j].item<double>() - std::sin(a)));
@@ -135,6 +138,8 @@ std::string load_error(Sam& model, const WeightFile& w) {
 
 TEST(SamWeights, LoadErrorsNameTheFileAndTensor) {
   Sam model(sam_config_from_json_file(sam_fixture("config.json")));
+  // Shapes of this fixture's tensors, from its weight file.
+  const WeightFile ref = read_safetensors(sam_fixture("weights.safetensors"));
   {
     auto w = tiny_weights_copy(model);
     w.remove("mask_decoder.iou_token.weight");
@@ -143,15 +148,26 @@ TEST(SamWeights, LoadErrorsNameTheFileAndTensor) {
     EXPECT_NE(msg.find("missing tensor mask_decoder.iou_token.weight"), std::string::npos) << msg;
   }
   {
+    // A windowed block's rel_pos table (2 * window_size - 1 rows) in the first global block.
+    const auto& cfg = testing::sam_config_json();
+    const std::string rel =
+        "image_encoder.blocks." + std::to_string(cfg.at("global_attn_indexes").at(0).get<int>()) + ".attn.rel_pos_h";
+    const auto want = ref.info(rel).shape;
+    const std::vector<int64_t> wrong{2 * cfg.at("window_size").get<int64_t>() - 1, want.at(1)};
+    ASSERT_NE(wrong, want);
+    auto dims = [](const std::vector<int64_t>& v) {  // "[rows, cols]", spelled out here, not by the loader's formatter
+      return "[" + std::to_string(v.at(0)) + ", " + std::to_string(v.at(1)) + "]";
+    };
     auto w = tiny_weights_copy(model);
-    w.remove("image_encoder.blocks.1.attn.rel_pos_h");
-    w.add("image_encoder.blocks.1.attn.rel_pos_h", torch::zeros({27, 32}));
+    w.remove(rel);
+    w.add(rel, torch::zeros(wrong));
     w.add("image_encoder.extra", torch::zeros({1}));
     w.remove("prompt_encoder.no_mask_embed.weight");
-    w.add("prompt_encoder.no_mask_embed.weight", torch::zeros({1, 64}, torch::kInt));
+    w.add("prompt_encoder.no_mask_embed.weight",
+          torch::zeros(ref.info("prompt_encoder.no_mask_embed.weight").shape, torch::kInt));
     const auto before = model->image_encoder->pos_embed.clone();
     const auto msg = load_error(model, w);
-    EXPECT_NE(msg.find("image_encoder.blocks.1.attn.rel_pos_h has shape [27, 32], expected [127, 32]"), std::string::npos) << msg;
+    EXPECT_NE(msg.find(rel + " has shape " + dims(wrong) + ", expected " + dims(want)), std::string::npos) << msg;
     EXPECT_NE(msg.find("unexpected tensor image_encoder.extra"), std::string::npos) << msg;
     EXPECT_NE(msg.find("prompt_encoder.no_mask_embed.weight is not floating point"), std::string::npos) << msg;
     EXPECT_TRUE(torch::equal(before, model->image_encoder->pos_embed));  // nothing copied
@@ -160,17 +176,19 @@ TEST(SamWeights, LoadErrorsNameTheFileAndTensor) {
     // f16 weights are converted.
     auto w = tiny_weights_copy(model);
     w.remove("mask_decoder.iou_token.weight");
-    w.add("mask_decoder.iou_token.weight", torch::full({1, 64}, 0.5, torch::kHalf));
+    w.add("mask_decoder.iou_token.weight",
+          torch::full(ref.info("mask_decoder.iou_token.weight").shape, 0.5, torch::kHalf));
     load_sam_weights(*model, w);
-    EXPECT_EQ(model->mask_decoder->iou_token->weight[0][3].item<float>(), 0.5f);
+    EXPECT_TRUE(model->mask_decoder->iou_token->weight.eq(0.5f).all().item<bool>());
   }
 }
 
 // The model's state_dict names and shapes equal the official architecture's (the real key lists).
-// ViT-L/H are built with their first blocks only (up to and including the first global block) to
-// keep the test light; the remaining blocks repeat those.
-void expect_real_layout(const std::string& file, SamConfig cfg, int blocks_built) {
+// The models are built with their first blocks only (up to and including the first global block of
+// the file's "encoder") to keep the test light; the remaining blocks repeat those.
+void expect_real_layout(const std::string& file, SamConfig cfg) {
   const auto j = nlohmann::json::parse(read_text_file(sam_fixture(file)));
+  const int blocks_built = j.at("encoder").at("global_attn_indexes").at(0).get<int>() + 1;
   const int depth = cfg.encoder_depth;
   cfg.encoder_depth = blocks_built;
   Sam model(cfg);
@@ -212,9 +230,9 @@ TEST(SamWeights, LoadSamReadsOfficialAndHuggingFaceNames) {
 }
 
 TEST(SamWeights, OfficialLayouts) {
-  expect_real_layout("real_vit_b_keys.json", sam_config_by_name("vit_b"), 3);
-  expect_real_layout("real_vit_l_keys.json", sam_config_by_name("vit_l"), 6);
-  expect_real_layout("real_vit_h_keys.json", sam_config_by_name("vit_h"), 8);
+  expect_real_layout("real_vit_b_keys.json", sam_config_by_name("vit_b"));
+  expect_real_layout("real_vit_l_keys.json", sam_config_by_name("vit_l"));
+  expect_real_layout("real_vit_h_keys.json", sam_config_by_name("vit_h"));
 }
 
 }  // namespace
