@@ -101,7 +101,7 @@ TilePlan make_tile_plan(const Scene& scene, const SceneCityModel& city, const Ti
     for (int v : p.views) t.images.push_back(scene.views[v].name);
     if (static_cast<int>(t.images.size()) > o.max_images)
       log_warn(cat("tile: ", t.name, " has ", t.images.size(), " images (> --max-images ", o.max_images,
-                   "): a single building seen by that many views is not split"));
+                   "): it cannot be split further (one building, or centres that coincide); its images include the cameras standing in its cell"));
     plan.tiles.push_back(std::move(t));
   }
   return plan;
@@ -123,8 +123,16 @@ ColmapModel tile_colmap(const ColmapModel& all, const std::vector<std::string>& 
       m.images[id] = image;
       m.cameras[image.camera_id] = all.cameras.at(image.camera_id);
     }
-  for (const auto& [id, point] : all.points) {
-    ColmapPoint3D p = point;
+  // The points the kept images observe, found from their 2D points: the work grows with the tile's
+  // observations, not with the district's points times the tiles.
+  std::set<uint64_t> seen;
+  for (const auto& [id, image] : m.images)
+    for (const ColmapPoint2D& p2 : image.points2d)
+      if (p2.point3d_id != ColmapPoint2D{}.point3d_id) seen.insert(p2.point3d_id);
+  for (uint64_t id : seen) {
+    const auto point = all.points.find(id);
+    if (point == all.points.end()) continue;
+    ColmapPoint3D p = point->second;
     p.track.erase(std::remove_if(p.track.begin(), p.track.end(), [&](const auto& obs) { return !m.images.count(obs.first); }), p.track.end());
     if (!p.track.empty()) m.points[id] = std::move(p);
   }

@@ -33,6 +33,27 @@ python3 "$here/cityjson_subset.py" "$repo/data/citygml/citygml4j/lod2_buildings_
 tiles=$(python3 -c "import json,sys; print(len(json.load(open(sys.argv[1]))['tiles']))" "$work/tiles/tiles.json")
 echo "tiles: $tiles"
 [ "$tiles" -ge 2 ] || { echo "FAIL: expected several tiles, got $tiles"; exit 1; }
+# Every image belongs to the tile whose cell its camera stands in (camera centre -R^T t from the
+# district's images.txt, computed here, not by the code under test).
+python3 - "$work/district/sparse/0/images.txt" "$work/tiles/tiles.json" <<'PY'
+import json, sys
+lines = [l.split() for l in open(sys.argv[1]) if l.strip() and not l.startswith("#")]
+tiles = json.load(open(sys.argv[2]))["tiles"]
+inf = float("inf")
+def inside(cell, x, y):
+    x0, y0, x1, y1 = [(-inf if i < 2 else inf) if v is None else v for i, v in enumerate(cell)]
+    return x0 <= x < x1 and y0 <= y < y1
+for f in lines[0::2]:
+    qw, qx, qy, qz, tx, ty, tz = map(float, f[1:8])
+    R = [[1 - 2 * (qy * qy + qz * qz), 2 * (qx * qy - qz * qw), 2 * (qx * qz + qy * qw)],
+         [2 * (qx * qy + qz * qw), 1 - 2 * (qx * qx + qz * qz), 2 * (qy * qz - qx * qw)],
+         [2 * (qx * qz - qy * qw), 2 * (qy * qz + qx * qw), 1 - 2 * (qx * qx + qy * qy)]]
+    c = [-(R[0][i] * tx + R[1][i] * ty + R[2][i] * tz) for i in range(3)]
+    owners = [t["name"] for t in tiles if inside(t["cell"], c[0], c[1])]
+    if len(owners) != 1 or f[9] not in next(t for t in tiles if t["name"] == owners[0])["images"]:
+        sys.exit(f"FAIL: image {f[9]} (camera at {c[0]:.2f}, {c[1]:.2f}) is not in the tile whose cell holds it: {owners}")
+print(f"every camera is in its cell's tile ({len(lines) // 2} images)")
+PY
 
 options=(--models synthetic --rgb-iterations 200 --language-iterations 40 --autoencoder-epochs 10 --no-baseline)
 "$bin" run-tiles "$work/tiles" --executor slurm --array-limit 2 "${options[@]}"

@@ -88,13 +88,15 @@ TEST(TilePartition, ACameraStandingInATilesCellJoinsIt) {
   EXPECT_EQ(tiles[0].cell.x1, 8);
   EXPECT_EQ(tiles[0].views, (std::vector<int>{0, 1}));
   EXPECT_EQ(tiles[1].views, (std::vector<int>{1, 2, 3}));
-  // A camera in the cell counts toward the budget: with every camera on the left, the left house alone
-  // has 4 views.
-  for (int v = 0; v < 4; ++v) p[v].camera_x = 1, p[v].camera_y = 1;
-  const auto crowded = partition_buildings(row_of_houses(2), p, 3, 0.2).tiles;
-  ASSERT_EQ(crowded.size(), 2u);
-  EXPECT_EQ(crowded[0].views, (std::vector<int>{0, 1, 2, 3}));
-  EXPECT_EQ(crowded[1].views, (std::vector<int>{1, 2, 3}));
+  // Cameras in the cell count toward the budget: two views that see a house each (positions unknown)
+  // fit a budget of 3, but two more cameras that stand at x = 1 and see no building make the pair split.
+  BuildingPixels crowded = sparse({{1000, 0}, {0, 1000}, {0, 0}, {0, 0}});
+  for (int v = 2; v < 4; ++v) crowded[v].camera_x = 1, crowded[v].camera_y = 1;
+  const auto split = partition_buildings(row_of_houses(2), crowded, 3, 0.2).tiles;
+  ASSERT_EQ(split.size(), 2u);
+  EXPECT_EQ(split[0].views, (std::vector<int>{0, 2, 3}));
+  EXPECT_EQ(split[1].views, (std::vector<int>{1}));
+  EXPECT_EQ(partition_buildings(row_of_houses(2), crowded, 4, 0.2).tiles.size(), 1u);
 }
 
 TEST(TilePartition, BisectsAtTheMedianUntilTheImagesFit) {
@@ -175,7 +177,9 @@ TEST(TileScene, ATileKeepsThePointsItsImagesSeeWhereverTheyLie) {
   // Image 1 sees point 10 (1 km away) and 11; image 2 sees 11 and 12.
   ColmapModel all;
   all.cameras[1] = Camera{};
-  all.images[1] = {1, {1, 0, 0, 0}, {0, 0, 0}, 1, "a.png", {{5, 5, 10}, {6, 6, 11}}};
+  // Image 1 also claims point 12, whose track does not list it (an inconsistent model): that
+  // observation is reset, and point 12 stays out of tile a.
+  all.images[1] = {1, {1, 0, 0, 0}, {0, 0, 0}, 1, "a.png", {{5, 5, 10}, {6, 6, 11}, {9, 9, 12}}};
   all.images[2] = {2, {1, 0, 0, 0}, {1, 0, 0}, 1, "b.png", {{7, 7, 11}, {8, 8, 12}}};
   all.points[10] = {10, {1000, 0, 0}, {}, 0, {{1, 0}}};
   all.points[11] = {11, {0, 0, 5}, {}, 0, {{1, 1}, {2, 0}}};
@@ -187,6 +191,7 @@ TEST(TileScene, ATileKeepsThePointsItsImagesSeeWhereverTheyLie) {
   EXPECT_EQ(a.points.at(10).xyz[0], 1000);
   EXPECT_EQ(a.points.at(11).track, (std::vector<std::pair<uint32_t, uint32_t>>{{1, 1}}));
   EXPECT_EQ(a.images.at(1).points2d[1].point3d_id, 11u);
+  EXPECT_EQ(a.images.at(1).points2d[2].point3d_id, ColmapPoint2D{}.point3d_id);
   const ColmapModel b = tile_colmap(all, {"b.png"});
   EXPECT_EQ(b.points.count(10), 0u);
   EXPECT_EQ(b.points.at(11).track, (std::vector<std::pair<uint32_t, uint32_t>>{{2, 0}}));
