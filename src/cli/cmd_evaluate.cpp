@@ -71,6 +71,8 @@ int cmd_evaluate(int argc, char** argv) {
       .option("threshold", "0.3", "2D: pixels whose best normalised relevance is below are ignored")
       .option("radius", "0.2", "3D: nearest-neighbour match radius (scene units)")
       .option("level-rule", "fallback", "fallback (level 1 for subpart/part classes, 3 for whole) or langsplat (highest maximum)")
+      .option("phrases", "held-out", "a class's prototype: held-out (its prompts but prompts[0], the fusion's class "
+              "prompt) or all")
       .option("classes", "", "comma-separated class names to evaluate (default: every class in the GT)")
       .option("provider", "", "feature provider spec, JSON text or file (default: the first model's model.json provider)")
       .option("taxonomy", "", "taxonomy JSON (default: the built-in one)")
@@ -101,6 +103,7 @@ int cmd_evaluate(int argc, char** argv) {
   options.threshold_2d = args.get_double("threshold");
   options.match_radius = args.get_double("radius");
   options.level_rule = args.get("level-rule");
+  options.phrases = args.get("phrases");
   options.gt_point_radius = args.get_double("gt-point-radius");
   options.write_view_images = !args.flag_set("no-images");
   options.labels_dir = args.get("labels");

@@ -136,14 +136,22 @@ at::Tensor gaussian_cosines(const LanguageModel& model, int level, const at::Ten
 
 }  // namespace
 
-at::Tensor class_prototypes(FeatureProvider& provider, const Taxonomy& taxonomy, const std::vector<int>& classes) {
+std::vector<std::string> evaluation_phrases(const SemanticClass& c, const std::string& phrases) {
+  if (phrases != "held-out" && phrases != "all")
+    throw UsageError("evaluate: phrases must be 'held-out' or 'all', got '" + phrases + "'");
+  if (c.prompts.empty()) throw Error("class_prototypes: class '" + c.name + "' has no prompts");
+  if (phrases == "all" || c.prompts.size() == 1) return c.prompts;
+  return {c.prompts.begin() + 1, c.prompts.end()};
+}
+
+at::Tensor class_prototypes(FeatureProvider& provider, const Taxonomy& taxonomy, const std::vector<int>& classes,
+                            const std::string& phrases) {
   at::NoGradGuard no_grad;
   std::vector<at::Tensor> rows;
   for (int id : classes) {
     if (id < 0 || id >= int(taxonomy.classes.size())) throw Error("class_prototypes: class id " + std::to_string(id) + " outside the taxonomy");
-    const SemanticClass& c = taxonomy.classes[size_t(id)];
-    if (c.prompts.empty()) throw Error("class_prototypes: class '" + c.name + "' has no prompts");
-    const at::Tensor t = provider.text_features(c.prompts).to(torch::kCPU, torch::kFloat32);
+    const at::Tensor t =
+        provider.text_features(evaluation_phrases(taxonomy.classes[size_t(id)], phrases)).to(torch::kCPU, torch::kFloat32);
     rows.push_back(unit_rows(unit_rows(t).mean(0)));
   }
   return torch::stack(rows, 0);
@@ -299,7 +307,7 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
   at::NoGradGuard no_grad;
   const EvaluatedClasses ec = load_evaluated_classes(taxonomy, options);
   const int K = ec.size();
-  const at::Tensor prototypes = class_prototypes(provider, taxonomy, ec.ids);
+  const at::Tensor prototypes = class_prototypes(provider, taxonomy, ec.ids, options.phrases);
   const std::vector<int> levels = available_levels(model);
   const bool langsplat_rule = options.level_rule == "langsplat";
   std::vector<int> class_level(K);
@@ -398,6 +406,7 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
   result["method"] = model.info.value("method", std::string("unknown"));
   result["class_levels"] = levels_json;
   result["level_rule"] = options.level_rule;
+  result["phrases"] = options.phrases;
   result["provider"] = provider.spec();
   return result;
 }

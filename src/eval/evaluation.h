@@ -27,6 +27,10 @@ struct EvaluationOptions {
   // "langsplat" = LangSplat's rule, the level whose raw cosine map (2D: per view; 3D: over all
   // Gaussians) has the highest maximum.
   std::string level_rule = "fallback";
+  // The phrases that make a class's prototype: "held-out" = its prompts except prompts[0], the class prompt
+  // the text-guided fusion put into the CityGML features (scoring with it would reward the method for the
+  // very text it was given; a class with no other prompt keeps prompts[0]); "all" = every prompt.
+  std::string phrases = "held-out";
   double gt_point_radius = 0;     // GT projection footprint (scene units); 0 = from the cloud's spacing
   // The raycast label maps (`citylangsplat raycast` output) of these views: when set, 2D is also scored
   // on the GT pixels the city model covers (coverage M = 1, "2d_covered"); evaluate_label_maps needs it.
@@ -40,7 +44,7 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
                               const Taxonomy& taxonomy, const EvaluationOptions& options);
 
 // The tables' layout version: `run` recomputes an evaluation written by another version.
-inline constexpr const char* kEvaluationTables = "2026-11-24 one writer";
+inline constexpr const char* kEvaluationTables = "2026-11-24 held-out phrases";
 
 // The label maps' row name in the tables.
 inline constexpr const char* kLabelMapsMethod = "city-model-labels";
@@ -54,7 +58,10 @@ nlohmann::json evaluate_label_maps(const Scene& scene, const Taxonomy& taxonomy,
 
 // The class prototypes (paper 4.3): per class the mean of the provider's text features of its phrase
 // set (the taxonomy's prompts), normalised: classes.size() x D.
-at::Tensor class_prototypes(FeatureProvider& provider, const Taxonomy& taxonomy, const std::vector<int>& classes);
+at::Tensor class_prototypes(FeatureProvider& provider, const Taxonomy& taxonomy, const std::vector<int>& classes,
+                            const std::string& phrases = "held-out");
+// The phrases of one class under that rule (EvaluationOptions::phrases).
+std::vector<std::string> evaluation_phrases(const SemanticClass& c, const std::string& phrases);
 
 // The paper's Tables 1-3 side by side for several methods (name -> evaluate_model's JSON), Markdown.
 std::string evaluation_tables_markdown(const std::vector<std::pair<std::string, nlohmann::json>>& methods);

@@ -136,11 +136,27 @@ EvaluationOptions options(const std::string& out = "") {
 TEST(Evaluation, PrototypesAreNormalisedMeansOfThePromptFeatures) {
   Fixture& f = fixture();
   const int window = f.taxonomy.find("window");
-  const at::Tensor p = class_prototypes(*f.provider, f.taxonomy, {window});
-  const at::Tensor t = f.provider->text_features(f.taxonomy.classes[size_t(window)].prompts);
-  const at::Tensor mean = t.mean(0);
-  ASSERT_EQ(p.sizes(), (at::IntArrayRef{1, kDim}));
-  EXPECT_TRUE(at::allclose(p[0], mean / mean.norm(), 1e-5, 1e-6));
+  const std::vector<std::string>& prompts = f.taxonomy.classes[size_t(window)].prompts;
+  ASSERT_GE(prompts.size(), 2u) << "the test needs a class with more than its fusion prompt";
+  auto normalised_mean = [&](const std::vector<std::string>& texts) {
+    const at::Tensor mean = f.provider->text_features(texts).mean(0);
+    return mean / mean.norm();
+  };
+  // All prompts, and (the default) all but prompts[0], the class prompt the fusion used.
+  const at::Tensor all = class_prototypes(*f.provider, f.taxonomy, {window}, "all");
+  ASSERT_EQ(all.sizes(), (at::IntArrayRef{1, kDim}));
+  EXPECT_TRUE(at::allclose(all[0], normalised_mean(prompts), 1e-5, 1e-6));
+  const at::Tensor held_out = class_prototypes(*f.provider, f.taxonomy, {window});
+  EXPECT_TRUE(at::allclose(held_out[0], normalised_mean({prompts.begin() + 1, prompts.end()}), 1e-5, 1e-6));
+  EXPECT_FALSE(at::allclose(held_out[0], all[0], 1e-3, 1e-4));
+  // A class with its fusion prompt only keeps it; an unknown rule is refused.
+  SemanticClass lone;
+  lone.name = "lone";
+  lone.prompts = {"a lone prompt"};
+  EXPECT_EQ(evaluation_phrases(lone, "held-out"), lone.prompts);
+  EXPECT_EQ(evaluation_phrases(f.taxonomy.classes[size_t(window)], "held-out"),
+            (std::vector<std::string>{prompts.begin() + 1, prompts.end()}));
+  EXPECT_THROW(evaluation_phrases(lone, "first"), UsageError);
 }
 
 TEST(Evaluation, ACorrectFieldScoresHighAndWritesViews) {
