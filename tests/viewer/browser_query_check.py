@@ -213,6 +213,16 @@ def check(args, url, failures):
             driver.save_screenshot(args.screenshot)
             print(f"screenshot: {args.screenshot}")
 
+        # Every cell of the object table lies inside the side panel (long ids must not push a column out).
+        overflow = driver.execute_script(
+            "const side = document.getElementById('side').getBoundingClientRect(); let worst = -Infinity;"
+            "for (const row of document.querySelectorAll('#objects tr'))"
+            "  for (const cell of row.cells) worst = Math.max(worst, cell.getBoundingClientRect().right - side.right);"
+            "return worst;")
+        print(f"object table: its rightmost cell ends {-overflow:.0f} px inside the side panel")
+        if overflow > 0:
+            failures.append(f"the object table overflows the side panel by {overflow:.0f} px: its last column is cut")
+
         highlighted, on_class = highlighted_on_class(before, after, labels, label_value, args.min_change)
         total = labels.width * labels.height
         fraction = on_class / highlighted if highlighted else 0.0

@@ -237,7 +237,8 @@ function renderObjects(answer) {
     const cells = [object.rank, object.class, object.id, object.building, object.gaussians.toLocaleString(),
       object.mean_score.toFixed(3)];
     for (const value of cells) row.insertCell().textContent = value;
-    row.title = `max ${object.max_score.toFixed(3)}, ${(100 * object.above).toFixed(0)}% above the threshold — click to fly there`;
+    row.title = `${object.class} ${object.id} of building ${object.building}: max ${object.max_score.toFixed(3)}, ` +
+      `${(100 * object.above).toFixed(0)}% above the threshold — click to fly there`;
     row.addEventListener("click", () => flyTo(new THREE.Vector3(...object.center), object.radius));
   }
 }
