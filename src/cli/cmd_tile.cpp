@@ -21,8 +21,8 @@ int cmd_tile(int argc, char** argv) {
             "Cut a district into tiles for run-tiles (docs/scale.md): the city model's buildings are split by "
             "recursive bisection of their footprints until each tile's images fit --max-images; an image joins "
             "every tile whose buildings cover at least --min-share of its building pixels (one raycast per "
-            "image) and the tile whose cell its camera stands in; a tile keeps the sparse points its images see. Writes TILES/<tile>/ (scene.json, images linked, the COLMAP model cut to the tile) and "
-            "TILES/tiles.json. The city model comes from --config FILE or SCENE_DIR/scene.json unless given.");
+            "image) and the tile whose cell its camera stands in; a tile keeps the sparse points its images see. "
+            "Writes TILES/<tile>/ (scene.json, images linked, the COLMAP model cut to the tile) and TILES/tiles.json. The city model comes from --config FILE or SCENE_DIR/scene.json unless given.");
   args.option("scene", "", "the district's scene directory (COLMAP model; required)");
   add_scene_city_options(args);
   args.option("out", "", "tiles directory to write (required)")

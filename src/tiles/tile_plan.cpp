@@ -12,25 +12,31 @@ namespace cls {
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
+namespace {
+
+// The set covers at least min_share of the view's building pixels (and at least one).
+bool sees_buildings(const std::vector<char>& in_set, const ViewBuildings& view, double min_share) {
+  int64_t own = 0;
+  for (const auto& [b, p] : view.pixels)
+    if (in_set[b]) own += p;
+  return own > 0 && static_cast<double>(own) >= min_share * static_cast<double>(view.total);
+}
+
+}  // namespace
+
 std::vector<int> views_of_buildings(const std::vector<char>& in_set, const BuildingPixels& pixels, double min_share) {
   std::vector<int> views;
-  for (size_t v = 0; v < pixels.size(); ++v) {
-    int64_t own = 0;
-    for (const auto& [b, p] : pixels[v].pixels)
-      if (in_set[b]) own += p;
-    if (own > 0 && static_cast<double>(own) >= min_share * static_cast<double>(pixels[v].total))
-      views.push_back(static_cast<int>(v));
-  }
+  for (size_t v = 0; v < pixels.size(); ++v)
+    if (sees_buildings(in_set, pixels[v], min_share)) views.push_back(static_cast<int>(v));
   return views;
 }
 
 std::vector<int> views_of_tile(const std::vector<char>& in_set, const TileCell& cell, const BuildingPixels& pixels,
                                double min_share) {
-  std::vector<int> views = views_of_buildings(in_set, pixels, min_share);
+  std::vector<int> views;
   for (size_t v = 0; v < pixels.size(); ++v)
-    if (cell.contains(pixels[v].camera_x, pixels[v].camera_y)) views.push_back(static_cast<int>(v));
-  std::sort(views.begin(), views.end());
-  views.erase(std::unique(views.begin(), views.end()), views.end());
+    if (sees_buildings(in_set, pixels[v], min_share) || cell.contains(pixels[v].camera_x, pixels[v].camera_y))
+      views.push_back(static_cast<int>(v));
   return views;
 }
 

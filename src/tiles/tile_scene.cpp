@@ -101,7 +101,8 @@ TilePlan make_tile_plan(const Scene& scene, const SceneCityModel& city, const Ti
     for (int v : p.views) t.images.push_back(scene.views[v].name);
     if (static_cast<int>(t.images.size()) > o.max_images)
       log_warn(cat("tile: ", t.name, " has ", t.images.size(), " images (> --max-images ", o.max_images,
-                   "): it cannot be split further (one building, or centres that coincide); its images include the cameras standing in its cell"));
+                   "): it cannot be split further (one building, or centres that coincide); its images include the "
+                   "cameras standing in its cell"));
     plan.tiles.push_back(std::move(t));
   }
   return plan;
