@@ -53,6 +53,40 @@ Vec3d CityTransform::apply(const Vec3d& p) const {
   return r;
 }
 
+Mat3d CityTransform::rotation() const {
+  const double s = scale();
+  Mat3d R;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) R.m[i][j] = matrix[i][j] / s;
+  return R;
+}
+
+CityTransform similarity_transform(double s, const Mat3d& R, Vec3d t) {
+  CityTransform out;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) out.matrix[i][j] = s * R.m[i][j];
+    out.matrix[i][3] = t[i];
+  }
+  return out;
+}
+
+CityTransform operator*(const CityTransform& a, const CityTransform& b) {
+  CityTransform out;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) {
+      double sum = 0;
+      for (int k = 0; k < 4; ++k) sum += a.matrix[i][k] * b.matrix[k][j];
+      out.matrix[i][j] = sum;
+    }
+  return out;
+}
+
+CityTransform inverse(const CityTransform& t) {
+  const double s = t.scale();
+  const Mat3d Rt = transpose(t.rotation());
+  return similarity_transform(1 / s, Rt, (-1 / s) * (Rt * t.translation()));
+}
+
 std::string similarity_problem(const CityTransform& t) {
   const auto& m = t.matrix;
   for (const auto& row : m)

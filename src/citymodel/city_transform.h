@@ -22,7 +22,17 @@ struct CityTransform {
   double scale() const;
   // M * [p, 1] in double.
   Vec3d apply(const Vec3d& p) const;
+  // The rotation R of M = [s R | t].
+  Mat3d rotation() const;
+  Vec3d translation() const { return {matrix[0][3], matrix[1][3], matrix[2][3]}; }
 };
+
+// [s R | t].
+CityTransform similarity_transform(double s, const Mat3d& R, Vec3d t);
+// a * b: b first, then a.
+CityTransform operator*(const CityTransform& a, const CityTransform& b);
+// The inverse similarity [R^T / s | -R^T t / s].
+CityTransform inverse(const CityTransform& t);
 
 // What keeps `t` from being a similarity ("" if it is one).
 std::string similarity_problem(const CityTransform& t);

@@ -39,7 +39,6 @@ int cmd_align_check(int argc, char** argv) {
   SceneOptions scene_options;
   scene_options.check_images = false;  // only the sparse points are used
   const Scene scene = load_scene(args.get("scene"), scene_options);
-  if (scene.points.empty()) fail(args.get("scene"), "the scene has no sparse points to compare with the city model");
   const SceneCityModel city = load_city_mesh_inputs(city_options, "align-check");
 
   const AlignmentStats s = check_alignment(scene, city, threshold);

@@ -41,6 +41,9 @@ int cmd_synth(int argc, char** argv) {
       .option("points-per-view", std::to_string(defaults.samples_per_view), "sparse point samples per view")
       .option("point-noise", "0.01", "standard deviation of the sparse points' noise (scene units)")
       .option("gt-density", "400", "ground-truth cloud samples per square unit on the city model (1/8 of it on terrain and clutter)")
+      .option("city-error", "", "give the pipeline a wrong city transform: t=METRES,r=DEGREES,s=FRACTION (seeded "
+                                "direction and axis, about the model's centre); the exact one goes to "
+                                "city/transform_true.json (default: none)")
       .flag("per-building", "a district: split the views over the buildings, each share circling its own building")
       .flag("overwrite", "replace an existing synth output in --out")
       .flag("skip-if-same", "do nothing if --out holds a scene generated with the same settings and inputs");
@@ -62,6 +65,7 @@ int cmd_synth(int argc, char** argv) {
   job.settings.point_noise = args.get_double("point-noise");
   job.settings.gt_density = args.get_double("gt-density");
   job.settings.per_building = args.flag_set("per-building");
+  if (args.has("city-error")) job.city_error = synth::parse_city_error(args.get("city-error"));
   job.overwrite = args.flag_set("overwrite");
   job.skip_if_same = args.flag_set("skip-if-same");
   synth::run_synth_job(job);

@@ -22,6 +22,7 @@ const Command kCommands[] = {
     {"run", cls::cmd_run, "run every stage on a scene directory, reusing finished stages"},
     {"citymodel", cls::cmd_citymodel, "inspect a CityGML/CityJSON model: stats, export"},
     {"raycast", cls::cmd_raycast, "raycast the city model into per-view label maps and coverage"},
+    {"align", cls::cmd_align, "refine the city model's transform into the scene from the scene's points (ICP)"},
     {"align-check", cls::cmd_align_check, "check how well a scene's sparse points lie on the city model"},
     {"synth", cls::cmd_synth, "render a synthetic scene (images, COLMAP model, ground truth) of a city model"},
     {"scene", cls::cmd_scene, "inspect or convert a scene (COLMAP / Pix4D)"},

@@ -65,6 +65,25 @@ template <class T> CLS_HD Mat3<T> quat_to_rotation(T w, T x, T y, T z) {
   return R;
 }
 
+// Rotation by |w| radians about w / |w| (Rodrigues' formula); the identity for w = 0.
+template <class T> CLS_HD Mat3<T> axis_angle_to_rotation(Vec3<T> w) {
+  const T angle = norm(w);
+  if (!(angle > T(0))) return Mat3<T>::identity();
+  const Vec3<T> k = (T(1) / angle) * w;
+  const T c = std::cos(angle), s = std::sin(angle), v = T(1) - c;
+  Mat3<T> R;
+  R.m[0][0] = c + k.x * k.x * v;       R.m[0][1] = k.x * k.y * v - k.z * s; R.m[0][2] = k.x * k.z * v + k.y * s;
+  R.m[1][0] = k.y * k.x * v + k.z * s; R.m[1][1] = c + k.y * k.y * v;       R.m[1][2] = k.y * k.z * v - k.x * s;
+  R.m[2][0] = k.z * k.x * v - k.y * s; R.m[2][1] = k.z * k.y * v + k.x * s; R.m[2][2] = c + k.z * k.z * v;
+  return R;
+}
+
+// The angle (radians, in [0, pi]) of rotation R; atan2 keeps small angles exact where acos would not.
+template <class T> CLS_HD T rotation_angle(const Mat3<T>& R) {
+  const T sx = R.m[2][1] - R.m[1][2], sy = R.m[0][2] - R.m[2][0], sz = R.m[1][0] - R.m[0][1];
+  return std::atan2(T(0.5) * std::sqrt(sx * sx + sy * sy + sz * sz), T(0.5) * (R.m[0][0] + R.m[1][1] + R.m[2][2] - T(1)));
+}
+
 using Vec3d = Vec3<double>;
 using Vec3f = Vec3<float>;
 using Mat3d = Mat3<double>;

@@ -24,15 +24,68 @@ AlignmentStats alignment_stats(std::vector<double> distances, double threshold) 
   return s;
 }
 
+namespace {
+
+// Distances of `points` moved by `motion` to the mesh, in city-model units: the transform scales model
+// metres into the scene frame.
+AlignmentStats stats_after(const ClosestPointQuery& mesh, std::vector<Vec3d> points, const CityTransform& motion,
+                           double scene_scale, double threshold) {
+  for (auto& p : points) p = motion.apply(p);
+  std::vector<double> distances = mesh.distances(points);
+  for (double& d : distances) d /= scene_scale;
+  return alignment_stats(std::move(distances), threshold);
+}
+
+}  // namespace
+
 AlignmentStats check_alignment(const Scene& scene, const SceneCityModel& city, double threshold) {
+  const ClosestPointQuery mesh(city.vertices, city.mesh.triangles);
+  return stats_after(mesh, sparse_points(scene), CityTransform::identity(), city.transform.scale(), threshold);
+}
+
+std::vector<Vec3d> sparse_points(const Scene& scene) {
+  if (scene.points.empty()) fail(scene.root, "the scene has no sparse points to compare with the city model");
   std::vector<Vec3d> points;
   points.reserve(scene.points.size());
   for (const auto& p : scene.points) points.push_back(p.xyz);
-  std::vector<double> distances = ClosestPointQuery(city.vertices, city.mesh.triangles).distances(points);
-  // Scene units -> city-model units: the transform scales model metres into the scene frame.
+  return points;
+}
+
+AlignmentRefinement refine_alignment(const std::vector<Vec3d>& points, const SceneCityModel& city,
+                                     const IcpOptions& options, double threshold) {
   const double scale = city.transform.scale();
-  for (double& d : distances) d /= scale;
-  return alignment_stats(std::move(distances), threshold);
+  IcpOptions scene_units = options;
+  scene_units.capture *= scale;
+  scene_units.finest *= scale;
+  // The mesh stays where the given transform puts it; ICP moves the points onto it, and the inverse of
+  // that motion corrects the transform: x_scene = motion^-1 * M * x_city.
+  const ClosestPointQuery mesh(city.vertices, city.mesh.triangles);
+  AlignmentRefinement r;
+  r.before = stats_after(mesh, points, CityTransform::identity(), scale, threshold);
+  r.icp = point_to_plane_icp(mesh, points, scene_units);
+  r.after = stats_after(mesh, points, r.icp.motion, scale, threshold);
+  r.refined = inverse(r.icp.motion) * city.transform;
+  return r;
+}
+
+TransformDifference transform_difference(const CityTransform& a, const CityTransform& b, const SemanticMesh& mesh) {
+  if (mesh.vertices.empty()) throw Error("transform difference over an empty mesh");
+  TransformDifference d;
+  const double unit = b.scale();
+  Vec3d lo{INFINITY, INFINITY, INFINITY}, hi = -1.0 * lo;
+  for (const auto& v : mesh.vertices) {
+    const Vec3d x{v[0] + mesh.origin[0], v[1] + mesh.origin[1], v[2] + mesh.origin[2]};
+    d.max_displacement = std::max(d.max_displacement, norm(a.apply(x) - b.apply(x)) / unit);
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], x[k]);
+      hi[k] = std::max(hi[k], x[k]);
+    }
+  }
+  const Vec3d centre = 0.5 * (lo + hi);
+  d.centre = norm(a.apply(centre) - b.apply(centre)) / unit;
+  d.rotation_deg = rotation_angle(a.rotation() * transpose(b.rotation())) * 180 / M_PI;
+  d.scale = a.scale() / unit - 1;
+  return d;
 }
 
 }  // namespace cls

@@ -1,9 +1,11 @@
 #pragma once
-// How well a scene's sparse points lie on the city mesh (the align-check command).
+// How well a scene's points lie on the city mesh (align-check), and the refinement of the city
+// transform that makes them lie on it (align; docs/alignment.md).
 #include <cstddef>
 #include <vector>
 
 #include "citymodel/scene_city_model.h"
+#include "raycast/point_to_plane_icp.h"
 #include "scene/scene.h"
 
 namespace cls {
@@ -26,5 +28,28 @@ AlignmentStats alignment_stats(std::vector<double> distances, double threshold);
 // Distance of every sparse point of `scene` to the nearest triangle of the city mesh, in
 // city-model units (scene distances divided by the transform's scale); the scene must have points.
 AlignmentStats check_alignment(const Scene& scene, const SceneCityModel& city, double threshold);
+
+// The scene points `align` fits to the mesh: the sparse points. cls::Error naming the scene if it has none.
+std::vector<Vec3d> sparse_points(const Scene& scene);
+
+struct AlignmentRefinement {
+  CityTransform refined;           // city CRS -> scene frame, the given transform corrected
+  AlignmentStats before, after;    // point-to-mesh distances in city-model units
+  IcpResult icp;                   // its gates in scene units
+};
+
+// Refines city.transform so that `points` (scene frame) lie on the city mesh. `options` gates are in
+// city-model units (metres); `threshold` as in check_alignment.
+AlignmentRefinement refine_alignment(const std::vector<Vec3d>& points, const SceneCityModel& city,
+                                     const IcpOptions& options, double threshold);
+
+// How far transform `a` places the city model from transform `b`, in city-model units.
+struct TransformDifference {
+  double centre = 0;            // displacement of the mesh's bounding-box centre
+  double max_displacement = 0;  // largest displacement of a mesh vertex
+  double rotation_deg = 0;      // angle of the rotation between them
+  double scale = 0;             // scale of a relative to b, minus 1
+};
+TransformDifference transform_difference(const CityTransform& a, const CityTransform& b, const SemanticMesh& mesh);
 
 }  // namespace cls

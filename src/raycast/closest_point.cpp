@@ -6,7 +6,8 @@
 
 namespace cls {
 
-Vec3d closest_point_on_triangle(Vec3d p, Vec3d a, Vec3d b, Vec3d c) {
+Vec3d closest_point_on_triangle(Vec3d p, Vec3d a, Vec3d b, Vec3d c, bool* on_face) {
+  if (on_face) *on_face = false;
   // Voronoi regions of the vertices, then of the edges, else the face.
   const Vec3d ab = b - a, ac = c - a, ap = p - a;
   const double d1 = dot(ab, ap), d2 = dot(ac, ap);
@@ -15,14 +16,24 @@ Vec3d closest_point_on_triangle(Vec3d p, Vec3d a, Vec3d b, Vec3d c) {
   const double d3 = dot(ab, bp), d4 = dot(ac, bp);
   if (d3 >= 0 && d4 <= d3) return b;
   const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + (d1 / (d1 - d3)) * ab;
+  // On an edge: p projects onto the closed face only when exactly on that edge (determinant 0).
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+    if (on_face) *on_face = vc == 0;
+    return a + (d1 / (d1 - d3)) * ab;
+  }
   const Vec3d cp = p - c;
   const double d5 = dot(ab, cp), d6 = dot(ac, cp);
   if (d6 >= 0 && d5 <= d6) return c;
   const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + (d2 / (d2 - d6)) * ac;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+    if (on_face) *on_face = vb == 0;
+    return a + (d2 / (d2 - d6)) * ac;
+  }
   const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+    if (on_face) *on_face = va == 0;
+    return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+  }
   const double denom = va + vb + vc;
   if (!(std::abs(denom) > 0)) {  // degenerate triangle: its closest edge point
     Vec3d best = a;
@@ -36,6 +47,7 @@ Vec3d closest_point_on_triangle(Vec3d p, Vec3d a, Vec3d b, Vec3d c) {
     return best;
   }
   const double v = vb / denom, w = vc / denom;
+  if (on_face) *on_face = true;
   return a + v * ab + w * ac;
 }
 
@@ -57,6 +69,9 @@ struct Nearest {
   const std::vector<std::array<uint32_t, 3>>* triangles;
   Vec3d p;
   double best2 = INFINITY;  // squared distance
+  Vec3d best;
+  uint32_t triangle = 0;
+  bool on_face = false;
 };
 
 // Embree calls this for every triangle whose bounds reach the query sphere; shrinking the radius
@@ -65,10 +80,16 @@ bool visit_triangle(RTCPointQueryFunctionArguments* args) {
   auto* q = static_cast<Nearest*>(args->userPtr);
   const auto& t = (*q->triangles)[args->primID];
   const auto& v = *q->vertices;
-  const Vec3d c = closest_point_on_triangle(q->p, cast<double>(v[t[0]]), cast<double>(v[t[1]]), cast<double>(v[t[2]]));
+  bool on_face = false;
+  const Vec3d c =
+      closest_point_on_triangle(q->p, cast<double>(v[t[0]]), cast<double>(v[t[1]]), cast<double>(v[t[2]]), &on_face);
   const double d2 = dot(c - q->p, c - q->p);
-  if (d2 >= q->best2) return false;
+  // A tie (the same point reached through a neighbour's edge) keeps the face, not the edge.
+  if (d2 > q->best2 || (d2 == q->best2 && (q->on_face || !on_face))) return false;
   q->best2 = d2;
+  q->best = c;
+  q->triangle = args->primID;
+  q->on_face = on_face;
   // Embree culls in float around a float copy of p: widen the radius by more than both roundings
   // so the true nearest triangle is never pruned.
   const double d = std::sqrt(d2);
@@ -91,13 +112,25 @@ ClosestPointQuery::ClosestPointQuery(const std::vector<Vec3f>& vertices,
 
 ClosestPointQuery::~ClosestPointQuery() = default;
 
-double ClosestPointQuery::distance(Vec3d p) const {
-  Nearest q{&impl_->vertices, &impl_->triangles, p};
+MeshPoint ClosestPointQuery::nearest(Vec3d p) const {
+  Nearest q{&impl_->vertices, &impl_->triangles, p, INFINITY, {}, 0, false};
   RTCPointQuery query{static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z), 0.0f, INFINITY};
   RTCPointQueryContext context;
   rtcInitPointQueryContext(&context);
   rtcPointQuery(impl_->scene, &query, &context, visit_triangle, &q);
-  return std::sqrt(q.best2);
+  MeshPoint out;
+  out.distance = std::sqrt(q.best2);
+  if (!std::isfinite(out.distance)) return out;
+  out.point = q.best;
+  out.triangle = q.triangle;
+  out.on_face = q.on_face;
+  const auto& t = impl_->triangles[q.triangle];
+  const auto& v = impl_->vertices;
+  const Vec3d a = cast<double>(v[t[0]]);
+  const Vec3d n = cross(cast<double>(v[t[1]]) - a, cast<double>(v[t[2]]) - a);
+  const double len = norm(n);
+  if (len > 0) out.normal = (1 / len) * n;
+  return out;
 }
 
 std::vector<double> ClosestPointQuery::distances(const std::vector<Vec3d>& points) const {

@@ -13,6 +13,7 @@
 #include "core/hash.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "synth/box.h"
 
 namespace cls::synth {
 
@@ -57,6 +58,11 @@ std::string synth_scene_json(const SynthJob& job, const SemanticMesh& mesh, cons
       {"gt_context_density", s.gt_density / 8},
   };
   if (s.per_building) generator["rig"] = "per-building";  // absent: the orbit rig (older scene.json stay equal)
+  if (job.city_error.any())
+    generator["city_error"] = {{"t", job.city_error.metres},
+                               {"r", job.city_error.degrees},
+                               {"s", job.city_error.scale},
+                               {"truth", "city/transform_true.json"}};
   nlohmann::ordered_json scene = {
       {"city_model", "city/" + city_file},
       {"city_transform", "city/transform.json"},
@@ -98,6 +104,14 @@ bool run_synth_job(const SynthJob& job) {
     write_text_atomic(staging / "city" / fs::path(job.city_path).filename(), city_bytes);
     CityTransform to_scene;
     for (int i = 0; i < 3; ++i) to_scene.matrix[i][3] = -mesh.origin[i];
+    if (job.city_error.any()) {
+      // About the model's bounding-box centre in the scene frame, so the error does not grow with the
+      // distance to the CRS origin.
+      Box3d bounds;
+      for (const auto& v : mesh.vertices) bounds.extend({v[0], v[1], v[2]});
+      write_city_transform((staging / "city" / "transform_true.json").string(), to_scene);
+      to_scene = city_error_transform(job.city_error, job.settings.seed, bounds.center()) * to_scene;
+    }
     write_city_transform((staging / "city" / "transform.json").string(), to_scene);
     write_text_atomic(staging / "scene.json", scene_json);
     if (fs::exists(out)) fs::remove_all(out);

@@ -4,6 +4,7 @@
 // directory with a scene.json is always complete.
 #include <string>
 
+#include "synth/city_error.h"
 #include "synth/synth_scene.h"
 
 namespace cls::synth {
@@ -14,13 +15,15 @@ struct SynthJob {
   int lod = 0;                // 1, 2, 3, or 0 for the highest LoD in the file
   std::string taxonomy_path;  // "" = the built-in taxonomy
   SynthSettings settings;
+  CityError city_error;       // put into city/transform.json; the exact one goes to city/transform_true.json
   bool overwrite = false;     // replace an existing synth output (a directory with scene.json)
   bool skip_if_same = false;  // do nothing if out_dir/scene.json equals what this job would write
 };
 
 // Layout of the scene directory:
 //   scene.json                  {"city_model", "city_transform", "lod", "generator": {...}}
-//   city/<model file>, city/transform.json (source CRS -> scene frame: translation by -origin)
+//   city/<model file>, city/transform.json (source CRS -> scene frame: translation by -origin, times the
+//   city_error_transform when city_error.any(), then with the exact one in city/transform_true.json)
 //   images/NNNN.png, sparse/0/{cameras,images,points3D}.{bin,txt}
 //   gt/labels/NNNN.png, gt/legend.json, gt/points.ply (settings.gt_density points per m² on the
 //   city model, 1/8 of that on clutter and on the terrain near the building; class -1 off the model)

@@ -26,6 +26,21 @@ TEST(ClosestPoint, ExactDistancesToASquare) {
   EXPECT_EQ(all, (std::vector<double>{2, 1}));
 }
 
+TEST(ClosestPoint, NearestPointTriangleNormalAndWhetherItIsOnAFace) {
+  const ClosestPointQuery q(kSquare, kSquareTris);
+  const MeshPoint above = q.nearest({0.75, 0.25, 2});  // over triangle 0 (below the diagonal x = y)
+  EXPECT_EQ(above.triangle, 0u);
+  EXPECT_TRUE(above.on_face);
+  EXPECT_DOUBLE_EQ(above.point.x, 0.75);
+  EXPECT_DOUBLE_EQ(above.point.y, 0.25);
+  EXPECT_DOUBLE_EQ(above.point.z, 0);
+  EXPECT_DOUBLE_EQ(above.normal.z, 1);  // counter-clockwise seen from +z
+  EXPECT_TRUE(q.nearest({0.5, 0.5, -1}).on_face);   // over the shared diagonal: still a face point
+  EXPECT_FALSE(q.nearest({2, 0.5, 0.1}).on_face);   // beside the square's edge
+  EXPECT_FALSE(q.nearest({-1, -1, 0}).on_face);     // off a corner
+  EXPECT_DOUBLE_EQ(q.nearest({2, 0.5, 0.1}).point.x, 1);
+}
+
 TEST(ClosestPoint, EmptyMeshIsInfinitelyFar) {
   const ClosestPointQuery q({}, {});
   EXPECT_EQ(q.distance({0, 0, 0}), INFINITY);

@@ -14,6 +14,7 @@
 #include "citymodel/city_model.h"
 #include "citymodel/city_transform.h"
 #include "core/atomic_file.h"
+#include "raycast/alignment.h"
 #include "raycast/raycaster.h"
 #include "scene/colmap.h"
 
@@ -95,6 +96,35 @@ TEST(SynthCli, SceneJsonModelCopyAndTransform) {
     EXPECT_TRUE(x > 0 && x < cam.width && y > 0 && y < cam.height) << image.name;
   }
   fs::remove_all(out);
+}
+
+// --city-error changes only what the pipeline is given: the transform, by exactly the requested
+// amounts about the model's centre; the exact transform moves to city/transform_true.json.
+TEST(SynthCli, CityErrorPerturbsOnlyTheGivenTransform) {
+  const fs::path exact = temp_path("exact"), off = temp_path("off");
+  ASSERT_EQ(synth(tiny(exact)), 0);
+  ASSERT_EQ(synth(tiny(off) + " --city-error t=1,r=2,s=-0.01"), 0);
+  const auto fe = test::read_tree(exact), fo = test::read_tree(off);
+  EXPECT_EQ(fo.size(), fe.size() + 1);
+  for (const auto& [name, bytes] : fe)
+    if (name != "city/transform.json" && name != "scene.json") EXPECT_EQ(fo.at(name), bytes) << name;
+  EXPECT_EQ(fo.at("city/transform_true.json"), fe.at("city/transform.json"));
+  const auto generator = nlohmann::json::parse(fo.at("scene.json")).at("generator");
+  EXPECT_EQ(generator.at("city_error").at("truth"), "city/transform_true.json");
+  EXPECT_EQ(generator.at("city_error").at("r"), 2.0);
+
+  const SemanticMesh mesh = load_city_model(kFzk, Taxonomy::builtin(), 3);
+  const CityTransform given = read_city_transform((off / "city/transform.json").string());
+  const CityTransform truth = read_city_transform((off / "city/transform_true.json").string());
+  const TransformDifference d = transform_difference(given, truth, mesh);
+  EXPECT_NEAR(d.centre, 1, 1e-9);
+  EXPECT_NEAR(d.rotation_deg, 2, 1e-9);
+  EXPECT_NEAR(d.scale, -0.01, 1e-12);
+  EXPECT_GT(d.max_displacement, 1);  // the rotation and scale move the corners further
+  EXPECT_NE(synth(tiny(temp_path("bad")) + " --city-error t=1,x=2"), 0);
+  EXPECT_NE(synth(tiny(temp_path("bad")) + " --city-error r=-1"), 0);
+  EXPECT_NE(synth(tiny(temp_path("bad")) + " --city-error t=1m"), 0);
+  for (const auto& d : {exact, off}) fs::remove_all(d);
 }
 
 // Label images on the real model agree with the test's own cast of the city mesh: a pixel is
