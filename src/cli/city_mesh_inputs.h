@@ -8,6 +8,7 @@
 #include "core/args.h"
 #include "core/error.h"
 #include "pipeline/pipeline_config.h"
+#include "scene/scene.h"
 
 namespace cls {
 
@@ -33,6 +34,13 @@ inline CityMeshOptions city_mesh_options(const Args& args, const std::string& co
   o.model.lod = parse_lod_option(args.get("lod"));
   o.model.taxonomy_path = args.get("taxonomy");
   return o;
+}
+
+// The scene of `align` and `align-check`: poses and sparse points; the images are not read.
+inline Scene load_scene_without_images(const std::string& dir) {
+  SceneOptions options;
+  options.check_images = false;
+  return load_scene(dir, options);
 }
 
 // Reads and validates the city model named by the options (see scene_city_model.h).

@@ -55,8 +55,9 @@ int cmd_align(int argc, char** argv) {
             "own geometry: robust point-to-plane ICP of the sparse points (and, with --gaussians, the centres of "
             "a photometric model's opaque Gaussians) onto the city mesh, Huber-weighted, pairs beside the mesh's "
             "edges left out (terrain, trees, clutter), the pairing gate halving from --capture to --finest; "
-            "rigid first, then (unless --rigid) with the scale from 4x --finest down. Prints the point-to-mesh distances before and after and the change applied; "
-            "writes the refined transform to --out. See docs/alignment.md for the capture range.");
+            "rigid first, then (unless --rigid) with the scale from 4x --finest down. Prints the point-to-mesh "
+            "distances before and after and the change applied; writes the refined transform to --out. See "
+            "docs/alignment.md for the capture range.");
   args.option("scene", "", "scene directory (COLMAP or Pix4D; required)");
   add_city_mesh_options(args);
   args.option("out", "", "where to write the refined transform JSON (required)")
@@ -86,9 +87,7 @@ int cmd_align(int argc, char** argv) {
   if (!(min_opacity >= 0 && min_opacity <= 1)) throw UsageError("align: --min-opacity must be in [0, 1]");
   const CityMeshOptions city_options = city_mesh_options(args, "align");
 
-  SceneOptions scene_options;
-  scene_options.check_images = false;  // only the sparse points are used
-  const Scene scene = load_scene(args.get("scene"), scene_options);
+  const Scene scene = load_scene_without_images(args.get("scene"));
   std::vector<Vec3d> points = sparse_points(scene);
   const size_t sparse = points.size();
   if (args.has("gaussians")) {

@@ -36,9 +36,7 @@ int cmd_align_check(int argc, char** argv) {
   if (!(min_fraction >= 0 && min_fraction <= 1)) throw UsageError("align-check: --min-fraction must be in [0, 1]");
   const CityMeshOptions city_options = city_mesh_options(args, "align-check");
 
-  SceneOptions scene_options;
-  scene_options.check_images = false;  // only the sparse points are used
-  const Scene scene = load_scene(args.get("scene"), scene_options);
+  const Scene scene = load_scene_without_images(args.get("scene"));
   const SceneCityModel city = load_city_mesh_inputs(city_options, "align-check");
 
   const AlignmentStats s = check_alignment(scene, city, threshold);

@@ -32,6 +32,9 @@ int cmd_run(int argc, char** argv) {
   args.option("out", "", "output directory (default: SCENE_DIR/citylangsplat)")
       .option("resolution", "1", "divide the image size by 1, 2, 4 or 8", "r")
       .option("align-distance", "0.5", "alignment check: distance threshold in city-model metres")
+      .option("align", "auto",
+              "refine the city transform from the sparse points before raycasting (as `align`): refine, off, or "
+              "auto (refine, and use it when it moves the model by more than 5 cm)")
       .option("models", "auto",
               "auto (real where the weights are found, else synthetic), real (CLIP + SAM weights), tiny (tiny "
               "random models: smoke test) or synthetic (synthetic features: mechanics benchmark)")
@@ -58,6 +61,7 @@ int cmd_run(int argc, char** argv) {
   read_scene_city_options(args, c.scene_dir, c);
   c.resolution = args.get_int("resolution");
   c.align_distance = args.get_double("align-distance");
+  c.align = args.get("align");
   c.models = parse_models_choice(args.get("models"));
   c.clip_weights = args.get("clip");
   c.sam_weights = args.get("sam");

@@ -13,6 +13,7 @@
 #include "language/autoencoder_stage.h"
 #include "language/language_model.h"
 #include "language/language_training.h"
+#include "pipeline/city_alignment.h"
 #include "pipeline/feature_source.h"
 #include "pipeline/fingerprints.h"
 #include "pipeline/run_record.h"
@@ -57,7 +58,7 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
   scene_options.resolution_factor = c.resolution;
   const Scene scene = load_scene(c.scene_dir.string(), scene_options);
   if (scene.views.empty()) fail(c.scene_dir.string(), "the scene has no views");
-  const SceneCityModel city = load_scene_city_model(c.city, c.city_transform, c.city_options, "run");
+  SceneCityModel city = load_scene_city_model(c.city, c.city_transform, c.city_options, "run");
   const fs::path labels_dir = out / "labels";
   label_map_dirs(scene, labels_dir);
   const FeatureSource source = resolve_feature_source(c, city.taxonomy);
@@ -107,7 +108,12 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
     return true;
   };
 
-  // Alignment check (cheap; a warning, not a failure, so a user sees it before training).
+  // Alignment refinement, then the check on the transform the label maps use (cheap; a warning, not a
+  // failure, so a user sees it before training).
+  const CityAlignment alignment = align_city_model(scene, city, c.align, c.align_distance, out);
+  record.set("align", alignment.record);
+  PipelineConfig labelled = c;  // the label maps' inputs: the refined transform where one is used
+  if (alignment.applied) labelled.city_transform = alignment.transform.string();
   if (!scene.points.empty()) {
     const AlignmentStats s = check_alignment(scene, city, c.align_distance);
     log_info(cat("run: align-check: ", 100 * s.fraction_within, "% of sparse points within ", c.align_distance,
@@ -119,7 +125,7 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
   }
 
   // Label maps (3.1).
-  const std::string labels_fp = labels_fingerprint(c, scene);
+  const std::string labels_fp = labels_fingerprint(labelled, scene);
   record.add("labels", run_stage({"labels", labels_dir / "stage.json", {labels_dir / "objects.json", labels_dir / "legend.json"}, labels_fp,
                                   {{"dir", labels_dir.string()}}, [&] {
                                     const LabelExportSummary s = export_label_maps(scene, city, labels_dir);

@@ -32,6 +32,7 @@ void PipelineConfig::validate() const {
     throw UsageError("run: iteration and epoch counts must not be negative (0: the feature source's default)");
   if (!(alpha >= 0 && alpha <= 1)) throw UsageError("run: --alpha must be in [0, 1]");
   if (!(align_distance >= 0)) throw UsageError("run: --align-distance must be >= 0");
+  if (align != "off" && align != "refine" && align != "auto") throw UsageError("run: --align must be off, refine or auto");
   if (city.empty())
     throw UsageError("run: no city model: give --city, or a scene.json / --config with \"city_model\"");
   if (!rgb_model.empty() && !fs::exists(rgb_model)) fail(rgb_model, "--rgb-model: file not found");
@@ -48,6 +49,7 @@ nlohmann::json PipelineConfig::to_json() const {
           {"lod", city_options.lod},
           {"resolution", resolution},
           {"align_distance", align_distance},
+          {"align", align},
           {"models", models_choice_name(models)},
           {"clip", clip_weights},
           {"sam", sam_weights},

@@ -24,6 +24,7 @@ struct PipelineConfig {
   CityModelOptions city_options;
   int resolution = 1;                      // 3DGS-style image downscaling: 1, 2, 4 or 8
   double align_distance = 0.5;             // alignment check threshold (city-model metres)
+  std::string align = "auto";              // refine the city transform: off, refine or auto (city_alignment.h)
   ModelsChoice models = ModelsChoice::Auto;
   std::string clip_weights, sam_weights;   // empty: searched (`citylangsplat models list`)
   double alpha = 0.5;                      // text-guidance weight of the CityGML features

@@ -41,6 +41,30 @@ void hide_model_weights() {
   ::unsetenv("CITYLANGSPLAT_MODELS");
 }
 
+// The synthetic ground truth (rendered with clutter by the generator) carries the level-1 class wherever
+// the city model is visible: the share of those pixels where the run's level-1 label map agrees. Clutter
+// only removes GT labels, so pixels with GT 0 are not compared.
+double label_agreement(const fs::path& scene, const fs::path& out, int views) {
+  size_t compared = 0, agree = 0;
+  for (int k = 0; k < views; ++k) {
+    char stem[8];
+    std::snprintf(stem, sizeof stem, "%04d", k);
+    const cv::Mat gt = cv::imread((scene / "gt" / "labels" / (std::string(stem) + ".png")).string(), cv::IMREAD_UNCHANGED);
+    const cv::Mat l1 = cv::imread((out / "labels" / stem / "level1.png").string(), cv::IMREAD_UNCHANGED);
+    EXPECT_FALSE(gt.empty() || l1.empty()) << stem;
+    if (gt.empty() || l1.empty() || gt.size() != l1.size() || l1.type() != CV_16UC1) return 0;
+    for (int y = 0; y < gt.rows; ++y)
+      for (int x = 0; x < gt.cols; ++x) {
+        const uint16_t g = gt.at<uint16_t>(y, x);
+        if (g == 0) continue;
+        ++compared;
+        agree += l1.at<uint16_t>(y, x) == g;
+      }
+  }
+  EXPECT_GT(compared, 1000u);
+  return compared ? static_cast<double>(agree) / compared : 0;
+}
+
 }  // namespace
 
 TEST(RunCli, LabelMapsAgreeWithTheSyntheticGroundTruth) {
@@ -65,29 +89,36 @@ TEST(RunCli, LabelMapsAgreeWithTheSyntheticGroundTruth) {
   const auto named = run_cli("run " + scene_dir().string() + " --clip /nonexistent/clip.bin --out " + out.string());
   EXPECT_EQ(named.status, cls::kExitMissingWeights) << named.err;
   EXPECT_NE(named.err.find("/nonexistent/clip.bin"), std::string::npos) << named.err;
-  // The synthetic ground truth (rendered with clutter by the generator) carries the level-1 class
-  // wherever the city model is visible; the label map must agree there. Clutter only removes GT
-  // labels, so pixels with GT 0 are not compared.
-  size_t compared = 0, agree = 0;
-  for (int k = 0; k < 4; ++k) {
-    char stem[8];
-    std::snprintf(stem, sizeof stem, "%04d", k);
-    const cv::Mat gt = cv::imread((scene_dir() / "gt" / "labels" / (std::string(stem) + ".png")).string(), cv::IMREAD_UNCHANGED);
-    const cv::Mat l1 = cv::imread((out / "labels" / stem / "level1.png").string(), cv::IMREAD_UNCHANGED);
-    ASSERT_FALSE(gt.empty());
-    ASSERT_FALSE(l1.empty());
-    ASSERT_EQ(gt.size(), l1.size());
-    ASSERT_EQ(l1.type(), CV_16UC1);
-    for (int y = 0; y < gt.rows; ++y)
-      for (int x = 0; x < gt.cols; ++x) {
-        const uint16_t g = gt.at<uint16_t>(y, x);
-        if (g == 0) continue;
-        ++compared;
-        agree += l1.at<uint16_t>(y, x) == g;
-      }
-  }
-  ASSERT_GT(compared, 1000u);
-  EXPECT_GE(static_cast<double>(agree) / compared, 0.999) << agree << " of " << compared;
+  EXPECT_GE(label_agreement(scene_dir(), out, 4), 0.999);
+}
+
+// run --align auto on a scene whose city transform is 1 m, 2 deg and 1% off: the refinement is applied
+// before the label maps, which then agree with the ground truth as with the exact transform; with
+// --align off they do not.
+TEST(RunCli, AlignAutoRefinesAMisplacedCityModelBeforeTheLabelMaps) {
+  const fs::path scene = fs::temp_directory_path() / ("cls_run_misaligned_" + std::to_string(::getpid()));
+  fs::remove_all(scene);
+  const auto made = run_cli("-q synth --city " + kFzk + " --out " + scene.string() +
+                            " --views 8 --width 120 --height 90 --gt-density 20 --seed 3 --city-error t=1,r=2,s=0.01");
+  ASSERT_EQ(made.status, 0) << made.err;
+  hide_model_weights();
+  const fs::path out = scene.string() + "_out";
+  auto r = run_cli("run " + scene.string() + " --models real --out " + out.string());
+  ASSERT_EQ(r.status, cls::kExitMissingWeights) << r.err;
+  const auto align = read_json(out / "run.json")["align"];
+  EXPECT_EQ(align["mode"], "auto");
+  EXPECT_TRUE(align["applied"].get<bool>()) << align.dump();
+  EXPECT_GT(align["change"]["max_displacement"].get<double>(), 1.0);
+  EXPECT_TRUE(fs::exists(out / "align" / "transform.json"));
+  EXPECT_GE(label_agreement(scene, out, 8), 0.99);
+
+  r = run_cli("-q run " + scene.string() + " --models real --align off --out " + out.string());
+  ASSERT_EQ(r.status, cls::kExitMissingWeights) << r.err;
+  EXPECT_EQ(read_json(out / "run.json")["labels"]["status"], "done");  // another transform: redone
+  EXPECT_FALSE(read_json(out / "run.json")["align"]["applied"].get<bool>());
+  EXPECT_LT(label_agreement(scene, out, 8), 0.9);
+  fs::remove_all(scene);
+  fs::remove_all(out);
 }
 
 TEST(RunCli, SecondRunReusesLabelsAndAChangedTransformRedoesThem) {

@@ -1,0 +1,60 @@
+#include "pipeline/city_alignment.h"
+
+#include "core/error.h"
+#include "core/log.h"
+#include "raycast/alignment.h"
+
+namespace cls {
+namespace {
+
+nlohmann::json stats_json(const AlignmentStats& s) {
+  return {{"fraction_within", s.fraction_within}, {"median", s.median}, {"mean", s.mean}};
+}
+
+}  // namespace
+
+CityAlignment align_city_model(const Scene& scene, SceneCityModel& city, const std::string& mode, double threshold,
+                               const std::filesystem::path& out_dir) {
+  CityAlignment a;
+  a.record = {{"mode", mode}, {"applied", false}};
+  if (mode == "off") return a;
+  if (scene.points.empty()) {
+    a.record["reason"] = "the scene has no sparse points";
+    log_warn("run: --align " + mode + ": the scene has no sparse points; the given city transform is kept");
+    return a;
+  }
+  AlignmentRefinement r;
+  try {
+    r = refine_alignment(sparse_points(scene), city, IcpOptions{}, threshold);
+  } catch (const Error& e) {
+    if (mode == "refine") throw;
+    a.record["reason"] = e.what();
+    log_warn(std::string("run: --align auto: ") + e.what() + "; the given city transform is kept");
+    return a;
+  }
+  const TransformDifference change = transform_difference(r.refined, city.transform, city.mesh);
+  a.record["change"] = {{"centre", change.centre}, {"max_displacement", change.max_displacement},
+                        {"rotation_deg", change.rotation_deg}, {"scale", change.scale}};
+  a.record["before"] = stats_json(r.before);
+  a.record["after"] = stats_json(r.after);
+  a.record["threshold"] = threshold;
+  log_info(cat("run: align: the refinement moves the city model by up to ", change.max_displacement, " m (",
+               change.rotation_deg, " deg, scale ", 100 * change.scale, "%); ", 100 * r.before.fraction_within,
+               "% -> ", 100 * r.after.fraction_within, "% of sparse points within ", threshold, " m"));
+  if (mode == "auto" && change.max_displacement <= kAlignApplyMetres) {
+    a.record["reason"] = cat("the refinement moves the model by at most ", kAlignApplyMetres, " m");
+    return a;
+  }
+  a.applied = true;
+  a.transform = out_dir / "align" / "transform.json";
+  std::filesystem::create_directories(a.transform.parent_path());
+  write_city_transform(a.transform.string(), r.refined);
+  a.record["applied"] = true;
+  a.record["transform"] = a.transform.string();
+  city.transform = r.refined;
+  city.vertices = scene_vertices(city.mesh, city.transform);
+  log_info("run: align: using the refined city transform " + a.transform.string());
+  return a;
+}
+
+}  // namespace cls
