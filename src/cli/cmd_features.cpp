@@ -26,15 +26,17 @@ int cmd_features(int argc, char** argv) {
       .option("labels", "", "label map directory of `citylangsplat raycast` (required)")
       .option("out", "", "output directory (required)")
       .option("provider", "clip", "feature source: clip (real CLIP + SAM weights), clip-tiny (tiny random "
-                                  "models: a smoke test, results meaningless) or synthetic (deterministic "
-                                  "stand-in for tests and the mechanics benchmark)")
+                                  "models: a smoke test, results meaningless), synthetic (deterministic "
+                                  "stand-in for tests and the mechanics benchmark) or image-segments (segments "
+                                  "of the images, features from the ground truth under them: robustness benchmark)")
+      .option("gt", "", "image-segments: ground-truth label images named as the views (default: SCENE/gt/labels)")
       .option("alpha", "0.5", "text-guidance weight alpha of the fusion, in [0, 1]")
       .option("regions", "class", "CityGML regions: class (one per level and class, the paper) or instance "
                                   "(one per connected object within a building)")
       .option("min-region-pixels", "16", "skip CityGML regions smaller than this")
       .option("resolution", "1", "divide the image size by 1, 2, 4 or 8 (as for raycast)", "r")
       .option("taxonomy", "", "taxonomy JSON (default: the built-in one); must match the label maps")
-      .option("seed", "1", "seed of the synthetic and clip-tiny providers")
+      .option("seed", "1", "seed of the synthetic, image-segments and clip-tiny providers")
       .option("clip", "", "CLIP weight file (default: found in the model directories)")
       .option("sam", "", "SAM weight file (default: found in the model directories)")
       .option("clip-model", "openclip-vit-b-16-laion2b", "which known CLIP model (see `models list`)")
@@ -63,9 +65,11 @@ int cmd_features(int argc, char** argv) {
 
   const std::string provider_name = args.get("provider");
   nlohmann::json spec = {{"provider", provider_name}};
-  if (provider_name == "synthetic" || provider_name == "clip-tiny") {
+  if (provider_name == "synthetic" || provider_name == "clip-tiny" || provider_name == "image-segments") {
     spec["seed"] = static_cast<uint64_t>(args.get_int("seed"));
     if (provider_name == "clip-tiny") spec["device"] = args.get("device");
+    if (provider_name == "image-segments")
+      spec["gt"] = args.has("gt") ? args.get("gt") : (fs::path(args.get("scene")) / "gt" / "labels").string();
   } else if (provider_name == "clip") {
     spec["device"] = args.get("device");
     if (args.has("clip")) spec["clip"] = args.get("clip");
@@ -74,7 +78,7 @@ int cmd_features(int argc, char** argv) {
     spec["sam_model"] = args.get("sam-model");
     if (args.has("models-dir")) spec["models_dir"] = args.get("models-dir");
   } else {
-    throw UsageError("features: unknown --provider '" + provider_name + "' (clip, clip-tiny or synthetic)");
+    throw UsageError("features: unknown --provider '" + provider_name + "' (clip, clip-tiny, synthetic or image-segments)");
   }
 
   // Inputs first, then the (possibly slow) models.

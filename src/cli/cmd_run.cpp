@@ -37,7 +37,8 @@ int cmd_run(int argc, char** argv) {
               "auto (refine, and use it when it moves the model by more than 5 cm)")
       .option("models", "auto",
               "auto (real where the weights are found, else synthetic), real (CLIP + SAM weights), tiny (tiny "
-              "random models: smoke test) or synthetic (synthetic features: mechanics benchmark)")
+              "random models: smoke test), synthetic (synthetic features: mechanics benchmark) or image-segments "
+              "(segments of the images, features from SCENE/gt/labels: robustness benchmark)")
       .option("clip", "", "CLIP weights file (default: searched, see `models list`)")
       .option("sam", "", "SAM weights file (default: searched, see `models list`)")
       .option("alpha", "0.5", "text-guidance weight of the CityGML features")

@@ -60,6 +60,29 @@ std::vector<float> hashed_unit_vector(uint64_t key, int dim) {
   return v;
 }
 
+std::vector<float> noisy_unit_vector(std::vector<float> direction, uint64_t seed, const std::string& who, double noise) {
+  add_scaled(direction, hashed_unit_vector(key_of(seed, who), static_cast<int>(direction.size())), noise);
+  normalise(direction);
+  return direction;
+}
+
+SamSegments pack_sam_levels(const std::array<std::vector<int32_t>, 3>& ids,
+                            const std::array<std::vector<std::vector<float>>, 3>& features, size_t hw, int dim) {
+  SamSegments out;
+  out.seg.assign(4 * hw, -1);
+  std::vector<std::vector<float>> rows;
+  const std::array<int, 4> source = {0, 0, 1, 2};
+  for (int k = 0; k < 4; ++k) {
+    const int32_t offset = static_cast<int32_t>(rows.size());
+    const auto& src = ids[source[k]];
+    for (size_t i = 0; i < hw; ++i)
+      if (src[i] >= 0) out.seg[k * hw + i] = src[i] + offset;
+    rows.insert(rows.end(), features[source[k]].begin(), features[source[k]].end());
+  }
+  out.features = to_rows(rows, dim);
+  return out;
+}
+
 SyntheticFeatureProvider::SyntheticFeatureProvider(const SyntheticProviderParams& params, const Taxonomy& taxonomy)
     : params_(params), taxonomy_(taxonomy) {
   if (params_.dim < 2) throw Error("synthetic provider: dim must be at least 2");
@@ -151,10 +174,7 @@ SamSegments SyntheticFeatureProvider::sam_segments(const FeatureView& view) {
           const int other = static_cast<int>(splitmix64(state) % uint64_t(num_classes - 1));
           cls_id = other >= cls_id ? other + 1 : other;  // any class but the true one
         }
-        std::vector<float> v = class_vector(cls_id);
-        add_scaled(v, hashed_unit_vector(key_of(params_.seed, "segment " + who), params_.dim), params_.sam_noise);
-        normalise(v);
-        f.push_back(std::move(v));
+        f.push_back(noisy_unit_vector(class_vector(cls_id), params_.seed, "segment " + who, params_.sam_noise));
       }
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
@@ -169,32 +189,15 @@ SamSegments SyntheticFeatureProvider::sam_segments(const FeatureView& view) {
         const int t = (y / params_.tile) * tiles_x + x / params_.tile;
         auto it = tile_id.find(t);
         if (it == tile_id.end()) {
-          std::vector<float> v = class_vector(-1);
           const std::string who = view.name + "|" + std::to_string(level) + "|tile " + std::to_string(t);
-          add_scaled(v, hashed_unit_vector(key_of(params_.seed, "segment " + who), params_.dim), params_.sam_noise);
-          normalise(v);
           it = tile_id.emplace(t, static_cast<int32_t>(f.size())).first;
-          f.push_back(std::move(v));
+          f.push_back(noisy_unit_vector(class_vector(-1), params_.seed, "segment " + who, params_.sam_noise));
         }
         id[size_t(y) * w + x] = it->second;
       }
   }
 
-  // LangSplat's layout: [default | s | m | l], ids offset by the earlier levels' counts; the
-  // default level repeats s.
-  SamSegments out;
-  out.seg.assign(4 * hw, -1);
-  std::vector<std::vector<float>> rows;
-  const std::array<int, 4> source = {0, 0, 1, 2};
-  for (int k = 0; k < 4; ++k) {
-    const int32_t offset = static_cast<int32_t>(rows.size());
-    const auto& src = ids[source[k]];
-    for (size_t i = 0; i < hw; ++i)
-      if (src[i] >= 0) out.seg[k * hw + i] = src[i] + offset;
-    rows.insert(rows.end(), feats[source[k]].begin(), feats[source[k]].end());
-  }
-  out.features = to_rows(rows, params_.dim);
-  return out;
+  return pack_sam_levels(ids, feats, hw, params_.dim);
 }
 
 at::Tensor SyntheticFeatureProvider::region_features(const FeatureView& view, const std::vector<RegionMask>& regions) {
@@ -203,12 +206,9 @@ at::Tensor SyntheticFeatureProvider::region_features(const FeatureView& view, co
     const RegionMask& m = regions[r];
     if (m.class_id < 0 || m.class_id >= static_cast<int>(taxonomy_.classes.size()))
       throw Error(view.name + ": region " + std::to_string(r) + " has no taxonomy class (the synthetic provider needs one)");
-    std::vector<float> v = class_vector(m.class_id);
     const std::string who = view.name + "|" + std::to_string(m.level) + "|" + std::to_string(m.class_id) + "|" +
                             std::to_string(r) + "|" + std::to_string(cv::countNonZero(m.mask));
-    add_scaled(v, hashed_unit_vector(key_of(params_.seed, "region " + who), params_.dim), params_.gml_noise);
-    normalise(v);
-    rows.push_back(std::move(v));
+    rows.push_back(noisy_unit_vector(class_vector(m.class_id), params_.seed, "region " + who, params_.gml_noise));
   }
   return to_rows(rows, params_.dim);
 }
@@ -219,9 +219,7 @@ at::Tensor SyntheticFeatureProvider::text_features(const std::vector<std::string
     const auto it = prompt_class_.find(t);
     std::vector<float> v;
     if (it != prompt_class_.end()) {
-      v = class_vector(it->second);
-      add_scaled(v, hashed_unit_vector(key_of(params_.seed, "phrase " + t), params_.dim), params_.text_noise);
-      normalise(v);
+      v = noisy_unit_vector(class_vector(it->second), params_.seed, "phrase " + t, params_.text_noise);
     } else {
       v = hashed_unit_vector(key_of(params_.seed, "text " + t), params_.dim);
     }

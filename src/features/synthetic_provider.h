@@ -18,6 +18,7 @@
 //           any other text: a random unit vector hashed from the text.
 // u_segment / u_region / u_phrase are random unit vectors hashed from the seed and their identity
 // (view name, level, index / class / text), so results do not depend on call order.
+#include <array>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -63,5 +64,14 @@ class SyntheticFeatureProvider : public FeatureProvider {
 // A unit vector of `dim` standard-normal components drawn from a stream seeded by `key`
 // (SplitMix64 + Box-Muller: the same on every platform).
 std::vector<float> hashed_unit_vector(uint64_t key, int dim);
+
+// normalise(direction + noise * u), u the hashed unit vector of (seed, who): a segment's or region's
+// feature around a class direction, the same for the same identity `who` whatever the call order.
+std::vector<float> noisy_unit_vector(std::vector<float> direction, uint64_t seed, const std::string& who, double noise);
+
+// LangSplat's layout [default | s | m | l] from per-level segment ids (-1 = none) over hw pixels and each
+// level's segment features; the default level repeats s (own rows, same features).
+SamSegments pack_sam_levels(const std::array<std::vector<int32_t>, 3>& ids,
+                            const std::array<std::vector<std::vector<float>>, 3>& features, size_t hw, int dim);
 
 }  // namespace cls

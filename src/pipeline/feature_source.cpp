@@ -47,12 +47,14 @@ FeatureSource resolve_feature_source(const PipelineConfig& config, const Taxonom
   }
   if (choice == ModelsChoice::Tiny) spec = {{"provider", "clip-tiny"}, {"seed", 1}};
   if (choice == ModelsChoice::Synthetic) spec = {{"provider", "synthetic"}, {"seed", 1}};
+  if (choice == ModelsChoice::ImageSegments)
+    spec = {{"provider", "image-segments"}, {"seed", 1}, {"gt", (config.scene_dir / "gt" / "labels").string()}};
   if (!s.provider && s.missing_weights.empty()) s.provider = make_feature_provider(spec, taxonomy);
   s.models = choice;
   if (choice == ModelsChoice::Tiny) use_schedule(s, 100, 20, 5);
   // The bundled example finishes every stage in about 12 minutes on 2 cores with these
   // (docs/benchmarks.md, "Main command").
-  if (choice == ModelsChoice::Synthetic) use_schedule(s, 1500, 300, 40);
+  if (choice == ModelsChoice::Synthetic || choice == ModelsChoice::ImageSegments) use_schedule(s, 1500, 300, 40);
   if (s.provider) s.warning = provider_warning(s.provider->name());
   if (config.rgb_iterations > 0) s.rgb_iterations = config.rgb_iterations;
   if (config.language_iterations > 0) s.language_iterations = config.language_iterations;

@@ -11,7 +11,8 @@ ModelsChoice parse_models_choice(const std::string& name) {
   if (name == "real") return ModelsChoice::Real;
   if (name == "tiny") return ModelsChoice::Tiny;
   if (name == "synthetic") return ModelsChoice::Synthetic;
-  throw UsageError("run: --models must be auto, real, tiny or synthetic, not '" + name + "'");
+  if (name == "image-segments") return ModelsChoice::ImageSegments;
+  throw UsageError("run: --models must be auto, real, tiny, synthetic or image-segments, not '" + name + "'");
 }
 
 const char* models_choice_name(ModelsChoice choice) {
@@ -20,6 +21,7 @@ const char* models_choice_name(ModelsChoice choice) {
     case ModelsChoice::Real: return "real";
     case ModelsChoice::Tiny: return "tiny";
     case ModelsChoice::Synthetic: return "synthetic";
+    case ModelsChoice::ImageSegments: return "image-segments";
   }
   return "?";
 }

@@ -10,8 +10,9 @@
 namespace cls {
 
 // Where the language features come from. Auto: real CLIP/SAM where both weight files are found,
-// otherwise the synthetic provider (said on the terminal, in run.json and in the report).
-enum class ModelsChoice { Auto, Real, Tiny, Synthetic };
+// otherwise the synthetic provider (said on the terminal, in run.json and in the report). ImageSegments:
+// the robustness benchmark's provider (image segments, features from SCENE/gt/labels; docs/features.md).
+enum class ModelsChoice { Auto, Real, Tiny, Synthetic, ImageSegments };
 
 ModelsChoice parse_models_choice(const std::string& name);  // cls::UsageError for an unknown name
 const char* models_choice_name(ModelsChoice choice);

@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "features/feature_stage.h"
+#include "features/image_segment_provider.h"
 #include "features/synthetic_provider.h"
 #include "features/view_features.h"
 
@@ -135,6 +136,38 @@ TEST_F(StageFixture, ChangedLabelMapsInvalidateTheirView) {
   fs::remove(labels / stem(0) / "level1.png");
   EXPECT_THROW(run_feature_stage(scene, provider, taxonomy, options), Error);
   fs::remove_all(labels);
+}
+
+// The image-segment provider's SAM branch comes from the images and the ground truth only: blanking every
+// label map and coverage mask leaves it byte for byte the same (and removes the CityGML regions).
+TEST_F(StageFixture, ImageSegmentsSamBranchNeverReadsTheLabelMaps) {
+  ImageSegmentParams params;
+  params.gt_labels = (scene_dir() / "gt" / "labels").string();
+  ImageSegmentProvider provider(params, taxonomy);
+  ASSERT_EQ(run_feature_stage(scene, provider, taxonomy, options), 3);
+  const fs::path labels = out.string() + "_blank_labels", blank_out = out.string() + "_blank";
+  fs::remove_all(labels);
+  fs::remove_all(blank_out);
+  fs::copy(options.labels_dir, labels, fs::copy_options::recursive);
+  for (size_t k = 0; k < scene.views.size(); ++k)
+    for (const char* file : {"level1.png", "level2.png", "level3.png", "coverage.png"}) {
+      cv::Mat m = cv::imread((labels / stem(k) / file).string(), cv::IMREAD_UNCHANGED);
+      m.setTo(0);
+      cv::imwrite((labels / stem(k) / file).string(), m);
+    }
+  FeatureStageOptions blank = options;
+  blank.labels_dir = labels;
+  blank.out_dir = blank_out;
+  ASSERT_EQ(run_feature_stage(scene, provider, taxonomy, blank), 3);
+  for (size_t k = 0; k < scene.views.size(); ++k) {
+    const ViewFeatures a = read_view_features(out, stem(k)), b = read_view_features(blank_out, stem(k));
+    EXPECT_EQ(a.sam_seg, b.sam_seg) << stem(k);
+    EXPECT_TRUE(at::equal(a.sam_features, b.sam_features)) << stem(k);
+    EXPECT_FALSE(a.regions.empty());
+    EXPECT_TRUE(b.regions.empty());
+  }
+  fs::remove_all(labels);
+  fs::remove_all(blank_out);
 }
 
 TEST(FeaturesCli, ErrorsAreClear) {
