@@ -80,6 +80,8 @@ int cmd_evaluate(int argc, char** argv) {
       .option("labels", "", "raycast label maps of these views (`citylangsplat raycast` output): adds 2D scores on the GT "
               "the city model covers (M = 1) and the label maps themselves as a reference row")
       .option("resolution", "1", "3DGS-style downscaling factor of the views: 1, 2, 4 or 8", "r")
+      .option("test-every", "8", "2D on the held-out views, every this-th by name (as train-rgb and train-language "
+                                 "hold them out); the training views apart as \"2d_train\" (0 = every view in \"2d\")")
       .flag("no-images", "do not write the per-view GT/prediction PNGs");
   std::vector<char*> rest_argv{argv[0]};
   for (std::string& s : rest) rest_argv.push_back(s.data());
@@ -106,6 +108,8 @@ int cmd_evaluate(int argc, char** argv) {
   options.phrases = args.get("phrases");
   options.gt_point_radius = args.get_double("gt-point-radius");
   options.write_view_images = !args.flag_set("no-images");
+  options.test_every = args.get_int("test-every");
+  if (options.test_every < 0) throw UsageError("evaluate: --test-every must be >= 0");
   options.labels_dir = args.get("labels");
   if (!options.labels_dir.empty()) {
     if (!fs::is_directory(options.labels_dir))

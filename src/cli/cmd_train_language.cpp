@@ -31,6 +31,8 @@ int cmd_train_language(int argc, char** argv) {
       .option("checkpoint-every", std::to_string(d.checkpoint_every), "iterations between checkpoints (0 = only on interrupt)")
       .flag("resume", "continue from OUT/checkpoints/language.safetensors if present")
       .option("seed", std::to_string(d.seed), "seed of the view order")
+      .option("test-every", "8", "leave every this-th view (sorted by name) out of training, as train-rgb: the views "
+                                 "`evaluate` scores in 2D (0 = train on all)")
       .option("resolution", "1", "3DGS-style downscaling factor of the scene's images (must match the features)", "r")
       .option("device", d.device, "auto, cpu or cuda");
   if (!args.parse(argc, argv)) return 0;
@@ -53,6 +55,8 @@ int cmd_train_language(int argc, char** argv) {
   o.checkpoint_every = args.get_int("checkpoint-every");
   o.resume = args.flag_set("resume");
   o.seed = static_cast<uint64_t>(args.get_int("seed"));
+  o.test_every = args.get_int("test-every");
+  if (o.test_every < 0) throw UsageError("train-language: --test-every must be >= 0");
   o.device = args.get("device");
 
   SceneOptions so;

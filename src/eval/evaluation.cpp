@@ -23,6 +23,7 @@
 #include "eval/metrics_3d.h"
 #include "raycast/label_export.h"
 #include "raycast/label_map_io.h"
+#include "scene/view_selection.h"
 #include "eval/evaluation_tables.h"
 #include "query/relevance.h"
 
@@ -241,7 +242,10 @@ nlohmann::json evaluate_2d(const Scene& scene, const EvaluatedClasses& ec, const
   const double radius = footprint_radius(ec.gt, popt);
   const std::vector<fs::path> label_dirs =
       options.labels_dir.empty() ? std::vector<fs::path>() : label_map_dirs(scene, options.labels_dir);
-  Scores2d all(K), covered(K);
+  // With a split, "2d" scores the held-out views (no stage trained on them) and "2d_train" the others.
+  std::set<const SceneView*> held_out;
+  for (const SceneView* v : split_views(scene, options.test_every).test) held_out.insert(v);
+  Scores2d all(K), covered(K), train(K);
   nlohmann::json views = nlohmann::json::array();
   const fs::path view_dir = options.out_dir.empty() ? fs::path() : fs::path(options.out_dir) / "views";
   if (!view_dir.empty() && options.write_view_images) fs::create_directories(view_dir);
@@ -260,8 +264,10 @@ nlohmann::json evaluate_2d(const Scene& scene, const EvaluatedClasses& ec, const
       for (int x = 0; x < W; ++x) gt_labels[size_t(y) * W + x] = ec.to_eval(proj.at<int32_t>(y, x));
 
     nlohmann::json record = {{"name", v.name}};
+    const bool scored = options.test_every == 0 || held_out.count(&v);
+    if (options.test_every > 0) record["held_out"] = scored;
     const std::vector<int32_t> pred = predict(v, i, record);
-    const ImageScoring s = all.add(gt_labels, pred);
+    const ImageScoring s = (scored ? all : train).add(gt_labels, pred);
     const SegmentationScores vs = segmentation_scores(s.confusion);
     record["gt_coverage"] = s.pixels ? double(s.valid_gt) / double(s.pixels) : 0.0;
     record["coverage"] = s.valid_gt ? double(s.scored) / double(s.valid_gt) : 0.0;
@@ -274,7 +280,8 @@ nlohmann::json evaluate_2d(const Scene& scene, const EvaluatedClasses& ec, const
       for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x)
           if (m.at<uint8_t>(y, x) == 0) gt_covered[size_t(y) * W + x] = -1;
-      record["miou_covered"] = segmentation_scores(covered.add(gt_covered, pred).confusion).miou;
+      Scores2d one(K);
+      record["miou_covered"] = segmentation_scores((scored ? covered : one).add(gt_covered, pred).confusion).miou;
     }
     views.push_back(record);
     if (!view_dir.empty() && options.write_view_images) {
@@ -286,6 +293,9 @@ nlohmann::json evaluate_2d(const Scene& scene, const EvaluatedClasses& ec, const
   }
   nlohmann::json out = {{"gt_point_radius", radius}, {"2d", all.json(ec.names)}};
   out["2d"]["views"] = views;
+  out["2d"]["test_every"] = options.test_every;
+  out["2d"]["views_scored"] = options.test_every > 0 ? held_out.size() : scene.views.size();
+  if (options.test_every > 0 && held_out.size() < scene.views.size()) out["2d_train"] = train.json(ec.names);
   if (!label_dirs.empty()) out["2d_covered"] = covered.json(ec.names);
   return out;
 }

@@ -36,6 +36,9 @@ struct EvaluationOptions {
   // on the GT pixels the city model covers (coverage M = 1, "2d_covered"); evaluate_label_maps needs it.
   std::string labels_dir;
   bool write_view_images = true;  // OUT/views/<stem>_gt.png, <stem>_pred.png (when out_dir is set)
+  // 0: "2d" scores every view. N > 0: "2d" (and "2d_covered") score the held-out views, every N-th by name
+  // as train-rgb and train-language --test-every hold them out, and "2d_train" the views training saw.
+  int test_every = 0;
 };
 
 // One method's scores; the JSON has the paper's table fields (2D: miou, wiou, accuracy, coverage,
@@ -44,7 +47,7 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
                               const Taxonomy& taxonomy, const EvaluationOptions& options);
 
 // The tables' layout version: `run` recomputes an evaluation written by another version.
-inline constexpr const char* kEvaluationTables = "2026-11-24 held-out phrases";
+inline constexpr const char* kEvaluationTables = "2026-11-24 held-out phrases, held-out 2D views";
 
 // The label maps' row name in the tables.
 inline constexpr const char* kLabelMapsMethod = "city-model-labels";

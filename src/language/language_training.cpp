@@ -22,6 +22,7 @@
 #include <chrono>
 #include <cstdio>
 #include <map>
+#include <set>
 #include <filesystem>
 #include <random>
 #include <string>
@@ -37,6 +38,7 @@
 #include "language/language_loss.h"
 #include "language/language_model.h"
 #include "language/provenance.h"
+#include "scene/view_selection.h"
 #include "splat/adam.h"
 #include "splat/checkpoint.h"
 #include "splat/ply_gaussians.h"
@@ -78,14 +80,19 @@ at::Tensor encode_rows(const Autoencoder& ae, const at::Tensor& features, at::De
   return ae.encode(features.to(at::kFloat)).detach().to(at::kCPU).contiguous().to(device);
 }
 
+bool held_out_all(const Scene& scene, int test_every) { return split_views(scene, test_every).train.empty(); }
+
 std::vector<ViewTargets> load_targets(const Scene& scene, const LanguageTrainOptions& o, const Autoencoder& ae,
                                       at::Device device) {
   std::vector<ViewTargets> views;
+  std::set<const SceneView*> held_out;
+  for (const SceneView* v : split_views(scene, o.test_every).test) held_out.insert(v);
   Progress progress("language targets", scene.views.size(), "views");
   for (size_t i = 0; i < scene.views.size(); ++i) {
     const SceneView& sv = scene.views[i];
     const std::string stem = fs::path(sv.name).stem().string();
     progress.advance();
+    if (held_out.count(&sv)) continue;
     if (!view_features_complete(o.features_dir, stem)) {
       log_warn(cat("language training: no features for view ", sv.name, " in ", o.features_dir, "; skipped"));
       continue;
@@ -121,7 +128,11 @@ std::vector<ViewTargets> load_targets(const Scene& scene, const LanguageTrainOpt
     views.push_back(std::move(t));
   }
   progress.finish();
-  if (views.empty()) fail(o.features_dir, "no view of the scene has complete features (run `citylangsplat features`)");
+  if (views.empty() && !held_out_all(scene, o.test_every))
+    fail(o.features_dir, "no view of the scene has complete features (run `citylangsplat features`)");
+  if (views.empty())
+    throw UsageError(cat("language training: --test-every ", o.test_every, " holds out every one of the scene's ",
+                         scene.views.size(), " views; use 0 to train on all"));
   return views;
 }
 

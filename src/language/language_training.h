@@ -23,6 +23,9 @@ struct LanguageTrainOptions {
   int checkpoint_every = 1000;
   bool resume = false;
   uint64_t seed = 1;
+  // Views left out of training: every test_every-th by name (train-rgb's split, whose held-out views the
+  // 2D evaluation scores); 0 = every view trains.
+  int test_every = 0;
   std::string device = "auto";  // "auto" (CUDA when the build and machine have it), "cpu", "cuda"
   // Stop as if interrupted (checkpoint, report.interrupted) once this many iterations have run in
   // total over all levels, counting those before a resume; 0 = never. For tests and time budgets.

@@ -249,10 +249,12 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
     o.lambda_sam = c.lambda_sam;
     o.lambda_citygml = c.lambda_citygml;
     o.baseline = method == "langsplat";
+    o.test_every = RgbTrainOptions{}.test_every;  // train-rgb's held-out views stay unseen: evaluate scores 2D on them
     // The baseline's objective has no lambdas (LangSplat's L1 on every pixel): changing them keeps it.
     const std::string weights = o.baseline ? "langsplat" : cat(o.lambda_sam, "|", o.lambda_citygml);
     const std::string fp =
-        hex64(fnv1a64(cat(geometry_fp, "|", ae_fp, "|", features_fp, "|", o.iterations, "|", weights)));
+        hex64(fnv1a64(cat(geometry_fp, "|", ae_fp, "|", features_fp, "|", o.iterations, "|", weights, "|held-out ",
+                          o.test_every)));
     const StageReport r = run_stage({"train-language (" + method + ")", dir / "stage.json", {dir / "model.json", dir / "city_objects.json"}, fp,
                                      {{"dir", dir.string()}}, [&, method = method, dir = dir] {
                                        LanguageTrainOptions t = o;
@@ -308,6 +310,7 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
                                         EvaluationOptions e;
                                         e.gt_points = gt.string();
                                         e.labels_dir = labels_dir.string();
+                                        e.test_every = RgbTrainOptions{}.test_every;
                                         std::vector<std::pair<std::string, nlohmann::json>> results;
                                         for (const auto& [method, dir] : methods) {
                                           e.out_dir = (eval_dir / method).string();

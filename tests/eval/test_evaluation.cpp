@@ -20,6 +20,7 @@
 #include "features/synthetic_provider.h"
 #include "language/language_model.h"
 #include "raycast/label_export.h"
+#include "scene/view_selection.h"
 #include "raycast/label_map_io.h"
 
 namespace fs = std::filesystem;
@@ -362,6 +363,37 @@ TEST(Evaluation, LabelMapsOfTheGtItselfScoreExactlyOne) {
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("coverage.png"), std::string::npos) << e.what();
   }
+}
+
+// --test-every N: "2d" is exactly the evaluation of a scene made of the held-out views alone, "2d_train"
+// that of the training views alone; every view keeps its record, marked.
+TEST(Evaluation, HeldOutViewsAreScoredApartFromTheTrainingViews) {
+  Fixture& f = fixture();
+  const LanguageModel model = make_model();
+  EvaluationOptions o = options();
+  o.test_every = 2;
+  const nlohmann::json split = evaluate_model(f.scene, model, *f.provider, f.taxonomy, o);
+  const ViewSplit views = split_views(f.scene, 2);
+  ASSERT_FALSE(views.test.empty());
+  ASSERT_FALSE(views.train.empty());
+  auto only = [&](const std::vector<const SceneView*>& subset) {
+    Scene s = f.scene;
+    s.views.clear();
+    for (const SceneView* v : subset) s.views.push_back(*v);
+    return evaluate_model(s, model, *f.provider, f.taxonomy, options());
+  };
+  const nlohmann::json held = only(views.test), train = only(views.train);
+  for (const char* field : {"miou", "wiou", "accuracy", "pixels", "scored_pixels", "confusion", "per_class"}) {
+    EXPECT_EQ(split["2d"][field], held["2d"][field]) << field;
+    EXPECT_EQ(split["2d_train"][field], train["2d"][field]) << field;
+  }
+  EXPECT_EQ(split["2d"]["views_scored"], views.test.size());
+  ASSERT_EQ(split["2d"]["views"].size(), f.scene.views.size());
+  size_t marked = 0;
+  for (const auto& v : split["2d"]["views"]) marked += v["held_out"].get<bool>();
+  EXPECT_EQ(marked, views.test.size());
+  // Without a split there is no "2d_train" and every view is in "2d".
+  EXPECT_FALSE(evaluate_model(f.scene, model, *f.provider, f.taxonomy, options()).contains("2d_train"));
 }
 
 TEST(Evaluation, CliWritesJsonAndMarkdownForTwoModels) {

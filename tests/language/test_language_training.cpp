@@ -281,6 +281,20 @@ TEST(LanguageTraining, MismatchedFeatureSizeIsAnError) {
   }
 }
 
+// --test-every: the held-out views (every N-th by name: view0 and view2 for N = 2) are never read, so a
+// held-out view whose features do not fit cannot stop the training; holding out all views is an error.
+TEST(LanguageTraining, HeldOutViewsAreNeverRead) {
+  TinyScene t;
+  t.scene.views[0].camera.width = 20;  // its features are 64 wide: an error if it were read
+  t.options.test_every = 2;
+  t.options.iterations = 5;
+  EXPECT_EQ(train_language(t.scene, t.options).iterations, 15);  // 5 per level
+  t.options.test_every = 0;
+  EXPECT_THROW(train_language(t.scene, t.options), Error);
+  t.options.test_every = 1;
+  EXPECT_THROW(train_language(t.scene, t.options), UsageError);
+}
+
 // Runs a shell script; returns the exit status and the combined output.
 int run_shell(const std::string& script, std::string* output) {
   const std::string cmd = "(" + script + ") 2>&1";
