@@ -26,7 +26,11 @@ done
 [ -x "$bin" ] || { echo "align.sh: $bin not found: build first (cmake --build build)" >&2; exit 1; }
 data=$(cd "$repo/../shared/data/citygml" 2>/dev/null && pwd || echo "$repo/data/citygml")
 buildings="fzk:$data/fzk-haus/fzk_haus_lod3_v2.gml citygml4j:$data/citygml4j/lod3_building_v2.gml texture4:$data/cityjson/texture4.city.json"
-rm -rf "$work" && mkdir -p "$work"
+# Only a folder this script made is cleared (its marker file), never one the user named by mistake.
+if [ -e "$work" ] && [ ! -f "$work/.cls-bench-align" ]; then
+  echo "align.sh: $work exists and was not made by this script; pass another --work" >&2; exit 2
+fi
+rm -rf "$work" && mkdir -p "$work" && touch "$work/.cls-bench-align"
 printf '%-10s %-4s %-18s %12s %12s %10s %10s %6s %7s\n' building seed error "before (m)" "after (m)" "after deg" "after %" pass time_s
 fails=0; rows=0
 for b in $buildings; do
@@ -61,3 +65,4 @@ PY
   done
 done
 echo "$((rows - fails)) of $rows within 3 cm and 0.05 deg"
+[ "$fails" = 0 ]  # the exit status says whether every start met the goal

@@ -22,7 +22,7 @@ namespace {
 // Centres of the model's Gaussians at least `min_opacity` opaque: the surfaces the photos show.
 std::vector<Vec3d> gaussian_centres(const std::string& path, double min_opacity) {
   const GaussianModel model = read_gaussians_ply(path);
-  const at::Tensor keep = model.opacities() >= min_opacity;
+  const at::Tensor keep = (model.opacities() >= min_opacity).logical_and(model.means.isfinite().all(1));
   const at::Tensor means = model.means.index({keep}).to(at::kDouble).contiguous();
   const double* m = means.data_ptr<double>();
   std::vector<Vec3d> out(means.size(0));
@@ -136,7 +136,7 @@ int cmd_align(int argc, char** argv) {
     }
     std::printf("wrote %s\n", args.get("out").c_str());
   }
-  if (r.icp.conditioning < 1e-6)
+  if (r.icp.conditioning < kIcpWeakConditioning)
     log_warn(cat("align: the paired surfaces leave part of the motion unconstrained (conditioning ",
                  r.icp.conditioning, "; e.g. only one facade is seen): check the refined transform"));
   return kExitOk;

@@ -242,7 +242,8 @@ nlohmann::json evaluate_2d(const Scene& scene, const EvaluatedClasses& ec, const
   const double radius = footprint_radius(ec.gt, popt);
   const std::vector<fs::path> label_dirs =
       options.labels_dir.empty() ? std::vector<fs::path>() : label_map_dirs(scene, options.labels_dir);
-  // With a split, "2d" scores the held-out views (no stage trained on them) and "2d_train" the others.
+  // With a split, "2d" scores the held-out views (no photometric or language training saw them) and
+  // "2d_train" the others.
   std::set<const SceneView*> held_out;
   for (const SceneView* v : split_views(scene, options.test_every).test) held_out.insert(v);
   Scores2d all(K), covered(K), train(K);
@@ -317,6 +318,10 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
   at::NoGradGuard no_grad;
   const EvaluatedClasses ec = load_evaluated_classes(taxonomy, options);
   const int K = ec.size();
+  if (options.test_every > 0 && model.info.contains("test_every") && model.info["test_every"] != options.test_every)
+    log_warn(cat("evaluate: the model was trained holding out every ", model.info["test_every"].dump(),
+                 "-th view (0 = none), the 2D scores use every ", options.test_every,
+                 "-th as held out: some of them were trained on"));
   const at::Tensor prototypes = class_prototypes(provider, taxonomy, ec.ids, options.phrases);
   const std::vector<int> levels = available_levels(model);
   const bool langsplat_rule = options.level_rule == "langsplat";

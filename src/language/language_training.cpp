@@ -131,8 +131,8 @@ std::vector<ViewTargets> load_targets(const Scene& scene, const LanguageTrainOpt
   if (views.empty() && !held_out_all(scene, o.test_every))
     fail(o.features_dir, "no view of the scene has complete features (run `citylangsplat features`)");
   if (views.empty())
-    throw UsageError(cat("language training: --test-every ", o.test_every, " holds out every one of the scene's ",
-                         scene.views.size(), " views; use 0 to train on all"));
+    throw UsageError(cat("language training: holding out every ", o.test_every, "-th view leaves none of the scene's ",
+                         scene.views.size(), " views to train on (train-language --test-every 0 trains on all)"));
   return views;
 }
 
@@ -405,6 +405,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
                          {"autoencoder_source", fs::absolute(o.autoencoder_path).string()},
                          {"views", nviews},
                          {"seed", o.seed},
+                         {"test_every", o.test_every},
                          {"final_loss", s.final_loss}};
   GaussianModel frozen = geometry;
   LanguageModel model{std::move(frozen), {}, std::move(autoencoder), std::move(info), {}};

@@ -17,10 +17,14 @@ CityAlignment align_city_model(const Scene& scene, SceneCityModel& city, const s
                                const std::filesystem::path& out_dir) {
   CityAlignment a;
   a.record = {{"mode", mode}, {"applied", false}};
+  // A transform refined by an earlier run stays only while it is the one used.
+  std::filesystem::remove(out_dir / "align" / "transform.json");
   if (mode == "off") return a;
+  if (scene.points.empty() && mode == "refine")
+    fail(scene.root, "--align refine: the scene has no sparse points to refine the city transform with");
   if (scene.points.empty()) {
     a.record["reason"] = "the scene has no sparse points";
-    log_warn("run: --align " + mode + ": the scene has no sparse points; the given city transform is kept");
+    log_warn("run: --align auto: the scene has no sparse points; the given city transform is kept");
     return a;
   }
   AlignmentRefinement r;
@@ -41,9 +45,21 @@ CityAlignment align_city_model(const Scene& scene, SceneCityModel& city, const s
   log_info(cat("run: align: the refinement moves the city model by up to ", change.max_displacement, " m (",
                change.rotation_deg, " deg, scale ", 100 * change.scale, "%); ", 100 * r.before.fraction_within,
                "% -> ", 100 * r.after.fraction_within, "% of sparse points within ", threshold, " m"));
-  if (mode == "auto" && change.max_displacement <= kAlignApplyMetres) {
-    a.record["reason"] = cat("the refinement moves the model by at most ", kAlignApplyMetres, " m");
-    return a;
+  if (mode == "auto") {
+    std::string keep;
+    if (change.max_displacement <= kAlignApplyMetres)
+      keep = cat("the refinement moves the model by at most ", kAlignApplyMetres, " m");
+    else if (!(r.after.fraction_within > r.before.fraction_within ||
+               (r.after.fraction_within == r.before.fraction_within && r.after.median < r.before.median)))
+      keep = "the refinement brings neither more sparse points near the model nor them closer";
+    else if (r.icp.conditioning < kIcpWeakConditioning)
+      keep = cat("the points leave part of the motion unconstrained (conditioning ", r.icp.conditioning, ")");
+    if (!keep.empty()) {
+      a.record["reason"] = keep;
+      if (change.max_displacement > kAlignApplyMetres) log_warn("run: --align auto: " + keep + "; the given transform is kept");
+      std::filesystem::remove(out_dir / "align" / "transform.json");
+      return a;
+    }
   }
   a.applied = true;
   a.transform = out_dir / "align" / "transform.json";

@@ -11,7 +11,9 @@
 namespace cls {
 
 // auto applies the refinement only when it moves some vertex of the model by more than this (metres of
-// the city model): a transform that is right to a few centimetres keeps its label maps byte for byte.
+// the city model): a transform that is right to a few centimetres keeps its label maps byte for byte;
+// and only when it brings more sparse points within the check's distance (or, as many, closer: a lower
+// median) and the points constrain the whole motion.
 constexpr double kAlignApplyMetres = 0.05;
 
 struct CityAlignment {
@@ -20,8 +22,8 @@ struct CityAlignment {
   nlohmann::json record;            // run.json's "align"
 };
 
-// "off", "refine" (always apply; a failed refinement is an error) or "auto" (apply above
-// kAlignApplyMetres; a failed refinement is a warning). Updates `city` when applied.
+// "off", "refine" (always apply; a failed refinement or a scene without points is an error) or "auto"
+// (see kAlignApplyMetres; a failed refinement is a warning). Updates `city` when applied.
 CityAlignment align_city_model(const Scene& scene, SceneCityModel& city, const std::string& mode, double threshold,
                                const std::filesystem::path& out_dir);
 

@@ -33,6 +33,8 @@ void PipelineConfig::validate() const {
   if (rgb_iterations < 0 || language_iterations < 0 || autoencoder_epochs < 0)
     throw UsageError("run: iteration and epoch counts must not be negative (0: the feature source's default)");
   if (!(alpha >= 0 && alpha <= 1)) throw UsageError("run: --alpha must be in [0, 1]");
+  if (models == ModelsChoice::ImageSegments && resolution != 1)
+    throw UsageError("run: --models image-segments reads the full-resolution ground truth: use -r 1");
   if (!(align_distance >= 0)) throw UsageError("run: --align-distance must be >= 0");
   if (align != "off" && align != "refine" && align != "auto") throw UsageError("run: --align must be off, refine or auto");
   if (city.empty())

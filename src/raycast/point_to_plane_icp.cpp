@@ -29,7 +29,8 @@ double median_abs(std::vector<double> x) {
 }
 
 // Eigen-decomposition solve of the symmetric system A x = b, dropping directions whose eigenvalue is
-// below 1e-12 of the largest (a motion the pairs do not constrain stays put). Returns min/max eigenvalue.
+// below 1e-8 of the largest (a motion the pairs do not constrain stays put instead of following the
+// noise). Returns min/max eigenvalue.
 double solve_symmetric(const cv::Matx<double, kParameters, kParameters>& A, const cv::Vec<double, kParameters>& b,
                        int n, cv::Vec<double, kParameters>& x) {
   const cv::Mat a = cv::Mat(A)(cv::Range(0, n), cv::Range(0, n)).clone();
@@ -40,7 +41,7 @@ double solve_symmetric(const cv::Matx<double, kParameters, kParameters>& A, cons
   if (!(largest > 0)) return 0;
   for (int k = 0; k < n; ++k) {
     const double lambda = values.at<double>(k);
-    if (!(lambda > 1e-12 * largest)) continue;
+    if (!(lambda > 1e-8 * largest)) continue;
     double vb = 0;
     for (int i = 0; i < n; ++i) vb += vectors.at<double>(k, i) * b[i];
     for (int i = 0; i < n; ++i) x[i] += vb / lambda * vectors.at<double>(k, i);

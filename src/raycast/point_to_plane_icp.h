@@ -36,6 +36,10 @@ struct IcpStage {
   double rms = 0;         // their root-mean-square point-to-plane distance (mesh units)
 };
 
+// Below this conditioning the paired surfaces leave part of the motion unconstrained: `align` warns, and
+// `run --align auto` keeps the given transform.
+constexpr double kIcpWeakConditioning = 1e-6;
+
 struct IcpResult {
   CityTransform motion;   // maps the points into the mesh's frame
   std::vector<IcpStage> stages;

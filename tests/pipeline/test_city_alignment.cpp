@@ -1,0 +1,71 @@
+// run --align's decisions (pipeline/city_alignment.h) on FZK-Haus with hand-placed points.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "pipeline/city_alignment.h"
+#include "raycast/closest_point.h"
+
+namespace cls {
+namespace {
+namespace fs = std::filesystem;
+
+const std::string kFzk = CLS_TEST_DATA "/citygml/fzk-haus/fzk_haus_lod3_v2.gml";
+
+struct Fixture {
+  fs::path out = fs::temp_directory_path() / ("cls_city_alignment_" + std::to_string(::getpid()));
+  SceneCityModel city = load_scene_city_model(kFzk, "", CityModelOptions{}, "test");
+  Fixture() { fs::remove_all(out); }
+  ~Fixture() { fs::remove_all(out); }
+  // The triangles' centroids, shifted by `offset`: the model's surface, off by a known translation.
+  Scene points(Vec3d offset) const {
+    Scene s;
+    s.root = "hand-made";
+    for (const auto& t : city.mesh.triangles) {
+      const Vec3d c = (1.0 / 3) * (cast<double>(city.vertices[t[0]]) + cast<double>(city.vertices[t[1]]) +
+                                   cast<double>(city.vertices[t[2]]));
+      SparsePoint p;
+      p.xyz = c + offset;
+      s.points.push_back(p);
+    }
+    return s;
+  }
+};
+
+TEST(CityAlignment, AutoAppliesAHelpfulRefinementAndKeepsAnExactTransform) {
+  Fixture f;
+  SceneCityModel exact = f.city;
+  const CityAlignment kept = align_city_model(f.points({0, 0, 0}), exact, "auto", 0.5, f.out);
+  EXPECT_FALSE(kept.applied);
+  EXPECT_NE(kept.record["reason"].get<std::string>().find("at most"), std::string::npos) << kept.record.dump();
+  EXPECT_FALSE(fs::exists(f.out / "align" / "transform.json"));
+
+  SceneCityModel moved = f.city;
+  const CityAlignment applied = align_city_model(f.points({0.4, -0.3, 0.2}), moved, "auto", 0.5, f.out);
+  ASSERT_TRUE(applied.applied) << applied.record.dump();
+  EXPECT_TRUE(fs::exists(applied.transform));
+  // The model now sits on the shifted points: its translation is the shift.
+  const Vec3d t = moved.transform.translation() - f.city.transform.translation();
+  EXPECT_NEAR(t.x, 0.4, 0.01);
+  EXPECT_NEAR(t.y, -0.3, 0.01);
+  EXPECT_NEAR(t.z, 0.2, 0.01);
+  // A later run that does not use it leaves no stale file behind.
+  SceneCityModel again = f.city;
+  EXPECT_FALSE(align_city_model(f.points({0.4, -0.3, 0.2}), again, "off", 0.5, f.out).applied);
+  EXPECT_FALSE(fs::exists(applied.transform));
+}
+
+TEST(CityAlignment, NoPointsIsAWarningForAutoAndAnErrorForRefine) {
+  Fixture f;
+  Scene empty;
+  empty.root = "empty-scene";
+  SceneCityModel city = f.city;
+  EXPECT_FALSE(align_city_model(empty, city, "auto", 0.5, f.out).applied);
+  EXPECT_THROW(align_city_model(empty, city, "refine", 0.5, f.out), Error);
+}
+
+}  // namespace
+}  // namespace cls
