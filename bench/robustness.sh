@@ -31,6 +31,7 @@ while [ $# -gt 0 ]; do
        exit 2 ;;
   esac
 done
+case " $errors " in *" 0 "*) ;; *) echo "robustness.sh: --errors must include 0 (the baseline and the reference row run there)" >&2; exit 2 ;; esac
 [ -x "$bin" ] || { echo "robustness.sh: $bin not found: build first (cmake --build build)" >&2; exit 1; }
 data=$(cd "$repo/../shared/data/citygml" 2>/dev/null && pwd || echo "$repo/data/citygml")
 declare -A city=([fzk]=$data/fzk-haus/fzk_haus_lod3_v2.gml [citygml4j]=$data/citygml4j/lod3_building_v2.gml
@@ -56,7 +57,8 @@ for b in $buildings; do
   if [ ! -f "$work/$b/rgb/point_cloud.ply" ]; then
     echo "$b: train-rgb ($rgb_iterations iterations)" >&2
     "$bin" -q train-rgb --scene "$work/$b/scene-0" --out "$work/$b/rgb" --iterations "$rgb_iterations" \
-      --densify-until $((rgb_iterations / 2)) > "$work/$b/rgb.log" 2>&1
+      --densify-until $((rgb_iterations / 2)) > "$work/$b/rgb.log" 2>&1 \
+      || { echo "robustness.sh: train-rgb failed, see $work/$b/rgb.log" >&2; tail -5 "$work/$b/rgb.log" >&2; exit 1; }
   fi
   for e in $errors; do
     scene=$work/$b/scene-$e
