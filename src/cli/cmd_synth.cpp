@@ -44,6 +44,11 @@ int cmd_synth(int argc, char** argv) {
       .option("city-error", "", "give the pipeline a wrong city transform: t=METRES,r=DEGREES,s=FRACTION (seeded "
                                 "direction and axis, about the model's centre); the exact one goes to "
                                 "city/transform_true.json (default: none)")
+      .option("given-city", "", "give the pipeline this model of the same place and CRS instead (e.g. the "
+                                "building's LoD2 model); images and ground truth show --city (default: --city)")
+      .option("given-lod", "0", "LoD to read from --given-city: 1, 2, 3, or 0 / highest")
+      .option("drop-openings", "0", "fraction of the given model's windows and doors merged into the surface "
+                                    "they sit in (seeded choice); the images and ground truth keep them")
       .flag("per-building", "a district: split the views over the buildings, each share circling its own building")
       .flag("overwrite", "replace an existing synth output in --out")
       .flag("skip-if-same", "do nothing if --out holds a scene generated with the same settings and inputs");
@@ -66,6 +71,9 @@ int cmd_synth(int argc, char** argv) {
   job.settings.gt_density = args.get_double("gt-density");
   job.settings.per_building = args.flag_set("per-building");
   if (args.has("city-error")) job.city_error = synth::parse_city_error(args.get("city-error"));
+  job.given_city_path = args.get("given-city");
+  job.given_lod = parse_lod_option(args.get("given-lod"));
+  job.drop_openings = args.get_double("drop-openings");
   job.overwrite = args.flag_set("overwrite");
   job.skip_if_same = args.flag_set("skip-if-same");
   synth::run_synth_job(job);

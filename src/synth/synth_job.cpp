@@ -14,6 +14,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "synth/box.h"
+#include "synth/drop_openings.h"
 
 namespace cls::synth {
 
@@ -33,12 +34,32 @@ std::string output_problem(const SynthJob& job) {
   return "";
 }
 
+// The model the pipeline is given: the rendered one, or --given-city read at --given-lod; with openings
+// dropped.
+GivenCityModel given_city_model(const SynthJob& job, const SemanticMesh& mesh, const std::string& city_bytes,
+                                const Taxonomy& taxonomy) {
+  GivenCityModel given{job.city_path, city_bytes, mesh.lod};
+  if (!job.given_city_path.empty()) {
+    const SemanticMesh other = load_city_model(job.given_city_path, taxonomy, job.given_lod);
+    if (other.triangles.empty()) fail(job.given_city_path, "the given city model has no surfaces at the chosen LoD");
+    given = {job.given_city_path, read_text_file(job.given_city_path), other.lod};
+  }
+  if (job.drop_openings > 0) {
+    DroppedOpenings d = drop_openings(given.path, given.bytes, job.drop_openings, job.settings.seed);
+    given.bytes = std::move(d.text);
+    given.openings_dropped = d.dropped;
+    given.openings_total = d.total;
+  }
+  return given;
+}
+
 }  // namespace
 
-std::string synth_scene_json(const SynthJob& job, const SemanticMesh& mesh, const std::string& city_bytes,
-                             const std::string& taxonomy_bytes) {
+std::string synth_scene_json(const SynthJob& job, const std::string& city_bytes, const std::string& taxonomy_bytes,
+                             const GivenCityModel& given) {
   const SynthSettings& s = job.settings;
   const std::string city_file = fs::path(job.city_path).filename().string();
+  const std::string given_file = fs::path(given.path).filename().string();
   nlohmann::ordered_json generator = {
       {"program", "citylangsplat synth"},
       {"version", CLS_VERSION},
@@ -63,10 +84,16 @@ std::string synth_scene_json(const SynthJob& job, const SemanticMesh& mesh, cons
                                {"r", job.city_error.degrees},
                                {"s", job.city_error.scale},
                                {"truth", "city/transform_true.json"}};
+  // Absent unless used, so older scene.json stay equal.
+  if (!job.given_city_path.empty())
+    generator["given_city"] = {{"source", given_file}, {"fnv1a64", fnv1a64_hex(given.bytes)}, {"lod_option", job.given_lod}};
+  if (job.drop_openings > 0)
+    generator["drop_openings"] = {
+        {"fraction", job.drop_openings}, {"dropped", given.openings_dropped}, {"of", given.openings_total}};
   nlohmann::ordered_json scene = {
-      {"city_model", "city/" + city_file},
+      {"city_model", "city/" + given_file},
       {"city_transform", "city/transform.json"},
-      {"lod", mesh.lod},
+      {"lod", given.lod},
       {"generator", generator},
   };
   return scene.dump(2) + "\n";
@@ -76,6 +103,8 @@ bool run_synth_job(const SynthJob& job) {
   const std::string problem = settings_problem(job.settings);
   if (!problem.empty()) throw UsageError("synth: " + problem);
   if (job.out_dir.empty()) throw UsageError("synth: --out is required");
+  if (!(job.drop_openings >= 0 && job.drop_openings <= 1))
+    throw UsageError("synth: --drop-openings: expected a fraction in [0, 1], got " + std::to_string(job.drop_openings));
   const fs::path out = fs::absolute(job.out_dir).lexically_normal();
   if (out.filename().empty() || out == out.root_path()) throw UsageError("synth: --out must name a directory");
 
@@ -84,7 +113,8 @@ bool run_synth_job(const SynthJob& job) {
   const SemanticMesh mesh = load_city_model(job.city_path, taxonomy, job.lod);
   if (mesh.triangles.empty()) fail(job.city_path, "the city model has no surfaces to render at the chosen LoD");
   const std::string city_bytes = read_text_file(job.city_path);
-  const std::string scene_json = synth_scene_json(job, mesh, city_bytes, taxonomy_bytes);
+  const GivenCityModel given = given_city_model(job, mesh, city_bytes, taxonomy);
+  const std::string scene_json = synth_scene_json(job, city_bytes, taxonomy_bytes, given);
 
   if (job.skip_if_same && fs::exists(out / "scene.json") && read_text_file(out / "scene.json") == scene_json) {
     log_info("synth: " + out.string() + " is up to date");
@@ -101,7 +131,9 @@ bool run_synth_job(const SynthJob& job) {
     fs::remove_all(staging);
     fs::create_directories(staging);
     write_synth_outputs(staging.string(), scene, taxonomy);
-    write_text_atomic(staging / "city" / fs::path(job.city_path).filename(), city_bytes);
+    const fs::path given_file = staging / "city" / fs::path(given.path).filename();
+    write_text_atomic(given_file, given.bytes);
+    if (job.drop_openings > 0) load_city_model(given_file.string(), taxonomy, given.lod);  // the edit still reads
     CityTransform to_scene;
     for (int i = 0; i < 3; ++i) to_scene.matrix[i][3] = -mesh.origin[i];
     if (job.city_error.any()) {

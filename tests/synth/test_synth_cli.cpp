@@ -127,6 +127,37 @@ TEST(SynthCli, CityErrorPerturbsOnlyTheGivenTransform) {
   for (const auto& d : {exact, off}) fs::remove_all(d);
 }
 
+// --drop-openings and --given-city change only the model the pipeline is given: images, labels, points
+// and the transform are those of the exact scene.
+TEST(SynthCli, GivenModelPerturbationsChangeOnlyTheGivenModel) {
+  const fs::path exact = temp_path("exact"), drop = temp_path("drop"), lod2 = temp_path("lod2");
+  const std::string lod2_file = CLS_TEST_DATA "/citygml/fzk-haus/fzk_haus_lod2_v2.gml";
+  ASSERT_EQ(synth(tiny(exact)), 0);
+  ASSERT_EQ(synth(tiny(drop) + " --drop-openings 0.3"), 0);
+  ASSERT_EQ(synth(tiny(lod2) + " --given-city " + lod2_file), 0);
+  const auto fe = test::read_tree(exact), fd = test::read_tree(drop), fl = test::read_tree(lod2);
+  for (const auto& [name, bytes] : fe)
+    if (name != "city/fzk_haus_lod3_v2.gml" && name != "scene.json") {
+      EXPECT_EQ(fd.at(name), bytes) << name;
+      EXPECT_EQ(fl.at(name), bytes) << name;
+    }
+  const auto drop_scene = nlohmann::json::parse(fd.at("scene.json"));
+  const auto dropped = drop_scene.at("generator").at("drop_openings");
+  const int total = dropped.at("of"), count = dropped.at("dropped");
+  EXPECT_EQ(count, static_cast<int>(std::lround(0.3 * total)));
+  EXPECT_NE(fd.at("city/fzk_haus_lod3_v2.gml"), fe.at("city/fzk_haus_lod3_v2.gml"));
+  EXPECT_EQ(drop_scene.at("lod"), 3);
+
+  const auto lod2_scene = nlohmann::json::parse(fl.at("scene.json"));
+  EXPECT_EQ(lod2_scene.at("city_model"), "city/fzk_haus_lod2_v2.gml");
+  EXPECT_EQ(lod2_scene.at("lod"), 2);
+  EXPECT_EQ(fl.count("city/fzk_haus_lod3_v2.gml"), 0u);
+  EXPECT_EQ(fl.at("city/fzk_haus_lod2_v2.gml"), read_text_file(lod2_file));
+  EXPECT_NE(synth(tiny(temp_path("bad")) + " --drop-openings 2"), 0);
+  EXPECT_NE(synth(tiny(temp_path("bad")) + " --given-city /nonexistent.gml"), 0);
+  for (const auto& d : {exact, drop, lod2}) fs::remove_all(d);
+}
+
 // Label images on the real model agree with the test's own cast of the city mesh: a pixel is
 // either the city label of that ray or 0 where clutter hides the building, which is rare.
 TEST(SynthCli, LabelsMatchOwnProjectionOfFzkHaus) {
