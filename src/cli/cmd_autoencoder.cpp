@@ -60,7 +60,10 @@ int cmd_autoencoder(int argc, char** argv) {
       .option("holdout", format_number(dt.holdout_fraction), "fraction of features held out for the reported cosine")
       .option("encoder-dims", join(dc.encoder_dims), "encoder layer sizes after the input; the last is the latent")
       .option("decoder-dims", join(dc.decoder_dims), "decoder layer sizes; the last must be the feature size")
-      .option("seed", std::to_string(dt.seed), "seed of initialisation, split and shuffling");
+      .option("seed", std::to_string(dt.seed), "seed of initialisation, split and shuffling")
+      .option("preset", "", "langsplat: LangSplat's published autoencoder (the langsplat-original baseline): sizes "
+                            "256,128,64,32,3 / 16,32,64,128,256,256,512, normalised output, lr 1e-4, batch 64, "
+                            "lambda-cos 0.512; combines with --epochs, --holdout and --seed only");
   if (!args.parse(argc, argv)) return 0;
   if (!args.has("features")) throw UsageError("autoencoder: --features is required (see --help)");
   if (!args.has("out")) throw UsageError("autoencoder: --out is required (see --help)");
@@ -79,6 +82,21 @@ int cmd_autoencoder(int argc, char** argv) {
   const int seed = args.get_int("seed");
   if (seed < 0) throw UsageError("autoencoder: --seed must be >= 0");
   o.train.seed = static_cast<uint64_t>(seed);
+  if (args.has("preset")) {
+    if (args.get("preset") != "langsplat")
+      throw UsageError("autoencoder: --preset takes 'langsplat', got '" + args.get("preset") + "'");
+    const std::pair<const char*, std::string> defaults[] = {
+        {"batch-size", std::to_string(dt.batch_size)}, {"lr", format_number(dt.lr)},
+        {"lambda-cos", format_number(dt.lambda_cos)},  {"encoder-dims", join(dc.encoder_dims)},
+        {"decoder-dims", join(dc.decoder_dims)}};
+    for (const auto& [option, value] : defaults)
+      if (args.get(option) != value) throw UsageError(std::string("autoencoder: --preset sets --") + option + " itself");
+    const AutoencoderTrainOptions preset = langsplat_autoencoder_training();
+    o.config = langsplat_autoencoder_config();
+    o.train.batch_size = preset.batch_size;
+    o.train.lr = preset.lr;
+    o.train.lambda_cos = preset.lambda_cos;
+  }
   if (o.train.epochs < 1) throw UsageError("autoencoder: --epochs must be >= 1");
   if (o.train.batch_size < 2) throw UsageError("autoencoder: --batch-size must be >= 2");
   if (!(o.train.lr > 0)) throw UsageError("autoencoder: --lr must be positive");

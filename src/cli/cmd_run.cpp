@@ -8,6 +8,7 @@
 #include "cli/city_mesh_inputs.h"
 #include "cli/commands.h"
 #include "core/args.h"
+#include "core/strings.h"
 #include "core/error.h"
 #include "core/exit_codes.h"
 #include "pipeline/pipeline.h"
@@ -53,7 +54,11 @@ int cmd_run(int argc, char** argv) {
       .option("autoencoder", "",
               "use this autoencoder (e.g. the one shared by all tiles, docs/scale.md) instead of training one")
       .option("stop-after", "", "features: stop after the features stage (tiles train a shared autoencoder next)")
-      .flag("no-baseline", "do not train the LangSplat baseline");
+      .option("baseline", "langsplat",
+              "baselines beside CityLangSplat, comma-separated: langsplat (LangSplat's objective on the shared "
+              "autoencoder), langsplat-original (LangSplat as published: its 3-d autoencoder and settings, "
+              "normalised splatting), or none")
+      .flag("no-baseline", "no baseline (= --baseline none)");
   if (!args.parse(argc, argv)) return kExitOk;
 
   PipelineConfig c;
@@ -78,7 +83,15 @@ int cmd_run(int argc, char** argv) {
   }
   c.lambda_sam = args.get_double("lambda-sam");
   c.lambda_citygml = args.get_double("lambda-citygml");
-  c.baseline = !args.flag_set("no-baseline");
+  c.baseline = false;
+  for (const std::string& b : split_commas(args.flag_set("no-baseline") ? "none" : args.get("baseline"))) {
+    if (b == "langsplat")
+      c.baseline = true;
+    else if (b == "langsplat-original")
+      c.baseline_original = true;
+    else if (b != "none")
+      throw UsageError("run: --baseline takes langsplat, langsplat-original or none, got '" + b + "'");
+  }
   c.autoencoder = args.get("autoencoder");
   if (args.has("stop-after") && args.get("stop-after") != "features")
     throw UsageError("run: --stop-after takes only 'features', got '" + args.get("stop-after") + "'");

@@ -27,7 +27,11 @@ int cmd_train_language(int argc, char** argv) {
       .option("lr", "0.0025", "Adam learning rate of the latents (LangSplat's)")
       .option("lambda-sam", "1.0", "weight of the SAM term inside CityGML coverage")
       .option("lambda-citygml", "0.5", "weight of the CityGML term inside coverage")
-      .option("baseline", "", "'langsplat': LangSplat's objective (plain L1 to the SAM targets, no CityGML term)")
+      .option("baseline", "", "'langsplat': LangSplat's objective (plain L1 to the SAM targets, no CityGML term); "
+                              "'langsplat-original': the same with LangSplat's normalised splatting (give it the "
+                              "autoencoder of `autoencoder --preset langsplat`)")
+      .flag("normalize-latents", "LangSplat's splatting: each Gaussian's latent divided by its norm before it is "
+                                 "splatted (default: raw latents; docs/language.md measures both)")
       .option("checkpoint-every", std::to_string(d.checkpoint_every), "iterations between checkpoints (0 = only on interrupt)")
       .flag("resume", "continue from OUT/checkpoints/language.safetensors if present")
       .option("seed", std::to_string(d.seed), "seed of the view order")
@@ -49,9 +53,10 @@ int cmd_train_language(int argc, char** argv) {
   o.lambda_sam = args.get_double("lambda-sam");
   o.lambda_citygml = args.get_double("lambda-citygml");
   const std::string baseline = args.get("baseline");
-  if (!baseline.empty() && baseline != "langsplat")
-    throw UsageError("train-language: --baseline takes 'langsplat', got '" + baseline + "'");
-  o.baseline = baseline == "langsplat";
+  if (!baseline.empty() && baseline != "langsplat" && baseline != "langsplat-original")
+    throw UsageError("train-language: --baseline takes 'langsplat' or 'langsplat-original', got '" + baseline + "'");
+  o.baseline = !baseline.empty();
+  o.normalize_latents = args.flag_set("normalize-latents") || baseline == "langsplat-original";
   o.checkpoint_every = args.get_int("checkpoint-every");
   o.resume = args.flag_set("resume");
   o.seed = static_cast<uint64_t>(args.get_int("seed"));

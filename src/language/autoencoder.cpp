@@ -108,6 +108,24 @@ std::string sizes_string(at::IntArrayRef s) {
 
 }  // namespace
 
+AutoencoderConfig langsplat_autoencoder_config(int input_dim) {
+  AutoencoderConfig c;
+  c.input_dim = input_dim;
+  c.encoder_dims = {256, 128, 64, 32, 3};
+  c.decoder_dims = {16, 32, 64, 128, 256, 256, input_dim};
+  c.normalize_latent = true;
+  c.normalize_output = true;
+  return c;
+}
+
+AutoencoderTrainOptions langsplat_autoencoder_training() {
+  AutoencoderTrainOptions o;
+  o.lr = 1e-4;
+  o.batch_size = 64;
+  o.lambda_cos = 0.512;
+  return o;
+}
+
 void AutoencoderConfig::validate() const {
   auto positive = [](const std::vector<int>& v) {
     for (int d : v)

@@ -2,7 +2,7 @@
 // A trained language field on disk (one directory, what `query` and `evaluate` open):
 //   model.json                {"method": "citylangsplat" | "langsplat", "levels": [1, 2, 3],
 //                              "iterations", "lambda_sam", "lambda_citygml", "features": <dir>,
-//                              "provider": <spec>, "geometry_source": <ply>, ...}
+//                              "provider": <spec>, "geometry_source": <ply>, "normalize_latents", ...}
 //   point_cloud.ply           the frozen geometry (3DGS layout)
 //   latents.safetensors       "level1", "level2", "level3": N x latent float32
 //   autoencoder.safetensors   the shared autoencoder

@@ -147,12 +147,18 @@ std::vector<int> epoch_order(uint64_t seed, int level, int64_t epoch, int n) {
 
 std::string adam_name(int level) { return "latents_l" + std::to_string(level); }
 
+// What a Gaussian splats of its latent: the latent, or LangSplat's latent / (|latent| + 1e-9).
+at::Tensor splatted(const at::Tensor& latents, const LanguageTrainOptions& o) {
+  return o.normalize_latents ? latents / (latents.norm(2, {1}, true) + 1e-9) : latents;
+}
+
 // Everything that must agree between a checkpoint and the run that resumes it.
 nlohmann::json run_config(const LanguageTrainOptions& o, int64_t n, int latent, size_t views) {
   // The baseline's objective has no lambdas: record the weights it uses, so that --lambda-* do not
   // keep its checkpoint from resuming.
   return {{"seed", o.seed},
           {"baseline", o.baseline},
+          {"normalize_latents", o.normalize_latents},
           {"lambda_sam", o.baseline ? 1.0 : o.lambda_sam},
           {"lambda_citygml", o.baseline ? 0.0 : o.lambda_citygml},
           {"lr", o.lr},
@@ -330,7 +336,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
       settings.camera = sv.camera;
       settings.pose = sv.pose;
       const at::Tensor rendered =
-          rasterize_features(means, scales, quats, opacities, adam.group(adam_name(level)).param, at::Tensor(), settings).image;
+          rasterize_features(means, scales, quats, opacities, splatted(adam.group(adam_name(level)).param, o), at::Tensor(), settings).image;
       const size_t hw = size_t(v.height) * v.width;
       const int32_t* sam_ids = v.sam_seg.data() + level * hw;  // seg map l of [default, s, m, l]
       const int32_t* gml_ids = v.gml_seg.data() + (level - 1) * hw;
@@ -406,10 +412,11 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
                          {"views", nviews},
                          {"seed", o.seed},
                          {"test_every", o.test_every},
+                         {"normalize_latents", o.normalize_latents},
                          {"final_loss", s.final_loss}};
   GaussianModel frozen = geometry;
   LanguageModel model{std::move(frozen), {}, std::move(autoencoder), std::move(info), {}};
-  for (int l = 0; l < kLevels; ++l) model.latents[l] = s.latents[l].detach().cpu().contiguous();
+  for (int l = 0; l < kLevels; ++l) model.latents[l] = splatted(s.latents[l].detach(), o).cpu().contiguous();
   attach_city_objects(model, scene, labels_dir);
   save_language_model(o.out_dir, model);
   // A final checkpoint at the end, so a `--resume` of a finished run only rewrites the model.

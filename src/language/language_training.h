@@ -20,6 +20,9 @@ struct LanguageTrainOptions {
   double lr = 0.0025;           // LangSplat's language feature lr
   double lambda_sam = 1.0, lambda_citygml = 0.5;
   bool baseline = false;        // --baseline langsplat
+  // LangSplat's splatting: each Gaussian's latent divided by its norm (+1e-9) before it is splatted; the
+  // saved model holds the normalised latents, so every consumer splats and decodes what training did.
+  bool normalize_latents = false;
   int checkpoint_every = 1000;
   bool resume = false;
   uint64_t seed = 1;

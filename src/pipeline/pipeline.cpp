@@ -31,10 +31,12 @@ namespace {
 StageReport done(nlohmann::json fields) { return {"done", 0, std::move(fields)}; }
 StageReport interrupted() { return {"interrupted", 0, nlohmann::json::object()}; }
 
-// The methods trained on identical inputs: CityLangSplat and (unless disabled) LangSplat's objective.
+// The methods trained on identical inputs: CityLangSplat, (unless disabled) LangSplat's objective on the
+// shared autoencoder, and (when asked) LangSplat as published.
 std::vector<std::pair<std::string, fs::path>> language_methods(const PipelineConfig& c) {
   std::vector<std::pair<std::string, fs::path>> m = {{"citylangsplat", c.out_dir / "language" / "citylangsplat"}};
   if (c.baseline) m.push_back({"langsplat", c.out_dir / "language" / "langsplat"});
+  if (c.baseline_original) m.push_back({"langsplat-original", c.out_dir / "language" / "langsplat-original"});
   return m;
 }
 
@@ -168,25 +170,34 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
     return finish();
   }
 
-  // The shared autoencoder (3.2), trained on the SAM features only; or the one shared by all tiles.
+  // The shared autoencoder (3.2), trained on the SAM features only; or the one shared by all tiles. The
+  // published LangSplat baseline trains its own, with LangSplat's sizes and settings.
+  const auto autoencoder_stage = [&](const std::string& name, const fs::path& file, AutoencoderConfig config,
+                                     AutoencoderTrainOptions train, const std::string& variant) {
+    record.add(name, run_stage({name, out / (file.stem().string() + ".stage.json"), {file},
+                                hex64(fnv1a64(cat(features_fp, "|", source.autoencoder_epochs, variant))),
+                                {{"file", file.string()}}, [&] {
+                                  AutoencoderStageOptions o;
+                                  o.features_dirs = {features_dir};
+                                  o.out = file;
+                                  o.config = config;
+                                  o.train = train;
+                                  o.train.epochs = source.autoencoder_epochs;
+                                  const AutoencoderReport r = run_autoencoder_stage(o);
+                                  log_info(cat("run: ", name, ": ", r.train_samples, " SAM features, held-out cosine ",
+                                               r.holdout_cosine));
+                                  return done({{"file", file.string()}, {"holdout_cosine", r.holdout_cosine}});
+                                }}));
+  };
   const fs::path ae_path = c.autoencoder.empty() ? out / "autoencoder.safetensors" : fs::path(c.autoencoder);
-  if (!c.autoencoder.empty()) {
+  if (!c.autoencoder.empty())
     record.add("autoencoder", {"shared", 0, {{"file", ae_path.string()}}});
-  } else {
-    record.add("autoencoder",
-               run_stage({"autoencoder", out / "autoencoder.stage.json", {ae_path},
-                          hex64(fnv1a64(cat(features_fp, "|", source.autoencoder_epochs))), {{"file", ae_path.string()}},
-                          [&] {
-                            AutoencoderStageOptions o;
-                            o.features_dirs = {features_dir};
-                            o.out = ae_path;
-                            o.train.epochs = source.autoencoder_epochs;
-                            const AutoencoderReport r = run_autoencoder_stage(o);
-                            log_info(cat("run: autoencoder: ", r.train_samples, " SAM features, held-out cosine ",
-                                         r.holdout_cosine));
-                            return done({{"file", ae_path.string()}, {"holdout_cosine", r.holdout_cosine}});
-                          }}));
-  }
+  else
+    autoencoder_stage("autoencoder", ae_path, AutoencoderConfig{}, AutoencoderTrainOptions{}, "");
+  const fs::path original_ae_path = out / "autoencoder-langsplat.safetensors";
+  if (c.baseline_original && !stopped_by_signal("autoencoder"))
+    autoencoder_stage("autoencoder-langsplat", original_ae_path, langsplat_autoencoder_config(),
+                      langsplat_autoencoder_training(), "|langsplat-original");
   if (stopped_by_signal("autoencoder")) return finish();
 
   // The photometric model (or an imported 3DGS PLY).
@@ -238,23 +249,24 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
 
   // Language fields (3.3): CityLangSplat, and LangSplat's objective on identical inputs.
   const auto methods = language_methods(c);
-  const std::string ae_fp = file_fnv1a64_hex(ae_path);
   for (const auto& [method, dir] : methods) {
+    const bool original = method == "langsplat-original";
     LanguageTrainOptions o;
     o.geometry_ply = geometry.string();
     o.features_dir = features_dir.string();
-    o.autoencoder_path = ae_path.string();
+    o.autoencoder_path = (original ? original_ae_path : ae_path).string();
     o.out_dir = dir.string();
     o.iterations = source.language_iterations;
     o.lambda_sam = c.lambda_sam;
     o.lambda_citygml = c.lambda_citygml;
-    o.baseline = method == "langsplat";
+    o.baseline = method != "citylangsplat";
+    o.normalize_latents = original;  // LangSplat's renderer splats each Gaussian's normalised feature
     o.test_every = RgbTrainOptions{}.test_every;  // train-rgb's held-out views stay unseen: evaluate scores 2D on them
     // The baseline's objective has no lambdas (LangSplat's L1 on every pixel): changing them keeps it.
     const std::string weights = o.baseline ? "langsplat" : cat(o.lambda_sam, "|", o.lambda_citygml);
     const std::string fp =
-        hex64(fnv1a64(cat(geometry_fp, "|", ae_fp, "|", features_fp, "|", o.iterations, "|", weights, "|held-out ",
-                          o.test_every)));
+        hex64(fnv1a64(cat(geometry_fp, "|", file_fnv1a64_hex(o.autoencoder_path), "|", features_fp, "|", o.iterations,
+                          "|", weights, "|held-out ", o.test_every, o.normalize_latents ? "|normalised" : "")));
     const StageReport r = run_stage({"train-language (" + method + ")", dir / "stage.json", {dir / "model.json", dir / "city_objects.json"}, fp,
                                      {{"dir", dir.string()}}, [&, method = method, dir = dir] {
                                        LanguageTrainOptions t = o;

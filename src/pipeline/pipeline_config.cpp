@@ -40,6 +40,8 @@ void PipelineConfig::validate() const {
   if (city.empty())
     throw UsageError("run: no city model: give --city, or a scene.json / --config with \"city_model\"");
   if (!rgb_model.empty() && !fs::exists(rgb_model)) fail(rgb_model, "--rgb-model: file not found");
+  if (!autoencoder.empty() && baseline_original)
+    throw UsageError("run: --baseline langsplat-original trains its own autoencoder: not with --autoencoder (tiles)");
   if (!autoencoder.empty() && !stop_after_features && !fs::exists(autoencoder))
     fail(autoencoder, "--autoencoder: file not found");
 }
@@ -66,6 +68,7 @@ nlohmann::json PipelineConfig::to_json() const {
           {"lambda_sam", lambda_sam},
           {"lambda_citygml", lambda_citygml},
           {"baseline", baseline},
+          {"baseline_original", baseline_original},
           {"autoencoder", autoencoder},
           {"stop_after_features", stop_after_features}};
 }

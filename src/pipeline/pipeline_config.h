@@ -35,6 +35,9 @@ struct PipelineConfig {
   int rgb_iterations = 0, language_iterations = 0, autoencoder_epochs = 0;
   double lambda_sam = 1.0, lambda_citygml = 0.5;
   bool baseline = true;                    // also train the LangSplat baseline
+  // Also LangSplat as published (its 3-d autoencoder and training settings, normalised splatting), on the
+  // same features: the paper's "original implementation with its default configuration".
+  bool baseline_original = false;
   // Tiles (docs/scale.md): a shared autoencoder trained on the features of every tile replaces this
   // scene's own, and a run may stop after the features, which the shared autoencoder needs first.
   std::string autoencoder;                 // "" = train one on this scene's SAM features

@@ -132,6 +132,31 @@ TEST(AutoencoderCli, TrainsAndWritesModelAndReport) {
   EXPECT_EQ(entries, 2);
 }
 
+// --preset langsplat: LangSplat's published sizes and settings (autoencoder/train.py), both ends
+// normalised, as the langsplat-original baseline trains it.
+TEST(AutoencoderCli, LangSplatPresetHasLangSplatsSizesAndSettings) {
+  TempDir dir;
+  make_features_dir(dir.path / "features");
+  const fs::path out = dir.path / "ae.safetensors";
+  const std::string base = "autoencoder --features '" + (dir.path / "features").string() + "' --out '" + out.string() + "'";
+  const auto r = run_cli(base + " --preset langsplat --epochs 2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(read_text_file(out.string() + ".json"));
+  EXPECT_EQ(j["config"]["encoder_dims"], (std::vector<int>{256, 128, 64, 32, 3}));
+  EXPECT_EQ(j["config"]["decoder_dims"], (std::vector<int>{16, 32, 64, 128, 256, 256, 512}));
+  EXPECT_EQ(j["batch_size"], 64);
+  EXPECT_DOUBLE_EQ(j["lr"].get<double>(), 1e-4);
+  EXPECT_DOUBLE_EQ(j["lambda_cos"].get<double>(), 0.512);
+  const Autoencoder ae = Autoencoder::load(out.string());
+  const at::Tensor f = test::clustered_unit_vectors(8, 512, 2, 0.3, 5);
+  const at::Tensor z = ae.encode(f), back = ae.decode(z);
+  ASSERT_EQ(z.size(1), 3);
+  EXPECT_TRUE(at::allclose(z.norm(2, {1}), at::ones({8}), 1e-5, 1e-5));
+  EXPECT_TRUE(at::allclose(back.norm(2, {1}), at::ones({8}), 1e-5, 1e-5));
+  EXPECT_EQ(run_cli(base + " --preset langsplat --lr 0.01").status, 2);
+  EXPECT_EQ(run_cli(base + " --preset other").status, 2);
+}
+
 TEST(AutoencoderCli, ClearErrors) {
   TempDir dir;
   const fs::path features = dir.path / "features";

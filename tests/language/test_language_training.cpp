@@ -212,6 +212,28 @@ TEST(LanguageTraining, BaselineIgnoresCityGmlTargets) {
   EXPECT_GT(gml_err, 0.5 * gml_base);
 }
 
+// LangSplat's splatting: the model holds what was splatted, each seen Gaussian's latent divided by its
+// norm (unseen ones stay zero), and the field still learns the targets.
+TEST(LanguageTraining, NormalizedLatentsAreSplattedAndSavedAsUnitRows) {
+  TinyScene t;
+  t.options.normalize_latents = true;
+  train_language(t.scene, t.options);
+  const LanguageModel m = load_language_model(t.options.out_dir);
+  EXPECT_EQ(m.info["normalize_latents"], true);
+  for (int level = 1; level <= 3; ++level) {
+    const at::Tensor norms = m.latents[level - 1].norm(2, {1});
+    int64_t unit = 0;
+    for (int64_t i = 0; i < norms.size(0); ++i) {
+      const double n = norms[i].item<double>();
+      EXPECT_TRUE(std::abs(n - 1) < 1e-5 || n == 0) << "level " << level << " row " << i << " norm " << n;
+      unit += std::abs(n - 1) < 1e-5;
+    }
+    EXPECT_GT(unit, norms.size(0) / 2) << "level " << level;
+    const auto [sam_err, sam_base] = target_error(t, m, level, false);
+    EXPECT_LT(sam_err, sam_base) << "level " << level;  // it learns, if less well than raw latents (docs/language.md)
+  }
+}
+
 TEST(LanguageTraining, ResumeEqualsUninterruptedRun) {
   TinyScene t;
   t.options.iterations = 20;

@@ -290,5 +290,20 @@ TEST(RunCli, ChangedInputsRedoExactlyTheStagesThatDependOnThem) {
   record = read_json(out / "run.json");
   EXPECT_EQ(record["train-language"]["citylangsplat"]["status"], "done");
   EXPECT_EQ(record["train-language"]["langsplat"]["status"], "reused");
+
+  // The published LangSplat beside them: its own 3-d autoencoder and field; the others are reused.
+  ASSERT_EQ(run_cli(cmd + " --lambda-citygml 0.25 --baseline langsplat,langsplat-original").status, 0);
+  record = read_json(out / "run.json");
+  EXPECT_EQ(record["train-language"]["citylangsplat"]["status"], "reused");
+  EXPECT_EQ(record["train-language"]["langsplat"]["status"], "reused");
+  EXPECT_EQ(record["autoencoder"]["status"], "reused");
+  EXPECT_EQ(record["autoencoder-langsplat"]["status"], "done");
+  EXPECT_EQ(record["train-language"]["langsplat-original"]["status"], "done");
+  const auto original = read_json(out / "language" / "langsplat-original" / "model.json");
+  EXPECT_EQ(original["normalize_latents"], true);
+  EXPECT_EQ(original["method"], "langsplat");
+  const auto eval = read_json(out / "eval" / "eval.json");
+  EXPECT_TRUE(eval["results"].contains("langsplat-original")) << eval.dump();
+  EXPECT_NE(run_cli(cmd + " --baseline langsplat,other").status, 0);
   fs::remove_all(scene);
 }
