@@ -44,6 +44,7 @@ int cmd_synth(int argc, char** argv) {
       .option("city-error", "", "give the pipeline a wrong city transform: t=METRES,r=DEGREES,s=FRACTION (seeded "
                                 "direction and axis, about the model's centre); the exact one goes to "
                                 "city/transform_true.json (default: none)")
+      .option("occluders", "0", "extra trees just in front of the facades (hiding parts of them in the images)")
       .option("given-city", "", "give the pipeline this model of the same place and CRS instead (e.g. the "
                                 "building's LoD2 model); images and ground truth show --city (default: --city)")
       .option("given-lod", "0", "LoD to read from --given-city: 1, 2, 3, or 0 / highest")
@@ -70,6 +71,7 @@ int cmd_synth(int argc, char** argv) {
   job.settings.point_noise = args.get_double("point-noise");
   job.settings.gt_density = args.get_double("gt-density");
   job.settings.per_building = args.flag_set("per-building");
+  job.settings.occluders = args.get_int("occluders");
   if (args.has("city-error")) job.city_error = synth::parse_city_error(args.get("city-error"));
   job.given_city_path = args.get("given-city");
   job.given_lod = parse_lod_option(args.get("given-lod"));

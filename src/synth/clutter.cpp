@@ -148,6 +148,35 @@ std::vector<ClutterObject> place_clutter(const Box3d& city, const Box3d& area, c
   return placed;
 }
 
+void place_occluders(const Box3d& city, const Road& road, double terrain_z, uint64_t seed, int count,
+                     std::vector<ClutterObject>& placed) {
+  Rng rng(seed, Stream::Occluders);
+  for (int i = 0; i < count; ++i) {
+    ClutterObject o;
+    o.kind = rng.uniform() < 0.6 ? ClutterKind::Tree : ClutterKind::Conifer;
+    o.radius = footprint_radius(o.kind);
+    for (int attempt = 0; attempt < 200; ++attempt) {
+      // A side of the footprint box (axis, low or high end), a point along it, a distance beyond it.
+      const int axis = rng.below(2), along = 1 - axis;
+      const bool high = rng.uniform() < 0.5;
+      const double gap = o.radius + rng.uniform(0.1, 2.5);
+      o.base[axis] = high ? city.hi[axis] + gap : city.lo[axis] - gap;
+      o.base[along] = rng.uniform(city.lo[along], city.hi[along]);
+      o.base.z = terrain_z;
+      o.heading = rng.uniform(0, 2 * kPi);
+      o.color_key = static_cast<uint32_t>(rng.next());
+      if (on_road(road, o.base, o.radius)) continue;
+      const bool hits_other = std::any_of(placed.begin(), placed.end(), [&](const ClutterObject& q) {
+        const double dx = q.base.x - o.base.x, dy = q.base.y - o.base.y;
+        return std::sqrt(dx * dx + dy * dy) < q.radius + o.radius;
+      });
+      if (hits_other) continue;
+      placed.push_back(o);
+      break;
+    }
+  }
+}
+
 void add_clutter_mesh(SynthGeometry& g, uint32_t index) {
   const ClutterObject& o = g.clutter[index];
   ShapeWriter w(g, index);

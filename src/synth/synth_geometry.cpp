@@ -32,7 +32,7 @@ double SynthGeometry::triangle_area(uint32_t tri) const {
   return 0.5 * norm(cross(b - a, c - a));
 }
 
-SynthGeometry build_synth_geometry(const SemanticMesh& mesh, const Taxonomy& taxonomy, uint64_t seed) {
+SynthGeometry build_synth_geometry(const SemanticMesh& mesh, const Taxonomy& taxonomy, uint64_t seed, int occluders) {
   SynthGeometry g;
   for (const auto& v : mesh.vertices) {
     g.add_vertex({v[0], v[1], v[2]});
@@ -74,6 +74,7 @@ SynthGeometry build_synth_geometry(const SemanticMesh& mesh, const Taxonomy& tax
   g.add_triangle(q0, q2, q3, {SurfaceSource::Terrain, 0, Material::Terrain});
 
   g.clutter = place_clutter(city, g.clutter_area, g.road, g.terrain_z, seed);
+  place_occluders(city, g.road, g.terrain_z, seed, occluders, g.clutter);
   for (uint32_t i = 0; i < g.clutter.size(); ++i) add_clutter_mesh(g, i);
   return g;
 }

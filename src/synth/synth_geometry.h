@@ -61,8 +61,8 @@ struct SynthGeometry {
 constexpr double kTerrainGap = 0.03;
 
 // Builds the scene: city triangles first (geometry index = SemanticMesh triangle index), then
-// terrain and clutter placed deterministically by the seed outside the building footprint.
-// The mesh must have at least one triangle.
-SynthGeometry build_synth_geometry(const SemanticMesh& mesh, const Taxonomy& taxonomy, uint64_t seed);
+// terrain and clutter placed deterministically by the seed outside the building footprint, then
+// `occluders` extra trees in front of its facades (place_occluders). The mesh must have a triangle.
+SynthGeometry build_synth_geometry(const SemanticMesh& mesh, const Taxonomy& taxonomy, uint64_t seed, int occluders = 0);
 
 }  // namespace cls::synth

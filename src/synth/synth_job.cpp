@@ -79,6 +79,7 @@ std::string synth_scene_json(const SynthJob& job, const std::string& city_bytes,
       {"gt_context_density", s.gt_density / 8},
   };
   if (s.per_building) generator["rig"] = "per-building";  // absent: the orbit rig (older scene.json stay equal)
+  if (s.occluders > 0) generator["occluders"] = s.occluders;
   if (job.city_error.any())
     generator["city_error"] = {{"t", job.city_error.metres},
                                {"r", job.city_error.degrees},

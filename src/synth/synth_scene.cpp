@@ -23,6 +23,7 @@ std::string settings_problem(const SynthSettings& s) {
   if (s.samples_per_view < 1) return "sparse samples per view must be positive";
   if (!(s.point_noise >= 0 && s.point_noise < 1)) return "point noise must be in [0, 1)";
   if (!(s.gt_density > 0 && s.gt_density <= 1e5)) return "--gt-density must be in (0, 100000] points per square unit";
+  if (s.occluders < 0 || s.occluders > 100) return cat("--occluders must be in [0, 100], got ", s.occluders);
   return "";
 }
 
@@ -42,7 +43,7 @@ std::vector<Box3d> building_bounds(const SemanticMesh& mesh) {
 
 SynthScene render_synth_scene(const SemanticMesh& mesh, const Taxonomy& taxonomy, const SynthSettings& settings) {
   SynthScene scene;
-  scene.geometry = build_synth_geometry(mesh, taxonomy, settings.seed);
+  scene.geometry = build_synth_geometry(mesh, taxonomy, settings.seed, settings.occluders);
   const CameraRigOptions rig{settings.views, settings.width, settings.height, settings.hfov_deg, settings.seed};
   scene.views = settings.per_building ? make_building_views(building_bounds(mesh), rig)
                                       : make_uav_views(scene.geometry.city_bounds, rig);

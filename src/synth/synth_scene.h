@@ -23,6 +23,7 @@ struct SynthSettings {
   double point_noise = 0.01;   // sparse point noise (scene units)
   double gt_density = 400;     // GT cloud samples per m² on the city model; terrain/clutter get 1/8
   bool per_building = false;   // views around each building in turn (a district) instead of around all
+  int occluders = 0;           // extra trees just in front of the facades (synth --occluders)
 };
 
 // What is wrong with the settings ("" if nothing): sizes, counts and ranges.

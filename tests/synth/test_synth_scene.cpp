@@ -356,3 +356,45 @@ TEST_F(SynthSceneTest, GroundTruthCloudHasClassesAndDensity) {
   EXPECT_GT(non_city, 0u);
   fs::remove_all(dir);
 }
+
+// --occluders: extra trees close in front of the facades, clear of the building (no vertex inside its
+// footprint box), the rest of the clutter unchanged; in the images they hide part of the building.
+TEST_F(SynthSceneTest, OccludersStandInFrontOfTheFacadesAndHideSomeOfThem) {
+  const SynthGeometry plain = build_synth_geometry(*mesh_, *taxonomy_, 7, 0);
+  const SynthGeometry more = build_synth_geometry(*mesh_, *taxonomy_, 7, 6);
+  ASSERT_EQ(more.clutter.size(), plain.clutter.size() + 6);
+  for (size_t i = 0; i < plain.clutter.size(); ++i) {
+    EXPECT_EQ(more.clutter[i].base.x, plain.clutter[i].base.x) << i;
+    EXPECT_EQ(more.clutter[i].kind, plain.clutter[i].kind) << i;
+  }
+  const Box3d& box = more.city_bounds;
+  for (size_t i = plain.clutter.size(); i < more.clutter.size(); ++i) {
+    const ClutterObject& o = more.clutter[i];
+    EXPECT_TRUE(o.kind == ClutterKind::Tree || o.kind == ClutterKind::Conifer);
+    // Distance from the trunk to the footprint box: beyond the canopy, within 2.5 m of it.
+    const double dx = std::max({box.lo.x - o.base.x, 0.0, o.base.x - box.hi.x});
+    const double dy = std::max({box.lo.y - o.base.y, 0.0, o.base.y - box.hi.y});
+    const double d = std::hypot(dx, dy);
+    EXPECT_GT(d, o.radius) << i;
+    EXPECT_LT(d, o.radius + 2.5 * std::sqrt(2.0) + 1e-9) << i;
+  }
+  for (size_t t = 0; t < more.triangles.size(); ++t) {
+    if (more.origins[t].source != SurfaceSource::Clutter) continue;
+    for (const uint32_t vi : more.triangles[t]) {
+      const Vec3f p = more.vertices[vi];
+      EXPECT_FALSE(p.x > box.lo.x && p.x < box.hi.x && p.y > box.lo.y && p.y < box.hi.y);
+    }
+  }
+  SynthSettings s = tiny_settings(7);
+  s.occluders = 6;
+  const SynthScene occluded = render_synth_scene(*mesh_, *taxonomy_, s);
+  size_t before = 0, after = 0;
+  for (size_t v = 0; v < scene_->rendered.size(); ++v) {
+    before += cv::countNonZero(scene_->rendered[v].labels);
+    after += cv::countNonZero(occluded.rendered[v].labels);
+  }
+  EXPECT_LT(after, before);
+  EXPECT_GT(after, before / 4);
+  s.occluders = -1;
+  EXPECT_NE(settings_problem(s), "");
+}
