@@ -13,8 +13,11 @@
 # transform used; per building and the mean over the buildings.
 # What it shows: how much a wrong model costs the CityGML terms, and whether `align` wins it back.
 # What it does not: CLIP/SAM (ground-truth features plus noise), more occluders, real SfM points.
+# Also per building, on the exact scene: the mechanics benchmark (`--models synthetic`, docs/benchmarks.md
+# "Mechanics benchmark") in its own columns.
 #   bash bench/robustness.sh [--work DIR] [--buildings "fzk citygml4j texture4"] [--errors "0 t=0.25 ..."]
 #                            [--variants "exact drop=0.3"] [--rgb-iterations N] [--language-iterations N]
+#                            [--report-only]   (the table, JSON and plot of the runs WORK already holds)
 # A building's photometric model is trained once into WORK/<building>/rgb and reused when present (and
 # `run` reuses every stage whose inputs did not change).
 set -euo pipefail
@@ -23,6 +26,7 @@ repo=$(pwd)
 bin=${CLS_BIN:-$repo/build/citylangsplat}
 work=/tmp/cls-bench-robustness; buildings="fzk citygml4j texture4"
 errors="0 t=0.25 t=0.5,r=0.5 t=1,r=2"; variants="exact drop=0.3"; rgb_iterations=1500; language_iterations=300
+report_only=0
 while [ $# -gt 0 ]; do
   case $1 in
     --work) work=$2; shift 2 ;;
@@ -31,9 +35,10 @@ while [ $# -gt 0 ]; do
     --variants) variants=$2; shift 2 ;;
     --rgb-iterations) rgb_iterations=$2; shift 2 ;;
     --language-iterations) language_iterations=$2; shift 2 ;;
+    --report-only) report_only=1; shift ;;
     *) echo "usage: $0 [--work DIR (/tmp/cls-bench-robustness)] [--buildings \"fzk citygml4j texture4\"]" \
             "[--errors \"0 t=0.25 t=0.5,r=0.5 t=1,r=2\"] [--variants \"exact drop=0.3\" (also lod2)]" \
-            "[--rgb-iterations 1500] [--language-iterations 300]" >&2
+            "[--rgb-iterations 1500] [--language-iterations 300] [--report-only]" >&2
        exit 2 ;;
   esac
 done
@@ -58,14 +63,15 @@ synth() {  # synth OUT VARIANT ERROR
   [ "$3" = 0 ] || args+=(--city-error "$3")
   "$bin" "${args[@]}"
 }
-run() {  # run SCENE OUT [run options]
+run() {  # [MODELS=...] run SCENE OUT [run options]
   local scene=$1 out=$2; shift 2
   echo "  run $(basename "$out") ($(date +%H:%M:%S))" >&2
-  "$bin" -q run "$scene" --models image-segments --rgb-model "$work/$b/rgb/point_cloud.ply" \
+  "$bin" -q run "$scene" --models "${MODELS:-image-segments}" --rgb-model "$work/$b/rgb/point_cloud.ply" \
     --language-iterations "$language_iterations" --out "$out" "$@" > "$out.log" 2>&1 \
     || { echo "robustness.sh: run failed, see $out.log" >&2; tail -5 "$out.log" >&2; exit 1; }
 }
 for b in $buildings; do
+  [ "$report_only" = 0 ] || break
   [ -n "${city[$b]:-}" ] || { echo "robustness.sh: unknown building $b (fzk, citygml4j, texture4)" >&2; exit 2; }
   mkdir -p "$work/$b"
   synth "$work/$b/scene-0" exact 0
@@ -85,6 +91,7 @@ for b in $buildings; do
         # With the baselines (they do not depend on the city model): LangSplat's objective on the shared
         # autoencoder, and LangSplat as published (its 3-d autoencoder, normalised splatting).
         run "$scene" "$work/$b/run-0-off" --align off --baseline langsplat,langsplat-original
+        MODELS=synthetic run "$scene" "$work/$b/run-0-synthetic" --align off  # the mechanics benchmark
       else
         run "$scene" "$work/$b/run-$prefix$e-off" --align off --no-baseline
         [ "$e" = 0 ] || run "$scene" "$work/$b/run-$prefix$e-align" --align auto --no-baseline
@@ -101,71 +108,97 @@ def scores(run, method):
     r = json.load(open(path))["results"].get(method)
     if r is None: return None
     return (100 * r["2d"]["miou"], 100 * r["3d"]["miou"] if "3d" in r else None)
-head = ("building", "model", "error", "baseline 2D", "baseline 3D", "ours 2D", "ours 3D", "ours+align 2D",
-        "ours+align 3D", "labels 2D (given)", "labels 2D (aligned)", "LangSplat original 2D", "LangSplat original 3D")
-rows = []
+fmt = lambda x: "-" if x is None else f"{x:.2f}"
+pair = lambda p: [p and p[0], p and p[1]]
+def with_mean(rows, key_len):
+    # The mean over the buildings, for each key every building has (a building's rows start with its name).
+    keys = []
+    for r in rows:
+        if tuple(r[1:key_len]) not in keys: keys.append(tuple(r[1:key_len]))
+    out = list(rows)
+    for k in keys:
+        mine = [r for r in rows if tuple(r[1:key_len]) == k]
+        if len(buildings) < 2 or len(mine) != len(buildings): continue
+        mean = lambda j: None if any(r[j] is None for r in mine) else sum(r[j] for r in mine) / len(mine)
+        out.append(["mean", *k] + [mean(j) for j in range(key_len, len(rows[0]))])
+    return out
+def table(head, rows, key_len):
+    md = ["| " + " | ".join(head) + " |", "|" + "---|" * key_len + "---:|" * (len(head) - key_len)]
+    return md + ["| " + " | ".join([str(x) for x in r[:key_len]] + [fmt(x) for x in r[key_len:]]) + " |" for r in rows]
+# Per building, what does not depend on the given model: the baselines, the mechanics benchmark, the labels.
+head_a = ("building", "LangSplat 2D", "LangSplat 3D", "LangSplat original 2D", "LangSplat original 3D",
+          "ours 2D", "ours 3D", "labels 2D", "mechanics: ours 2D", "ours 3D", "LangSplat 2D", "LangSplat 3D",
+          "labels 2D")
+rows_a = []
 for b in buildings:
-    base = scores(f"{b}/run-0-off", "langsplat")
-    original = scores(f"{b}/run-0-off", "langsplat-original")
+    if scores(f"{b}/run-0-off", "citylangsplat") is None: continue
+    mech = f"{b}/run-0-synthetic"
+    rows_a.append([b] + pair(scores(f"{b}/run-0-off", "langsplat")) + pair(scores(f"{b}/run-0-off", "langsplat-original"))
+                  + pair(scores(f"{b}/run-0-off", "citylangsplat")) + [pair(scores(f"{b}/run-0-off", "city-model-labels"))[0]]
+                  + pair(scores(mech, "citylangsplat")) + pair(scores(mech, "langsplat"))
+                  + [pair(scores(mech, "city-model-labels"))[0]])
+rows_a = with_mean(rows_a, 1) if rows_a else []
+# Per building, given model and transform error: CityLangSplat without and with align, the label maps.
+head_b = ("building", "model", "error", "ours 2D", "ours 3D", "ours+align 2D", "ours+align 3D", "labels 2D (given)",
+          "labels 2D (aligned)", "ours+align 3D - exact zero-error 3D")
+rows_b = []
+for b in buildings:
+    zero = scores(f"{b}/run-0-off", "citylangsplat")
     for v in variants:
         prefix = "" if v == "exact" else v + "-"
         for e in errors:
             run = "run-0-off" if (v, e) == ("exact", "0") else f"run-{prefix}{e}-off"
             off = scores(f"{b}/{run}", "citylangsplat")
-            if off is None: continue  # not run (a building without a LoD2 model)
+            if off is None: continue  # not run
             al = off if e == "0" else scores(f"{b}/run-{prefix}{e}-align", "citylangsplat")
             lab = scores(f"{b}/{run}", "city-model-labels")
             lab_al = lab if e == "0" else scores(f"{b}/run-{prefix}{e}-align", "city-model-labels")
-            rows.append([b, v, e, base and base[0], base and base[1], off[0], off[1], al and al[0], al and al[1],
-                         lab and lab[0], lab_al and lab_al[0], original and original[0], original and original[1]])
-# The mean over the buildings, for each (model, error) every building ran.
-for v in variants:
-    for e in errors:
-        mine = [r for r in rows if r[1] == v and r[2] == e]
-        if len(buildings) < 2 or len(mine) != len(buildings): continue
-        mean = lambda k: None if any(r[k] is None for r in mine) else sum(r[k] for r in mine) / len(mine)
-        rows.append(["mean", v, e] + [mean(k) for k in range(3, len(head))])
-fmt = lambda x: "-" if x is None else f"{x:.2f}"
-md = ["| " + " | ".join(head) + " |", "|---|---|---|" + "---:|" * (len(head) - 3)]
-md += ["| " + " | ".join(r[:3] + [fmt(x) for x in r[3:]]) + " |" for r in rows]
+            gap = al[1] - zero[1] if al and zero and al[1] is not None and zero[1] is not None else None
+            rows_b.append([b, v, e] + pair(off) + pair(al) + [lab and lab[0], lab_al and lab_al[0], gap])
+rows_b = with_mean(rows_b, 3) if rows_b else []
+md = ["Per building (exact model, zero error):", ""] + table(head_a, rows_a, 1) + ["", "Given model x transform error:", ""] + table(head_b, rows_b, 3)
 open(os.path.join(work, "robustness.md"), "w").write("\n".join(md) + "\n")
-json.dump({"header": head, "rows": rows}, open(os.path.join(work, "robustness.json"), "w"), indent=1)
+json.dump({"per_building": {"header": head_a, "rows": rows_a}, "matrix": {"header": head_b, "rows": rows_b}},
+          open(os.path.join(work, "robustness.json"), "w"), indent=1)
 print("\n".join(md))
-# The plot: 3D mIoU against the error, a panel per building (and the mean), a colour per method, solid for
-# the exact model, dashed for the others (plain SVG).
+# The plot: 3D mIoU against the error, a panel per building (and the mean): CityLangSplat without (red) and
+# with align (blue), solid for the exact model, dashed for the others; the LangSplat baseline in grey.
 W, H, pad = 300, 220, 40
-colours = {"baseline": "#888888", "ours": "#d62728", "ours+align": "#1f77b4"}
+colours = {"LangSplat": "#888888", "ours": "#d62728", "ours+align": "#1f77b4"}
 dashes = ["", "6,4", "2,3", "8,3,2,3"]
-panels = [b for b in buildings + ["mean"] if any(r[0] == b for r in rows)]
+panels = [r[0] for r in rows_a] or sorted({r[0] for r in rows_b})
 svg = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W * len(panels)}" height="{H + 40}" font-family="sans-serif" font-size="11">']
+X = lambda x0, k: x0 + pad + k * (W - 2 * pad) / max(1, len(errors) - 1)
 for i, b in enumerate(panels):
-    mine = [r for r in rows if r[0] == b]
-    vals = [v for r in mine for v in (r[4], r[6], r[8]) if v is not None]
+    mine = [r for r in rows_b if r[0] == b]
+    base = next((r[2] for r in rows_a if r[0] == b), None)
+    vals = [v for r in mine for v in (r[4], r[6]) if v is not None] + ([base] if base is not None else [])
     if not vals: continue
     lo, hi = min(vals) - 2, max(vals) + 2
     x0 = i * W
-    X = lambda k: x0 + pad + k * (W - 2 * pad) / max(1, len(errors) - 1)
     Y = lambda v: 10 + (H - pad) * (hi - v) / (hi - lo)
     svg.append(f'<text x="{x0 + W / 2}" y="{H + 30}" text-anchor="middle">{b}: 3D mIoU vs city-transform error</text>')
     svg.append(f'<line x1="{x0 + pad}" y1="{H - pad + 10}" x2="{x0 + W - pad}" y2="{H - pad + 10}" stroke="black"/>')
     for k, e in enumerate(errors):
-        svg.append(f'<text x="{X(k)}" y="{H - pad + 24}" text-anchor="middle">{e}</text>')
+        svg.append(f'<text x="{X(x0, k)}" y="{H - pad + 24}" text-anchor="middle">{e}</text>')
     for t in (lo + 2, (lo + hi) / 2, hi - 2):
         svg.append(f'<text x="{x0 + pad - 4}" y="{Y(t) + 4}" text-anchor="end">{t:.0f}</text>')
+    if base is not None:
+        svg.append(f'<line x1="{X(x0, 0)}" y1="{Y(base):.1f}" x2="{X(x0, len(errors) - 1)}" y2="{Y(base):.1f}" stroke="{colours["LangSplat"]}" stroke-width="2"/>')
     for j, v in enumerate(variants):
-        for name, col in (("baseline", 4), ("ours", 6), ("ours+align", 8)):
-            if name == "baseline" and v != "exact": continue  # the baseline does not read the city model
-            pts = [(X(errors.index(r[2])), Y(r[col])) for r in mine if r[1] == v and r[col] is not None]
+        for name, col in (("ours", 4), ("ours+align", 6)):
+            pts = [(X(x0, errors.index(r[2])), Y(r[col])) for r in mine if r[1] == v and r[col] is not None]
             if not pts: continue
             dash = f' stroke-dasharray="{dashes[j % len(dashes)]}"' if dashes[j % len(dashes)] else ""
             svg.append('<polyline fill="none" stroke="%s" stroke-width="2"%s points="%s"/>' %
                        (colours[name], dash, " ".join(f"{x:.1f},{y:.1f}" for x, y in pts)))
+            for x, y in pts: svg.append(f'<circle cx="{x:.1f}" cy="{y:.1f}" r="2.5" fill="{colours[name]}"/>')
     if i == 0:
-        legend = ["baseline", "ours", "ours+align"]
-        for k, name in enumerate(legend):
+        for k, name in enumerate(colours):
             svg.append(f'<text x="{x0 + pad + 6}" y="{22 + 13 * k}" fill="{colours[name]}">{name}</text>')
         for j, v in enumerate(variants):
-            svg.append(f'<text x="{x0 + W - pad}" y="{22 + 13 * j}" text-anchor="end">{v}: {"solid" if not dashes[j % len(dashes)] else "dashed " + dashes[j % len(dashes)]}</text>')
+            style = "solid" if not dashes[j % len(dashes)] else "dashed " + dashes[j % len(dashes)]
+            svg.append(f'<text x="{x0 + W - pad}" y="{22 + 13 * j}" text-anchor="end">{v}: {style}</text>')
 svg.append("</svg>")
 open(os.path.join(work, "robustness.svg"), "w").write("\n".join(svg) + "\n")
 print(f"wrote {work}/robustness.md, robustness.json, robustness.svg")

@@ -7,9 +7,14 @@
 namespace cls {
 namespace {
 
-nlohmann::json stats_json(const AlignmentStats& s) {
-  return {{"fraction_within", s.fraction_within}, {"median", s.median}, {"mean", s.mean}};
+nlohmann::json stats_json(const AlignmentStats& s, const AlignmentStats& fine) {
+  return {{"fraction_within", s.fraction_within}, {"median", s.median}, {"mean", s.mean},
+          {"fraction_within_finest", fine.fraction_within}};
 }
+
+// How many of the points within the check threshold a refinement may lose and still apply (a share of
+// all points): rounding of points near the threshold, not a model pulled off its points.
+constexpr double kAlignCoarseLoss = 0.01;
 
 }  // namespace
 
@@ -39,19 +44,24 @@ CityAlignment align_city_model(const Scene& scene, SceneCityModel& city, const s
   const TransformDifference change = transform_difference(r.refined, city.transform, city.mesh);
   a.record["change"] = {{"centre", change.centre}, {"max_displacement", change.max_displacement},
                         {"rotation_deg", change.rotation_deg}, {"scale", change.scale}};
-  a.record["before"] = stats_json(r.before);
-  a.record["after"] = stats_json(r.after);
+  a.record["before"] = stats_json(r.before, r.fine_before);
+  a.record["after"] = stats_json(r.after, r.fine_after);
   a.record["threshold"] = threshold;
+  a.record["finest"] = IcpOptions{}.finest;
   log_info(cat("run: align: the refinement moves the city model by up to ", change.max_displacement, " m (",
                change.rotation_deg, " deg, scale ", 100 * change.scale, "%); ", 100 * r.before.fraction_within,
-               "% -> ", 100 * r.after.fraction_within, "% of sparse points within ", threshold, " m"));
+               "% -> ", 100 * r.after.fraction_within, "% of sparse points within ", threshold, " m, ",
+               100 * r.fine_before.fraction_within, "% -> ", 100 * r.fine_after.fraction_within, "% within ",
+               IcpOptions{}.finest, " m"));
   if (mode == "auto") {
     std::string keep;
     if (change.max_displacement <= kAlignApplyMetres)
       keep = cat("the refinement moves the model by at most ", kAlignApplyMetres, " m");
-    else if (!(r.after.fraction_within > r.before.fraction_within ||
-               (r.after.fraction_within == r.before.fraction_within && r.after.median < r.before.median)))
-      keep = "the refinement brings neither more sparse points near the model nor them closer";
+    else if (!(r.fine_after.fraction_within > r.fine_before.fraction_within))
+      keep = cat("the refinement brings no more sparse points within ", IcpOptions{}.finest, " m of the model");
+    else if (r.after.fraction_within < r.before.fraction_within - kAlignCoarseLoss)
+      keep = cat("the refinement takes more than ", 100 * kAlignCoarseLoss, "% of the sparse points beyond ",
+                 threshold, " m of the model");
     else if (r.icp.conditioning < kIcpWeakConditioning)
       keep = cat("the points leave part of the motion unconstrained (conditioning ", r.icp.conditioning, ")");
     if (!keep.empty()) {

@@ -12,8 +12,8 @@ namespace cls {
 
 // auto applies the refinement only when it moves some vertex of the model by more than this (metres of
 // the city model): a transform that is right to a few centimetres keeps its label maps byte for byte;
-// and only when it brings more sparse points within the check's distance (or, as many, closer: a lower
-// median) and the points constrain the whole motion.
+// and only when it brings more sparse points within the finest ICP gate (onto the surfaces), loses at
+// most 1% of them from within the check's distance, and the points constrain the whole motion.
 constexpr double kAlignApplyMetres = 0.05;
 
 struct CityAlignment {

@@ -28,19 +28,20 @@ namespace {
 
 // Distances of `points` moved by `motion` to the mesh, in city-model units: the transform scales model
 // metres into the scene frame.
-AlignmentStats stats_after(const ClosestPointQuery& mesh, std::vector<Vec3d> points, const CityTransform& motion,
-                           double scene_scale, double threshold) {
+std::vector<double> distances_after(const ClosestPointQuery& mesh, std::vector<Vec3d> points,
+                                    const CityTransform& motion, double scene_scale) {
   for (auto& p : points) p = motion.apply(p);
   std::vector<double> distances = mesh.distances(points);
   for (double& d : distances) d /= scene_scale;
-  return alignment_stats(std::move(distances), threshold);
+  return distances;
 }
 
 }  // namespace
 
 AlignmentStats check_alignment(const Scene& scene, const SceneCityModel& city, double threshold) {
   const ClosestPointQuery mesh(city.vertices, city.mesh.triangles);
-  return stats_after(mesh, sparse_points(scene), CityTransform::identity(), city.transform.scale(), threshold);
+  return alignment_stats(distances_after(mesh, sparse_points(scene), CityTransform::identity(), city.transform.scale()),
+                         threshold);
 }
 
 std::vector<Vec3d> sparse_points(const Scene& scene) {
@@ -61,9 +62,13 @@ AlignmentRefinement refine_alignment(const std::vector<Vec3d>& points, const Sce
   // that motion corrects the transform: x_scene = motion^-1 * M * x_city.
   const ClosestPointQuery mesh(city.vertices, city.mesh.triangles);
   AlignmentRefinement r;
-  r.before = stats_after(mesh, points, CityTransform::identity(), scale, threshold);
+  const std::vector<double> before = distances_after(mesh, points, CityTransform::identity(), scale);
+  r.before = alignment_stats(before, threshold);
+  r.fine_before = alignment_stats(before, options.finest);
   r.icp = point_to_plane_icp(mesh, points, scene_units);
-  r.after = stats_after(mesh, points, r.icp.motion, scale, threshold);
+  const std::vector<double> after = distances_after(mesh, points, r.icp.motion, scale);
+  r.after = alignment_stats(after, threshold);
+  r.fine_after = alignment_stats(after, options.finest);
   r.refined = inverse(r.icp.motion) * city.transform;
   return r;
 }

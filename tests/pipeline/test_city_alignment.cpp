@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include "core/atomic_file.h"
@@ -56,6 +58,34 @@ TEST(CityAlignment, AutoAppliesAHelpfulRefinementAndKeepsAnExactTransform) {
   SceneCityModel again = f.city;
   EXPECT_FALSE(align_city_model(f.points({0.4, -0.3, 0.2}), again, "off", 0.5, f.out).applied);
   EXPECT_FALSE(fs::exists(applied.transform));
+}
+
+// An error below the check's distance, with most points off the model (terrain and clutter the model
+// lacks, 2-4 m below it, which the correction moves it away from): no point crosses 0.5 m and the median
+// grows (the first rule kept the given transform here), but the refinement puts the model's points onto
+// its surfaces, and auto applies it.
+TEST(CityAlignment, AutoAppliesASmallCorrectionAmongPointsOffTheModel) {
+  Fixture f;
+  Scene scene = f.points({0.15, -0.15, 0.1});
+  const size_t on_model = scene.points.size();
+  Vec3d lo{INFINITY, INFINITY, INFINITY}, hi = -1.0 * lo;
+  for (const auto& v : f.city.vertices)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], double(v[k])), hi[k] = std::max(hi[k], double(v[k]));
+  for (size_t i = 0; i < 2 * on_model; ++i) {  // a sheet 2-4 m below the ground surface
+    SparsePoint p;
+    const double u = (i % 97) / 97.0, w = (i % 89) / 89.0;
+    p.xyz = {lo.x + u * (hi.x - lo.x), lo.y + w * (hi.y - lo.y), lo.z - 2 - 2 * u};
+    scene.points.push_back(p);
+  }
+  SceneCityModel moved = f.city;
+  const CityAlignment a = align_city_model(scene, moved, "auto", 0.5, f.out);
+  ASSERT_TRUE(a.applied) << a.record.dump();
+  EXPECT_GT(a.record["after"]["fraction_within_finest"].get<double>(),
+            a.record["before"]["fraction_within_finest"].get<double>() + 0.2);
+  const Vec3d t = moved.transform.translation() - f.city.transform.translation();
+  EXPECT_NEAR(t.x, 0.15, 0.01);
+  EXPECT_NEAR(t.y, -0.15, 0.01);
+  EXPECT_NEAR(t.z, 0.1, 0.01);
 }
 
 TEST(CityAlignment, NoPointsIsAWarningForAutoAndAnErrorForRefine) {
