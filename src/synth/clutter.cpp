@@ -99,6 +99,14 @@ double footprint_radius(ClutterKind kind) {
   return 1;
 }
 
+// Whether o's footprint circle overlaps one of the objects already placed.
+bool overlaps(const std::vector<ClutterObject>& placed, const ClutterObject& o) {
+  return std::any_of(placed.begin(), placed.end(), [&](const ClutterObject& q) {
+    const double dx = q.base.x - o.base.x, dy = q.base.y - o.base.y;
+    return std::sqrt(dx * dx + dy * dy) < q.radius + o.radius;
+  });
+}
+
 bool on_road(const Road& road, Vec3d p, double radius) {
   return std::abs(p[road.axis] - road.offset) < road.half_width + radius;
 }
@@ -136,11 +144,7 @@ std::vector<ClutterObject> place_clutter(const Box3d& city, const Box3d& area, c
       const bool hits_building = o.base.x > city.lo.x - kMargin - radius && o.base.x < city.hi.x + kMargin + radius &&
                                  o.base.y > city.lo.y - kMargin - radius && o.base.y < city.hi.y + kMargin + radius;
       if (hits_building) continue;
-      const bool hits_other = std::any_of(placed.begin(), placed.end(), [&](const ClutterObject& q) {
-        const double dx = q.base.x - o.base.x, dy = q.base.y - o.base.y;
-        return std::sqrt(dx * dx + dy * dy) < q.radius + o.radius;
-      });
-      if (hits_other) continue;
+      if (overlaps(placed, o)) continue;
       placed.push_back(o);
       break;
     }
@@ -166,11 +170,7 @@ void place_occluders(const Box3d& city, const Road& road, double terrain_z, uint
       o.heading = rng.uniform(0, 2 * kPi);
       o.color_key = static_cast<uint32_t>(rng.next());
       if (on_road(road, o.base, o.radius)) continue;
-      const bool hits_other = std::any_of(placed.begin(), placed.end(), [&](const ClutterObject& q) {
-        const double dx = q.base.x - o.base.x, dy = q.base.y - o.base.y;
-        return std::sqrt(dx * dx + dy * dy) < q.radius + o.radius;
-      });
-      if (hits_other) continue;
+      if (overlaps(placed, o)) continue;
       placed.push_back(o);
       break;
     }
