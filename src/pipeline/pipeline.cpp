@@ -195,7 +195,7 @@ PipelineResult run_pipeline(const PipelineConfig& c) {
   else
     autoencoder_stage("autoencoder", ae_path, AutoencoderConfig{}, AutoencoderTrainOptions{}, "");
   const fs::path original_ae_path = out / "autoencoder-langsplat.safetensors";
-  if (c.baseline_original && !stopped_by_signal("autoencoder"))
+  if (c.baseline_original && !interrupt_requested())
     autoencoder_stage("autoencoder-langsplat", original_ae_path, langsplat_autoencoder_config(),
                       langsplat_autoencoder_training(), "|langsplat-original");
   if (stopped_by_signal("autoencoder")) return finish();
