@@ -6,8 +6,12 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdlib>
 #include <memory>
 #include <numeric>
+#include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "scene/camera.h"
 #include "splat/blend_pixel.h"
@@ -102,17 +106,57 @@ void gather_tile(const SplatForwardState<T>& st, const T* opacities, int tile, s
   }
 }
 
+// What every tile of a forward pass reads and writes.
+template <class T>
+struct ForwardTileJob {
+  const SplatCamera<T>& cam;
+  const SplatForwardState<T>& st;
+  const T* opacities;
+  const T* values;
+  int C;
+  const T* bg;
+  T *image, *alpha_out, *depth_out, *final_T;
+  int32_t* n_contrib;
+};
+
+// What every tile of a backward pass reads and writes.
+template <class T>
+struct BackwardTileJob {
+  const SplatCamera<T>& cam;
+  const SplatForwardState<T>& st;
+  const T* opacities;
+  const T* values;
+  int C;
+  const T* bg;
+  const T *dL_dimage, *dL_dalpha, *dL_ddepth;
+  T *geom_grad, *value_grad;
+  StripedLocks& locks;
+};
+
+// A thread's buffers, reused from tile to tile.
+template <class T>
+struct TileScratch {
+  std::vector<T> acc, buf;
+  std::vector<uint8_t> touched;
+  std::vector<TileGaussian<T>> list;
+  std::vector<int32_t> sub;
+};
+
 // Front-to-back blending of one tile (renderCUDA). kC > 0 fixes the channel count at compile time
 // (RGB), kC = 0 loops over C at run time (the inner loop over contiguous channels vectorises).
+// Always inlined: the kernel builds below compile it once per instruction set.
 template <class T, int kC>
-void forward_tile(const SplatCamera<T>& cam, const SplatForwardState<T>& st, const T* opacities,
-                  const T* values, int C, const T* bg, int tile, T* image, T* alpha_out, T* depth_out, T* final_T, int32_t* n_contrib,
-                  std::vector<T>& acc, std::vector<TileGaussian<T>>& list, std::vector<int32_t>& sub) {
-  const int nc = kC > 0 ? kC : C;
+[[gnu::always_inline]] inline void forward_tile(const ForwardTileJob<T>& j, int tile, TileScratch<T>& s) {
+  const SplatCamera<T>& cam = j.cam;
+  const T* const values = j.values;
+  std::vector<T>& acc = s.acc;
+  std::vector<TileGaussian<T>>& list = s.list;
+  std::vector<int32_t>& sub = s.sub;
+  const int nc = kC > 0 ? kC : j.C;
   const int tx = tile % cam.tiles_x(), ty = tile / cam.tiles_x();
   const int x0 = tx * kTileSize, y0 = ty * kTileSize;
   const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
-  gather_tile(st, opacities, tile, list);
+  gather_tile(j.st, j.opacities, tile, list);
   // fixed-size channels live on the stack (registers for RGB)
   T acc_fixed[kC > 0 ? kC : 1];
   if (kC == 0) acc.resize(nc);
@@ -146,12 +190,12 @@ void forward_tile(const SplatCamera<T>& cam, const SplatForwardState<T>& st, con
         last = k + 1;
       }
       const size_t pix = static_cast<size_t>(py) * cam.width + px;
-      T* out = image + pix * nc;
-      for (int c = 0; c < nc; ++c) out[c] = acc_p[c] + (bg ? Tr * bg[c] : T(0));
-      alpha_out[pix] = T(1) - Tr;
-      depth_out[pix] = d;
-      final_T[pix] = Tr;
-      n_contrib[pix] = last;  // entries of the sub-tile list walked
+      T* out = j.image + pix * nc;
+      for (int c = 0; c < nc; ++c) out[c] = acc_p[c] + (j.bg ? Tr * j.bg[c] : T(0));
+      j.alpha_out[pix] = T(1) - Tr;
+      j.depth_out[pix] = d;
+      j.final_T[pix] = Tr;
+      j.n_contrib[pix] = last;  // entries of the sub-tile list walked
     }
   }
   }
@@ -162,18 +206,22 @@ void forward_tile(const SplatCamera<T>& cam, const SplatForwardState<T>& st, con
 // renderCUDA backward), summing per-entry gradients in `buf` (stride 9 + C: mean2d 2, |mean2d| 2,
 // conic 3, opacity, depth, values C), then adds them to the per-Gaussian sums under striped locks.
 template <class T, int kC>
-void backward_tile(const SplatCamera<T>& cam, const SplatForwardState<T>& st, const T* opacities,
-                   const T* values, int C, const T* bg, int tile, const T* dL_dimage, const T* dL_dalpha,
-                   const T* dL_ddepth, std::vector<T>& buf,
-                   std::vector<uint8_t>& touched, std::vector<TileGaussian<T>>& list, std::vector<int32_t>& sub,
-                   T* geom_grad, T* value_grad,
-                   StripedLocks& locks) {
-  const int nc = kC > 0 ? kC : C;
+[[gnu::always_inline]] inline void backward_tile(const BackwardTileJob<T>& j, int tile, TileScratch<T>& s) {
+  const SplatCamera<T>& cam = j.cam;
+  const SplatForwardState<T>& st = j.st;
+  const T* const values = j.values;
+  const T *const dL_dimage = j.dL_dimage, *const dL_dalpha = j.dL_dalpha, *const dL_ddepth = j.dL_ddepth;
+  const T* const bg = j.bg;
+  std::vector<T>& buf = s.buf;
+  std::vector<uint8_t>& touched = s.touched;
+  std::vector<TileGaussian<T>>& list = s.list;
+  std::vector<int32_t>& sub = s.sub;
+  const int nc = kC > 0 ? kC : j.C;
   const int S = 9 + nc;
   const int tx = tile % cam.tiles_x(), ty = tile / cam.tiles_x();
   const int x0 = tx * kTileSize, y0 = ty * kTileSize;
   const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
-  gather_tile(st, opacities, tile, list);
+  gather_tile(st, j.opacities, tile, list);
   const int L = static_cast<int>(list.size());
   if (L == 0) return;
   buf.assign(static_cast<size_t>(L) * S, T(0));
@@ -240,17 +288,107 @@ void backward_tile(const SplatCamera<T>& cam, const SplatForwardState<T>& st, co
     if (!touched[k]) continue;
     const int id = list[k].id;
     const T* e = buf.data() + static_cast<size_t>(k) * S;
-    locks.lock(id);
-    T* gg = geom_grad + static_cast<size_t>(id) * 9;
+    j.locks.lock(id);
+    T* gg = j.geom_grad + static_cast<size_t>(id) * 9;
     for (int c = 0; c < 9; ++c) gg[c] += e[c];
-    T* vg = value_grad + static_cast<size_t>(id) * nc;
+    T* vg = j.value_grad + static_cast<size_t>(id) * nc;
 #pragma omp simd
     for (int c = 0; c < nc; ++c) vg[c] += e[9 + c];
-    locks.unlock(id);
+    j.locks.unlock(id);
   }
 }
 
+// The tile kernels per instruction set. The per-channel loops (128 latent channels in language training
+// and queries) run 4 wide in the x86-64 baseline (SSE2), 8 with AVX2 and 16 with AVX-512; the CPU's best
+// build is picked at run time (cpu_kernels()). Only these wrappers carry a target: what they call and do
+// not inline stays baseline code, so no AVX instruction runs on a CPU without it.
+template <class T>
+using ForwardTileFn = void (*)(const ForwardTileJob<T>&, int, TileScratch<T>&);
+template <class T>
+using BackwardTileFn = void (*)(const BackwardTileJob<T>&, int, TileScratch<T>&);
+
+#define CLS_TILE_KERNELS(NAME, ATTRIBUTE)                                                                \
+  template <class T, int kC>                                                                             \
+  ATTRIBUTE void forward_tile_##NAME(const ForwardTileJob<T>& j, int tile, TileScratch<T>& s) {          \
+    forward_tile<T, kC>(j, tile, s);                                                                     \
+  }                                                                                                      \
+  template <class T, int kC>                                                                             \
+  ATTRIBUTE void backward_tile_##NAME(const BackwardTileJob<T>& j, int tile, TileScratch<T>& s) {        \
+    backward_tile<T, kC>(j, tile, s);                                                                    \
+  }
+CLS_TILE_KERNELS(baseline, )
+#if CLS_X86_KERNELS
+CLS_TILE_KERNELS(v3, [[gnu::target("arch=x86-64-v3")]])
+CLS_TILE_KERNELS(v4, [[gnu::target("arch=x86-64-v4,prefer-vector-width=512")]])
+#endif
+#undef CLS_TILE_KERNELS
+
+template <class T, int kC>
+std::pair<ForwardTileFn<T>, BackwardTileFn<T>> tile_kernels_for(CpuKernels k) {
+#if CLS_X86_KERNELS
+  if (k == CpuKernels::X86_64_V4) return {&forward_tile_v4<T, kC>, &backward_tile_v4<T, kC>};
+  if (k == CpuKernels::X86_64_V3) return {&forward_tile_v3<T, kC>, &backward_tile_v3<T, kC>};
+#endif
+  (void)k;
+  return {&forward_tile_baseline<T, kC>, &backward_tile_baseline<T, kC>};
+}
+
+// RGB and one channel have their own fixed-size builds; other counts loop at run time.
+template <class T>
+std::pair<ForwardTileFn<T>, BackwardTileFn<T>> tile_kernels(int C) {
+  const CpuKernels k = cpu_kernels();
+  return C == 1 ? tile_kernels_for<T, 1>(k) : C == 3 ? tile_kernels_for<T, 3>(k) : tile_kernels_for<T, 0>(k);
+}
+
+std::atomic<int>& kernels_override() {
+  static std::atomic<int> value{-1};
+  return value;
+}
+
 }  // namespace
+
+CpuKernels best_cpu_kernels() {
+#if CLS_X86_KERNELS
+  if (__builtin_cpu_supports("x86-64-v4")) return CpuKernels::X86_64_V4;
+  if (__builtin_cpu_supports("x86-64-v3")) return CpuKernels::X86_64_V3;
+#endif
+  return CpuKernels::Baseline;
+}
+
+CpuKernels cpu_kernels() {
+  const int forced = kernels_override().load(std::memory_order_relaxed);
+  if (forced >= 0) return static_cast<CpuKernels>(forced);
+  static const CpuKernels chosen = [] {
+    const CpuKernels best = best_cpu_kernels();
+    const char* env = std::getenv("CITYLANGSPLAT_CPU_KERNELS");
+    if (!env || !*env) return best;
+    for (CpuKernels k : {CpuKernels::Baseline, CpuKernels::X86_64_V3, CpuKernels::X86_64_V4})
+      if (std::string(env) == cpu_kernels_name(k)) return k <= best ? k : best;
+    return best;
+  }();
+  return chosen;
+}
+
+void set_cpu_kernels(CpuKernels k) {
+  if (k > best_cpu_kernels()) throw std::invalid_argument(std::string("this CPU cannot run the ") + cpu_kernels_name(k) + " kernels");
+  kernels_override().store(static_cast<int>(k), std::memory_order_relaxed);
+}
+
+std::vector<CpuKernels> available_cpu_kernels() {
+  std::vector<CpuKernels> out;
+  for (CpuKernels k : {CpuKernels::Baseline, CpuKernels::X86_64_V3, CpuKernels::X86_64_V4})
+    if (k <= best_cpu_kernels()) out.push_back(k);
+  return out;
+}
+
+const char* cpu_kernels_name(CpuKernels k) {
+  switch (k) {
+    case CpuKernels::Baseline: return "baseline";
+    case CpuKernels::X86_64_V3: return "x86-64-v3";
+    case CpuKernels::X86_64_V4: return "x86-64-v4";
+  }
+  return "?";
+}
 
 template <class T>
 SplatCamera<T> make_splat_camera(const PinholeCamera& cam, const Pose& pose) {
@@ -325,19 +463,14 @@ void rasterize_forward_cpu(const SplatCamera<T>& cam, const SplatInputs<T>& in, 
   st.final_T.resize(n_pix);
   st.n_contrib.resize(n_pix);
   const T* values = sh ? st.colors.data() : in.features;
+  const ForwardTileJob<T> job{cam, st, in.opacities, values, C, in.background, image, alpha, depth,
+                              st.final_T.data(), st.n_contrib.data()};
+  const ForwardTileFn<T> forward_tile_fn = tile_kernels<T>(C).first;
 #pragma omp parallel
   {
-    std::vector<T> acc;
-    std::vector<TileGaussian<T>> list;
-    std::vector<int32_t> sub;
+    TileScratch<T> scratch;
 #pragma omp for schedule(dynamic, 1)
-    for (int t = 0; t < n_tiles; ++t) {
-      switch (C) {
-        case 1: forward_tile<T, 1>(cam, st, in.opacities, values, C, in.background, t, image, alpha, depth, st.final_T.data(), st.n_contrib.data(), acc, list, sub); break;
-        case 3: forward_tile<T, 3>(cam, st, in.opacities, values, C, in.background, t, image, alpha, depth, st.final_T.data(), st.n_contrib.data(), acc, list, sub); break;
-        default: forward_tile<T, 0>(cam, st, in.opacities, values, C, in.background, t, image, alpha, depth, st.final_T.data(), st.n_contrib.data(), acc, list, sub); break;
-      }
-    }
+    for (int t = 0; t < n_tiles; ++t) forward_tile_fn(job, t, scratch);
   }
 }
 
@@ -366,20 +499,14 @@ void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>
   }
   const T* values = sh ? st.colors.data() : in.features;
   StripedLocks locks;
+  const BackwardTileJob<T> job{cam, st, in.opacities, values, C, in.background, dL_dimage, dL_dalpha, dL_ddepth,
+                               geom.data(), value_grad, locks};
+  const BackwardTileFn<T> backward_tile_fn = tile_kernels<T>(C).second;
 #pragma omp parallel
   {
-    std::vector<T> buf;
-    std::vector<uint8_t> touched;
-    std::vector<TileGaussian<T>> list;
-    std::vector<int32_t> sub;
+    TileScratch<T> scratch;
 #pragma omp for schedule(dynamic, 1)
-    for (int t = 0; t < n_tiles; ++t) {
-      switch (C) {
-        case 1: backward_tile<T, 1>(cam, st, in.opacities, values, C, in.background, t, dL_dimage, dL_dalpha, dL_ddepth, buf, touched, list, sub, geom.data(), value_grad, locks); break;
-        case 3: backward_tile<T, 3>(cam, st, in.opacities, values, C, in.background, t, dL_dimage, dL_dalpha, dL_ddepth, buf, touched, list, sub, geom.data(), value_grad, locks); break;
-        default: backward_tile<T, 0>(cam, st, in.opacities, values, C, in.background, t, dL_dimage, dL_dalpha, dL_ddepth, buf, touched, list, sub, geom.data(), value_grad, locks); break;
-      }
-    }
+    for (int t = 0; t < n_tiles; ++t) backward_tile_fn(job, t, scratch);
   }
   // per Gaussian: screen-space gradients -> 3D parameters (preprocess backward)
   const Vec3<T> campos = cam.center();

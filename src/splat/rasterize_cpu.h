@@ -69,6 +69,23 @@ template <class T>
 void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>& state, const T* dL_dimage,
                             const T* dL_dalpha, const T* dL_ddepth, SplatGradients<T>& grads);
 
+// Instruction-set builds of the per-tile blending (forward and backward): the x86-64 baseline (SSE2),
+// x86-64-v3 (AVX2, FMA) and x86-64-v4 (AVX-512). The best one the CPU runs is used, unless the environment
+// variable CITYLANGSPLAT_CPU_KERNELS names a lower one (baseline, x86-64-v3); results differ between builds
+// by float rounding only (FMA contraction), each within the reference renderer's tolerances (tests).
+#if defined(__x86_64__) && defined(__GNUC__)
+#define CLS_X86_KERNELS 1
+#else
+#define CLS_X86_KERNELS 0
+#endif
+enum class CpuKernels { Baseline = 0, X86_64_V3 = 1, X86_64_V4 = 2 };
+CpuKernels best_cpu_kernels();
+CpuKernels cpu_kernels();                        // the build in use
+std::vector<CpuKernels> available_cpu_kernels();  // every build this CPU runs, baseline first
+// Uses `k` from now on in this process (tests, benchmarks); std::invalid_argument above best_cpu_kernels().
+void set_cpu_kernels(CpuKernels k);
+const char* cpu_kernels_name(CpuKernels k);
+
 // The SplatCamera of a pinhole camera and world-to-camera pose (src/scene/camera.h).
 struct PinholeCamera;
 struct Pose;

@@ -1,5 +1,7 @@
 #pragma once
 // Small random Gaussian scenes for the rasterizer tests (double storage; tests cast as needed).
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <random>
 #include <vector>
@@ -7,6 +9,19 @@
 #include "splat/rasterize_cpu.h"
 
 namespace cls::test {
+
+// Runs the CPU rasterizer with one instruction-set build of its tile kernels until the end of the scope
+// (named in test failures), then goes back to the best one.
+class ScopedCpuKernels {
+ public:
+  explicit ScopedCpuKernels(CpuKernels k) : trace_(__FILE__, __LINE__, cpu_kernels_name(k)) { set_cpu_kernels(k); }
+  ~ScopedCpuKernels() { set_cpu_kernels(best_cpu_kernels()); }
+  ScopedCpuKernels(const ScopedCpuKernels&) = delete;
+  ScopedCpuKernels& operator=(const ScopedCpuKernels&) = delete;
+
+ private:
+  ::testing::ScopedTrace trace_;
+};
 
 struct RandomScene {
   SplatCamera<double> cam;

@@ -106,7 +106,9 @@ TEST(SplatAutograd, FeatureGradientsMatchFiniteDifferences) { check_against_fd(f
 
 // The float32 fast path gives the float64 gradients up to float rounding.
 TEST(SplatAutograd, Float32MatchesFloat64) {
+  for (CpuKernels k : available_cpu_kernels())
   for (bool use_sh : {true, false}) {
+    test::ScopedCpuKernels use(k);
     TorchScene td = torch_scene(use_sh, 32, 23, torch::kFloat64);
     TorchScene tf = torch_scene(use_sh, 32, 23, torch::kFloat32);
     torch::Tensor g2d_d, abs_d, g2d_f, abs_f;
