@@ -67,7 +67,14 @@ for _ in $(seq 600); do
   sleep 1
 done
 [ -n "$victim" ] || { echo "FAIL: array task ${train}_1 never ran"; squeue -t all; exit 1; }
-sleep 3
+# Cancel it inside its photometric training (which checkpoints on SIGTERM): RUNNING in squeue can come well
+# before the pipeline gets there on a loaded machine.
+for _ in $(seq 600); do
+  grep -q "^train-rgb: " "$work/tiles/logs/train_1.log" 2>/dev/null && break
+  sleep 1
+done
+grep -q "^train-rgb: " "$work/tiles/logs/train_1.log" || { echo "FAIL: task 1 never reached train-rgb"; exit 1; }
+sleep 1
 scancel "$victim"
 echo "cancelled $victim"
 while [ -n "$(squeue -h -o %i)" ]; do sleep 2; done
