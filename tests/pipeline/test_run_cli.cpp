@@ -262,7 +262,7 @@ TEST(RunCli, ChangedInputsRedoExactlyTheStagesThatDependOnThem) {
     EXPECT_EQ(record[stage]["status"], "reused") << stage;
 
   // One pixel of one image: at the centre, where the building is (a pixel no Gaussian reaches, as in a
-  // corner of sky, changes no gradient: the photometric model may come out the same bytes).
+  // corner of sky, may leave every trained latent unchanged).
   const fs::path image = scene / "images" / "0001.png";
   cv::Mat pixels = cv::imread(image.string(), cv::IMREAD_COLOR);
   ASSERT_FALSE(pixels.empty());
