@@ -106,28 +106,27 @@ void gather_tile(const SplatForwardState<T>& st, const T* opacities, int tile, s
   }
 }
 
-// What every tile of a forward pass reads and writes.
+// What every tile of a pass reads.
 template <class T>
-struct ForwardTileJob {
+struct TileInputs {
   const SplatCamera<T>& cam;
   const SplatForwardState<T>& st;
   const T* opacities;
   const T* values;
   int C;
   const T* bg;
+};
+
+// What every tile of a forward pass writes.
+template <class T>
+struct ForwardTileJob : TileInputs<T> {
   T *image, *alpha_out, *depth_out, *final_T;
   int32_t* n_contrib;
 };
 
-// What every tile of a backward pass reads and writes.
+// What every tile of a backward pass reads besides, and writes.
 template <class T>
-struct BackwardTileJob {
-  const SplatCamera<T>& cam;
-  const SplatForwardState<T>& st;
-  const T* opacities;
-  const T* values;
-  int C;
-  const T* bg;
+struct BackwardTileJob : TileInputs<T> {
   const T *dL_dimage, *dL_dalpha, *dL_ddepth;
   T *geom_grad, *value_grad;
   StripedLocks& locks;
@@ -463,7 +462,7 @@ void rasterize_forward_cpu(const SplatCamera<T>& cam, const SplatInputs<T>& in, 
   st.final_T.resize(n_pix);
   st.n_contrib.resize(n_pix);
   const T* values = sh ? st.colors.data() : in.features;
-  const ForwardTileJob<T> job{cam, st, in.opacities, values, C, in.background, image, alpha, depth,
+  const ForwardTileJob<T> job{{cam, st, in.opacities, values, C, in.background}, image, alpha, depth,
                               st.final_T.data(), st.n_contrib.data()};
   const ForwardTileFn<T> forward_tile_fn = tile_kernels<T>(C).first;
 #pragma omp parallel
@@ -499,7 +498,7 @@ void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>
   }
   const T* values = sh ? st.colors.data() : in.features;
   StripedLocks locks;
-  const BackwardTileJob<T> job{cam, st, in.opacities, values, C, in.background, dL_dimage, dL_dalpha, dL_ddepth,
+  const BackwardTileJob<T> job{{cam, st, in.opacities, values, C, in.background}, dL_dimage, dL_dalpha, dL_ddepth,
                                geom.data(), value_grad, locks};
   const BackwardTileFn<T> backward_tile_fn = tile_kernels<T>(C).second;
 #pragma omp parallel
