@@ -14,6 +14,7 @@
 #include <unordered_set>
 
 #include "citymodel/gml_coordinates.h"
+#include "citymodel/gml_vocabulary.h"
 #include "citymodel/mesh_builder.h"
 #include "core/error.h"
 #include "core/log.h"
@@ -26,56 +27,6 @@ namespace {
 // Deeper element nesting or xlink chains are no real city model; refusing them keeps the
 // recursive walks below far from the stack limit on hostile input.
 constexpr int kMaxDepth = 256;
-
-std::string_view local_name(const char* qualified) {
-  const char* colon = std::strrchr(qualified, ':');
-  return colon ? colon + 1 : qualified;
-}
-std::string_view local_name(pugi::xml_node n) { return local_name(n.name()); }
-
-// An attribute by local name with any namespace prefix ("gml:id", "xlink:href").
-pugi::xml_attribute prefixed_attribute(pugi::xml_node n, std::string_view local) {
-  for (pugi::xml_attribute a : n.attributes()) {
-    const char* colon = std::strchr(a.name(), ':');
-    if (colon && local == colon + 1 && std::strncmp(a.name(), "xmlns:", 6) != 0) return a;
-  }
-  return {};
-}
-
-template <class F>
-void for_each_element_child(pugi::xml_node n, F&& f) {
-  for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling())
-    if (c.type() == pugi::node_element) f(c);
-}
-
-// Entity level of a CityGML feature type by its role in the building model; 0 for other types.
-int structural_level(std::string_view type) {
-  static const std::pair<std::string_view, int> kRoles[] = {
-      {"Building", 3},           {"BuildingPart", 3},
-      {"WallSurface", 2},        {"RoofSurface", 2},
-      {"GroundSurface", 2},      {"ClosureSurface", 2},
-      {"OuterCeilingSurface", 2}, {"OuterFloorSurface", 2},
-      {"InteriorWallSurface", 2}, {"CeilingSurface", 2},
-      {"FloorSurface", 2},       {"BuildingInstallation", 2},
-      {"IntBuildingInstallation", 2}, {"BuildingConstructiveElement", 2},
-      {"Window", 1},             {"Door", 1},
-      {"WindowSurface", 1},      {"DoorSurface", 1},
-  };
-  for (const auto& [name, level] : kRoles)
-    if (name == type) return level;
-  return 0;
-}
-
-// LoD of a geometry property holding surfaces ("lod3MultiSurface" -> 3, "lod2Solid" -> 2), or -1
-// for other elements and for curve, point and implicit geometry ("lod2MultiCurve").
-int surface_lod(std::string_view name) {
-  if (name.size() < 5 || name.substr(0, 3) != "lod" || name[3] < '0' || name[3] > '4' || name[4] < 'A' ||
-      name[4] > 'Z')
-    return -1;
-  for (std::string_view kind : {"Curve", "TerrainIntersection", "Implicit", "Point", "RoofEdge"})
-    if (name.find(kind) != std::string_view::npos) return -1;
-  return name[3] - '0';
-}
 
 bool is_polygon_element(std::string_view name) {
   return name == "Polygon" || name == "PolygonPatch" || name == "Triangle" || name == "Rectangle";

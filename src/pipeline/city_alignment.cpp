@@ -47,18 +47,18 @@ CityAlignment align_city_model(const Scene& scene, SceneCityModel& city, const s
   a.record["before"] = stats_json(r.before, r.fine_before);
   a.record["after"] = stats_json(r.after, r.fine_after);
   a.record["threshold"] = threshold;
-  a.record["finest"] = IcpOptions{}.finest;
+  a.record["finest"] = r.fine_before.threshold;
   log_info(cat("run: align: the refinement moves the city model by up to ", change.max_displacement, " m (",
                change.rotation_deg, " deg, scale ", 100 * change.scale, "%); ", 100 * r.before.fraction_within,
                "% -> ", 100 * r.after.fraction_within, "% of sparse points within ", threshold, " m, ",
                100 * r.fine_before.fraction_within, "% -> ", 100 * r.fine_after.fraction_within, "% within ",
-               IcpOptions{}.finest, " m"));
+               r.fine_before.threshold, " m"));
   if (mode == "auto") {
     std::string keep;
     if (change.max_displacement <= kAlignApplyMetres)
       keep = cat("the refinement moves the model by at most ", kAlignApplyMetres, " m");
     else if (!(r.fine_after.fraction_within > r.fine_before.fraction_within))
-      keep = cat("the refinement brings no more sparse points within ", IcpOptions{}.finest, " m of the model");
+      keep = cat("the refinement brings no more sparse points within ", r.fine_before.threshold, " m of the model");
     else if (r.after.fraction_within < r.before.fraction_within - kAlignCoarseLoss)
       keep = cat("the refinement takes more than ", 100 * kAlignCoarseLoss, "% of the sparse points beyond ",
                  threshold, " m of the model");
@@ -67,7 +67,6 @@ CityAlignment align_city_model(const Scene& scene, SceneCityModel& city, const s
     if (!keep.empty()) {
       a.record["reason"] = keep;
       if (change.max_displacement > kAlignApplyMetres) log_warn("run: --align auto: " + keep + "; the given transform is kept");
-      std::filesystem::remove(out_dir / "align" / "transform.json");
       return a;
     }
   }

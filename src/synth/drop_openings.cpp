@@ -12,6 +12,7 @@
 #include <pugixml.hpp>
 
 #include "citymodel/city_model.h"
+#include "citymodel/gml_vocabulary.h"
 #include "core/error.h"
 #include "synth/random.h"
 
@@ -32,23 +33,9 @@ std::vector<bool> choose(int total, int count, uint64_t seed) {
 
 int count_of(double fraction, int total) { return static_cast<int>(std::lround(fraction * total)); }
 
-std::string_view local_name(pugi::xml_node n) {
-  const std::string_view name = n.name();
-  const size_t colon = name.find(':');
-  return colon == std::string_view::npos ? name : name.substr(colon + 1);
-}
-
+// An opening as the reader sees one: a level-1 feature defined here, not a reference to one elsewhere.
 bool is_opening(pugi::xml_node n) {
-  const std::string_view name = local_name(n);
-  return name == "Window" || name == "Door" || name == "WindowSurface" || name == "DoorSurface";
-}
-
-bool is_reference(pugi::xml_node n) {
-  for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
-    const std::string_view name = a.name();
-    if (name == "href" || (name.size() > 5 && name.substr(name.size() - 5) == ":href")) return true;
-  }
-  return false;
+  return n.type() == pugi::node_element && structural_level(local_name(n)) == 1 && !prefixed_attribute(n, "href");
 }
 
 pugi::xml_node first_element_child(pugi::xml_node n) {
@@ -67,22 +54,24 @@ pugi::xml_node host_feature(pugi::xml_node opening) {
   return {};
 }
 
-// Moves the opening's geometry (lodN... properties) into the host: into the host's aggregate of the
-// same property where it has one (a MultiSurface gains the opening's surface members), else as a
-// property of its own.
+// Moves the opening's surface geometry (the lodN properties the reader reads) into the host: into the
+// host's aggregate of the same property where it has one (a MultiSurface gains the opening's surface
+// members), else as a property of its own. (Nodes are collected first: moving them while walking a
+// sibling list would end the walk.)
 void merge_into(pugi::xml_node opening, pugi::xml_node host) {
   std::vector<pugi::xml_node> properties;
-  for (pugi::xml_node c = opening.first_child(); c; c = c.next_sibling())
-    if (c.type() == pugi::node_element && local_name(c).substr(0, 3) == "lod") properties.push_back(c);
+  for_each_element_child(opening, [&](pugi::xml_node c) {
+    if (surface_lod(local_name(c)) >= 0) properties.push_back(c);
+  });
   for (pugi::xml_node property : properties) {
     pugi::xml_node target;
-    for (pugi::xml_node c = host.first_child(); c && !target; c = c.next_sibling())
-      if (c.type() == pugi::node_element && local_name(c) == local_name(property)) target = first_element_child(c);
+    for_each_element_child(host, [&](pugi::xml_node c) {
+      if (!target && local_name(c) == local_name(property)) target = first_element_child(c);
+    });
     const pugi::xml_node source = first_element_child(property);
     if (target && source && local_name(target) == local_name(source)) {
       std::vector<pugi::xml_node> members;
-      for (pugi::xml_node m = source.first_child(); m; m = m.next_sibling())
-        if (m.type() == pugi::node_element) members.push_back(m);
+      for_each_element_child(source, [&](pugi::xml_node m) { members.push_back(m); });
       for (pugi::xml_node m : members) target.append_move(m);
     } else {
       host.append_move(property);
@@ -99,7 +88,7 @@ DroppedOpenings drop_in_citygml(const std::string& path, const std::string& text
   struct Collect : pugi::xml_tree_walker {
     std::vector<pugi::xml_node>* out;
     bool for_each(pugi::xml_node& n) override {
-      if (n.type() == pugi::node_element && is_opening(n) && !is_reference(n)) out->push_back(n);
+      if (is_opening(n)) out->push_back(n);
       return true;
     }
   } collect;
@@ -169,12 +158,13 @@ DroppedOpenings drop_in_cityjson(const std::string& path, const std::string& tex
     auto& [semantics, s] = openings[i];
     auto& surfaces = (*semantics)["surfaces"];
     const nlohmann::ordered_json parent = surfaces[s].value("parent", nlohmann::ordered_json());
+    const bool has_parent = parent.is_number_unsigned() && parent.get<size_t>() < surfaces.size();
     std::vector<nlohmann::ordered_json> replacement;
     for (size_t k = 0; k < surfaces.size(); ++k) replacement.emplace_back(k);
-    replacement[s] = parent.is_number_unsigned() && parent.get<size_t>() < surfaces.size() ? parent : nullptr;
+    replacement[s] = has_parent ? parent : nullptr;
     if (semantics->contains("values")) remap_values((*semantics)["values"], replacement);
     // The object stays in "surfaces" (indices of the others do not move) but no longer belongs to its parent.
-    if (parent.is_number_unsigned() && parent.get<size_t>() < surfaces.size()) {
+    if (has_parent) {
       auto& siblings = surfaces[parent.get<size_t>()];
       if (siblings.contains("children") && siblings["children"].is_array()) {
         auto& children = siblings["children"];
