@@ -96,7 +96,8 @@ std::vector<int> available_levels(const LanguageModel& model) {
 }
 
 nlohmann::json scores_json(const ClassScores& s) {
-  return {{"iou", s.iou}, {"precision", s.precision}, {"recall", s.recall}, {"gt", s.gt}, {"pred", s.pred}, {"tp", s.tp}};
+  return {{"iou", s.iou}, {"precision", s.precision}, {"recall", s.recall}, {"gt", s.gt}, {"pred", s.pred}, {"tp", s.tp},
+          {"ignored_gt", s.ignored}};
 }
 
 nlohmann::json confusion_json(const ConfusionMatrix& m) {

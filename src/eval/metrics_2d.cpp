@@ -5,7 +5,8 @@
 
 namespace cls {
 
-ConfusionMatrix::ConfusionMatrix(int num_classes) : k_(num_classes), counts_(size_t(num_classes) * num_classes, 0) {}
+ConfusionMatrix::ConfusionMatrix(int num_classes)
+    : k_(num_classes), counts_(size_t(num_classes) * num_classes, 0), ignored_(size_t(num_classes), 0) {}
 
 void ConfusionMatrix::add(int gt, int pred, int64_t count) {
   if (gt < 0 || gt >= k_ || pred < 0 || pred >= k_)
@@ -14,9 +15,17 @@ void ConfusionMatrix::add(int gt, int pred, int64_t count) {
   counts_[size_t(gt) * k_ + pred] += count;
 }
 
+void ConfusionMatrix::add_ignored(int gt, int64_t count) {
+  if (gt < 0 || gt >= k_)
+    throw std::out_of_range("ConfusionMatrix::add_ignored: class " + std::to_string(gt) + " outside [0, " +
+                            std::to_string(k_) + ")");
+  ignored_[size_t(gt)] += count;
+}
+
 void ConfusionMatrix::add(const ConfusionMatrix& other) {
   if (other.k_ != k_) throw std::invalid_argument("ConfusionMatrix::add: different class counts");
   for (size_t i = 0; i < counts_.size(); ++i) counts_[i] += other.counts_[i];
+  for (size_t i = 0; i < ignored_.size(); ++i) ignored_[i] += other.ignored_[i];
 }
 
 int64_t ConfusionMatrix::total() const {
@@ -43,8 +52,9 @@ ClassScores class_scores(const ConfusionMatrix& m, int c) {
   s.gt = m.gt_count(c);
   s.pred = m.pred_count(c);
   s.tp = m.at(c, c);
+  s.ignored = m.ignored_count(c);
   const int64_t uni = s.gt + s.pred - s.tp;
-  s.present = uni > 0;
+  s.present = uni > 0 || s.ignored > 0;
   s.iou = uni > 0 ? double(s.tp) / double(uni) : 0;
   s.precision = s.pred > 0 ? double(s.tp) / double(s.pred) : 0;
   s.recall = s.gt > 0 ? double(s.tp) / double(s.gt) : 0;
@@ -79,7 +89,7 @@ PerImageClassAverages::PerImageClassAverages(int k) : images_(k, 0), iou_(k, 0),
 void PerImageClassAverages::add_image(const ConfusionMatrix& image) {
   for (int c = 0; c < int(images_.size()); ++c) {
     const ClassScores cs = class_scores(image, c);
-    if (cs.gt == 0) continue;  // the image does not contain the class
+    if (cs.gt == 0 && cs.ignored == 0) continue;  // the image does not contain the class
     ++images_[c];
     iou_[c] += cs.iou;
     precision_[c] += cs.precision;
@@ -104,7 +114,10 @@ ImageScoring score_labels(const std::vector<int32_t>& gt, const std::vector<int3
   for (size_t i = 0; i < gt.size(); ++i) {
     if (gt[i] < 0) continue;
     ++r.valid_gt;
-    if (pred[i] < 0) continue;
+    if (pred[i] < 0) {
+      r.confusion.add_ignored(gt[i]);
+      continue;
+    }
     ++r.scored;
     r.confusion.add(gt[i], pred[i]);
   }

@@ -80,6 +80,33 @@ TEST(Metrics2d, ScoreLabelsSkipsInvalidGtAndIgnoredPredictions) {
   EXPECT_EQ(r.confusion.at(1, 0), 1);
   EXPECT_EQ(r.confusion.at(0, 0), 1);
   EXPECT_EQ(r.confusion.total(), 3);
+  EXPECT_EQ(r.confusion.ignored_count(0), 1);  // gt 0 at index 1, prediction ignored
+  EXPECT_EQ(r.confusion.ignored_count(1), 0);
+  EXPECT_EQ(r.confusion.ignored_count(2), 1);  // gt 2 at index 5
+}
+
+// A class whose every GT pixel a method leaves unpredicted (below the threshold, or outside a label
+// map's coverage) stays in that method's mIoU with IoU 0: the GT, not the method, sets the class list.
+TEST(Metrics2d, ClassOnlyInIgnoredPixelsCountsWithIouZero) {
+  // GT: 0 0 1 1 2 2; prediction: 0 0 1 1 -1 -1 (class 2 never predicted).
+  const ImageScoring r = score_labels({0, 0, 1, 1, 2, 2}, {0, 0, 1, 1, -1, -1}, 3);
+  const SegmentationScores s = segmentation_scores(r.confusion);
+  EXPECT_EQ(s.classes_in_miou, 3);
+  EXPECT_TRUE(s.per_class[2].present);
+  EXPECT_DOUBLE_EQ(s.per_class[2].iou, 0.0);
+  EXPECT_EQ(s.per_class[2].ignored, 2);
+  EXPECT_DOUBLE_EQ(s.miou, (1.0 + 1.0 + 0.0) / 3);
+  EXPECT_DOUBLE_EQ(s.wiou, 1.0);      // weights are scored GT counts: class 2 has none
+  EXPECT_DOUBLE_EQ(s.accuracy, 1.0);  // over scored pixels: ignored ones are not errors
+  PerImageClassAverages avg(3);
+  avg.add_image(r.confusion);
+  EXPECT_EQ(avg.images_with(2), 1);
+  EXPECT_DOUBLE_EQ(avg.mean(2).iou, 0.0);
+  EXPECT_TRUE(avg.mean(2).present);
+  ConfusionMatrix twice = r.confusion;
+  twice.add(r.confusion);
+  EXPECT_EQ(twice.ignored_count(2), 4);
+  EXPECT_THROW(twice.add_ignored(3), std::out_of_range);
 }
 
 TEST(Metrics2d, PerClassAveragesOnlyOverImagesContainingTheClass) {
