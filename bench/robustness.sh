@@ -176,7 +176,8 @@ for i, b in enumerate(panels):
     if not vals: continue
     lo, hi = min(vals) - 2, max(vals) + 2
     x0 = i * W
-    Y = lambda v: 10 + (H - pad) * (hi - v) / (hi - lo)
+    top = 12 + 13 * max(len(colours), len(variants))  # the legend's band above the curves
+    Y = lambda v: top + (H - pad - top) * (hi - v) / (hi - lo)
     svg.append(f'<text x="{x0 + W / 2}" y="{H + 30}" text-anchor="middle">{b}: 3D mIoU vs city-transform error</text>')
     svg.append(f'<line x1="{x0 + pad}" y1="{H - pad + 10}" x2="{x0 + W - pad}" y2="{H - pad + 10}" stroke="black"/>')
     for k, e in enumerate(errors):
@@ -195,10 +196,10 @@ for i, b in enumerate(panels):
             for x, y in pts: svg.append(f'<circle cx="{x:.1f}" cy="{y:.1f}" r="2.5" fill="{colours[name]}"/>')
     if i == 0:
         for k, name in enumerate(colours):
-            svg.append(f'<text x="{x0 + pad + 6}" y="{22 + 13 * k}" fill="{colours[name]}">{name}</text>')
+            svg.append(f'<text x="{x0 + pad + 6}" y="{12 + 13 * k}" fill="{colours[name]}">{name}</text>')
         for j, v in enumerate(variants):
             style = "solid" if not dashes[j % len(dashes)] else "dashed " + dashes[j % len(dashes)]
-            svg.append(f'<text x="{x0 + W - pad}" y="{22 + 13 * j}" text-anchor="end">{v}: {style}</text>')
+            svg.append(f'<text x="{x0 + W - pad}" y="{12 + 13 * j}" text-anchor="end">{v}: {style}</text>')
 svg.append("</svg>")
 open(os.path.join(work, "robustness.svg"), "w").write("\n".join(svg) + "\n")
 print(f"wrote {work}/robustness.md, robustness.json, robustness.svg")
