@@ -8,17 +8,21 @@ namespace cls {
 ConfusionMatrix::ConfusionMatrix(int num_classes)
     : k_(num_classes), counts_(size_t(num_classes) * num_classes, 0), ignored_(size_t(num_classes), 0) {}
 
+namespace {
+void check_class(int c, int k, const char* who) {
+  if (c < 0 || c >= k)
+    throw std::out_of_range(std::string(who) + ": class " + std::to_string(c) + " outside [0, " + std::to_string(k) + ")");
+}
+}  // namespace
+
 void ConfusionMatrix::add(int gt, int pred, int64_t count) {
-  if (gt < 0 || gt >= k_ || pred < 0 || pred >= k_)
-    throw std::out_of_range("ConfusionMatrix::add: class " + std::to_string(gt) + "/" + std::to_string(pred) +
-                            " outside [0, " + std::to_string(k_) + ")");
+  check_class(gt, k_, "ConfusionMatrix::add");
+  check_class(pred, k_, "ConfusionMatrix::add");
   counts_[size_t(gt) * k_ + pred] += count;
 }
 
 void ConfusionMatrix::add_ignored(int gt, int64_t count) {
-  if (gt < 0 || gt >= k_)
-    throw std::out_of_range("ConfusionMatrix::add_ignored: class " + std::to_string(gt) + " outside [0, " +
-                            std::to_string(k_) + ")");
+  check_class(gt, k_, "ConfusionMatrix::add_ignored");
   ignored_[size_t(gt)] += count;
 }
 
