@@ -52,13 +52,11 @@ torch::Tensor get_rel_pos(int64_t q_size, int64_t k_size, const torch::Tensor& r
   return resized.index({idx});
 }
 
-torch::Tensor add_decomposed_rel_pos(const torch::Tensor& attn, const torch::Tensor& q, const torch::Tensor& rel_pos_h,
-                                     const torch::Tensor& rel_pos_w, std::pair<int64_t, int64_t> q_hw,
+torch::Tensor add_decomposed_rel_pos(const torch::Tensor& attn, const torch::Tensor& q, const torch::Tensor& Rh,
+                                     const torch::Tensor& Rw, std::pair<int64_t, int64_t> q_hw,
                                      std::pair<int64_t, int64_t> k_hw) {
   const auto [q_h, q_w] = q_hw;
   const auto [k_h, k_w] = k_hw;
-  const auto Rh = get_rel_pos(q_h, k_h, rel_pos_h);
-  const auto Rw = get_rel_pos(q_w, k_w, rel_pos_w);
   const int64_t B = q.size(0), dim = q.size(2);
   const auto r_q = q.reshape({B, q_h, q_w, dim});
   const auto rel_h = torch::einsum("bhwc,hkc->bhwk", {r_q, Rh});
@@ -79,16 +77,37 @@ ViTAttentionImpl::ViTAttentionImpl(int64_t dim, int64_t num_heads_, bool qkv_bia
   }
 }
 
+namespace {
+// Largest attention band (float32) computed at once: under glibc's 32 MB mmap ceiling, so freed bands
+// are reused instead of being faulted in again, and near the size of a last-level cache.
+constexpr int64_t kAttentionBandBytes = int64_t(16) << 20;
+}  // namespace
+
 torch::Tensor ViTAttentionImpl::forward(const torch::Tensor& x) {
-  const int64_t B = x.size(0), H = x.size(1), W = x.size(2);
+  const int64_t B = x.size(0), H = x.size(1), W = x.size(2), N = H * W;
   // qkv: [3, B*nHead, H*W, head_dim]
-  const auto qkv_ = qkv(x).reshape({B, H * W, 3, num_heads, -1}).permute({2, 0, 3, 1, 4}).reshape({3, B * num_heads, H * W, -1});
+  const auto qkv_ = qkv(x).reshape({B, N, 3, num_heads, -1}).permute({2, 0, 3, 1, 4}).reshape({3, B * num_heads, N, -1});
   const auto q = qkv_[0], k = qkv_[1], v = qkv_[2];
-  auto attn = torch::matmul(q * scale, k.transpose(-2, -1));
-  if (use_rel_pos) attn = add_decomposed_rel_pos(attn, q, rel_pos_h, rel_pos_w, {H, W}, {H, W});
-  attn = attn.softmax(-1);
-  auto out = torch::matmul(attn, v).view({B, num_heads, H, W, -1}).permute({0, 2, 3, 1, 4}).reshape({B, H, W, -1});
-  return proj(out);
+  torch::Tensor Rh, Rw;
+  if (use_rel_pos) Rh = get_rel_pos(H, H, rel_pos_h), Rw = get_rel_pos(W, W, rel_pos_w);
+  // Bands of whole query rows (W tokens each) of `heads` heads: heads * rows * W * N floats at most.
+  const int64_t row_bytes = W * N * int64_t(sizeof(float));
+  const int64_t rows = std::clamp<int64_t>(kAttentionBandBytes / row_bytes, 1, H);
+  const int64_t heads = rows < H ? 1 : std::max<int64_t>(1, kAttentionBandBytes / (H * row_bytes));
+  const int64_t BH = q.size(0);
+  auto out = torch::empty_like(q);
+  const auto kt = k.transpose(-2, -1);
+  for (int64_t h0 = 0; h0 < BH; h0 += heads) {
+    const int64_t h1 = std::min(BH, h0 + heads);
+    for (int64_t y0 = 0; y0 < H; y0 += rows) {
+      const int64_t y1 = std::min(H, y0 + rows);
+      const auto qb = q.slice(0, h0, h1).slice(1, y0 * W, y1 * W);
+      auto attn = torch::matmul(qb * scale, kt.slice(0, h0, h1));
+      if (use_rel_pos) attn = add_decomposed_rel_pos(attn, qb, Rh.slice(0, y0, y1), Rw, {y1 - y0, W}, {H, W});
+      out.slice(0, h0, h1).slice(1, y0 * W, y1 * W).copy_(torch::matmul(attn.softmax(-1), v.slice(0, h0, h1)));
+    }
+  }
+  return proj(out.view({B, num_heads, H, W, -1}).permute({0, 2, 3, 1, 4}).reshape({B, H, W, -1}));
 }
 
 ViTBlockImpl::ViTBlockImpl(const SamConfig& cfg, int64_t window_size_) : window_size(window_size_) {

@@ -21,11 +21,16 @@ torch::Tensor window_unpartition(const torch::Tensor& windows, int64_t window_si
 // interpolated (align_corners=False) when its length differs from 2*max(q,k)-1.
 torch::Tensor get_rel_pos(int64_t q_size, int64_t k_size, const torch::Tensor& rel_pos);
 // add_decomposed_rel_pos (MViTv2): attn[b,(qh,qw),(kh,kw)] += q.Rh[qh,kh] + q.Rw[qw,kw], with q unscaled.
-torch::Tensor add_decomposed_rel_pos(const torch::Tensor& attn, const torch::Tensor& q, const torch::Tensor& rel_pos_h,
-                                     const torch::Tensor& rel_pos_w, std::pair<int64_t, int64_t> q_hw,
+// Rh [q_h, k_h, C] and Rw [q_w, k_w, C] are get_rel_pos tables; q [B, q_h*q_w, C] may be a band of whole
+// query rows when Rh is sliced to the same rows.
+torch::Tensor add_decomposed_rel_pos(const torch::Tensor& attn, const torch::Tensor& q, const torch::Tensor& Rh,
+                                     const torch::Tensor& Rw, std::pair<int64_t, int64_t> q_hw,
                                      std::pair<int64_t, int64_t> k_hw);
 
 // Multi-head attention over a [B,H,W,C] token grid with optional decomposed relative positions.
+// Computed in bands of heads and query rows so that no attention matrix exceeds a few MB (SAM's
+// global blocks would otherwise make several [heads, 4096, 4096] tensors, 805 MB each for ViT-B):
+// each row's softmax is its own, so the result is the reference's.
 struct ViTAttentionImpl : torch::nn::Module {
   ViTAttentionImpl(int64_t dim, int64_t num_heads, bool qkv_bias, bool use_rel_pos, std::pair<int64_t, int64_t> input_size);
   torch::Tensor forward(const torch::Tensor& x);
