@@ -1,6 +1,7 @@
 // LangSplat mask NMS (bit-packed fast vs LibTorch matrix form vs the literal reference) for
 // M masks at 1000x750, and the whole LangSplat AMG on a 1000x750 image with a randomly initialised
-// SAM (ViT-B by default). Usage: bench_amg [--threads N] [--masks 200,400,...] [--model vit_b|none]
+// SAM (ViT-B by default), or the SAM fixture's tiny model on its own image (--fixture: the workload
+// of the slowest test). Usage: bench_amg [--threads N] [--masks 200,400,...] [--model vit_b|none] [--fixture DIR]
 // Figures go to docs/benchmarks.md.
 #include <omp.h>
 #include <torch/torch.h>
@@ -12,17 +13,23 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <nlohmann/json.hpp>
 #include <vector>
 
 #include "bench_timer.h"
 #include "core/args.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/npy.h"
 #include "models/sam/sam_config.h"
+#include "models/sam/sam_model.h"
 #include "models/sam/sam_predictor.h"
 #include "models/sam_amg/automatic_mask_generator.h"
 #include "models/sam_amg/langsplat_post.h"
 #include "models/sam_amg/mask_nms.h"
+#include "models/sam_amg/records_json.h"
 #include "models/sam_amg/sam_amg_model.h"
+#include "models/weights/safetensors.h"
 
 namespace cls::amg {
 namespace {
@@ -127,35 +134,39 @@ class TimedModel : public AmgModel {
   AmgModel& inner_;
 };
 
-void bench_amg(const std::string& model_name, int points_per_side, int threads) {
-  const int h = 750, w = 1000;
-  torch::manual_seed(0);
-  sam::Sam model(sam::sam_config_by_name(model_name));
-  model->eval();
-  sam::SamPredictor predictor(model);
-  // A smooth synthetic photo: gradients plus a few flat rectangles and discs.
-  std::vector<uint8_t> rgb(size_t(h) * w * 3);
+struct AmgImage {
+  int height = 0, width = 0;
+  std::vector<uint8_t> rgb;
+};
+
+// A smooth synthetic photo at 1000x750: gradients plus a few flat rectangles and a disc.
+AmgImage synthetic_photo() {
+  AmgImage im{750, 1000, {}};
+  const int h = im.height, w = im.width;
+  im.rgb.resize(size_t(h) * w * 3);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
-      uint8_t* p = &rgb[(size_t(y) * w + x) * 3];
+      uint8_t* p = &im.rgb[(size_t(y) * w + x) * 3];
       p[0] = uint8_t(x * 255 / w), p[1] = uint8_t(y * 255 / h), p[2] = uint8_t(((x / 125) + (y / 125)) % 2 ? 200 : 60);
       if ((x - 600) * (x - 600) + (y - 300) * (y - 300) < 120 * 120) p[0] = 250, p[1] = 30, p[2] = 30;
     }
-  AmgParams params;  // LangSplat's
-  params.points_per_side = points_per_side;
+  return im;
+}
+
+MaskLevels run_amg(sam::SamPredictor& predictor, const AmgImage& im, const AmgParams& params, const std::string& what,
+                   int threads) {
   SamPredictorAmgModel sam_model(predictor);
   TimedModel timed(sam_model);
   torch::NoGradGuard no_grad;
   auto t0 = Clock::now();
-  const MaskLevels levels = generate_masks(timed, rgb.data(), h, w, params, threads);
+  const MaskLevels levels = generate_masks(timed, im.rgb.data(), im.height, im.width, params, threads);
   const double t_amg = seconds_since(t0);
   t0 = Clock::now();
   const auto updated = masks_update(levels, MaskNmsParams{}, MaskNmsMethod::Fast, threads);
-  const SegMap map = build_seg_map(updated.levels, h, w);
+  const SegMap map = build_seg_map(updated.levels, im.height, im.width);
   const double t_post = seconds_since(t0);
-  std::printf("\nAMG (LangSplat parameters, points_per_side %d, crop_n_layers 1) on %dx%d, SAM %s with random "
-              "weights, %d threads\n\n",
-              points_per_side, w, h, model_name.c_str(), threads);
+  std::printf("\nAMG (points_per_side %d, crop_n_layers %d) on %dx%d, %s, %d threads\n\n", params.points_per_side,
+              params.crop_n_layers, im.width, im.height, what.c_str(), threads);
   std::printf("| crops | prompts | encoder (all crops) | decoder | masks upsampled | postprocess_masks | AMG own work "
               "| AMG total | masks default/s/m/l | masks_update + seg map |\n|---|---|---|---|---|---|---|---|---|---|\n");
   std::printf("| %d | %zu | %.1f s | %.1f s | %zu | %.1f s | %.1f s | %.1f s | %zu/%zu/%zu/%zu | %.2f s |\n",
@@ -163,6 +174,39 @@ void bench_amg(const std::string& model_name, int points_per_side, int threads) 
               t_amg - timed.encode_s - timed.decode_s - timed.upsample_s, t_amg,
               levels[0].size(), levels[1].size(), levels[2].size(), levels[3].size(), t_post);
   (void)map;
+  return levels;
+}
+
+// An official architecture with random weights on the synthetic photo, LangSplat's parameters.
+void bench_amg(const std::string& model_name, int points_per_side, int threads) {
+  torch::manual_seed(0);
+  sam::Sam model(sam::sam_config_by_name(model_name));
+  model->eval();
+  sam::SamPredictor predictor(model);
+  AmgParams params;  // LangSplat's
+  params.points_per_side = points_per_side;
+  run_amg(predictor, synthetic_photo(), params, "SAM " + model_name + " with random weights", threads);
+}
+
+// The SAM fixture's tiny model on its test image with a reference run's parameters: the workload of
+// the test SamAmgRun.<Run>MatchesReference; the mask counts are checked against the run's records.
+void bench_fixture_amg(const std::string& dir, const std::string& run, int threads) {
+  sam::Sam model(sam::sam_config_from_json_file(dir + "/config.json"));
+  sam::load_sam_weights(*model, read_safetensors(dir + "/weights.safetensors"));
+  model->eval();
+  sam::SamPredictor predictor(model);
+  const NpyArray a = read_npy(dir + "/test_image.npy");
+  if (a.shape.size() != 3 || a.shape[2] != 3) fail(dir + "/test_image.npy", "expected an H x W x 3 uint8 image");
+  AmgImage im{static_cast<int>(a.shape[0]), static_cast<int>(a.shape[1]), {}};
+  im.rgb.assign(a.as<uint8_t>(), a.as<uint8_t>() + a.numel());
+  const std::string records_path = dir + "/amg/" + run + "_records.json";
+  const auto records = nlohmann::json::parse(read_text_file(records_path));
+  const MaskLevels got =
+      run_amg(predictor, im, params_from_json(records.at("params"), records_path), "fixture SAM, run " + run, threads);
+  const MaskLevels expected = levels_from_json(records.at("levels"), records_path);
+  for (int l = 0; l < kNumLevels; ++l)
+    if (got[l].size() != expected[l].size())
+      std::printf("**level %s: %zu masks, the reference has %zu**\n", level_name(l), got[l].size(), expected[l].size());
 }
 
 std::vector<int> parse_sizes(const std::string& s) {
@@ -186,7 +230,10 @@ int main(int argc, char** argv) {
       .option("masks", "200,400,600,800,1000", "mask counts for the NMS benchmark (empty: skip)")
       .option("reference-max", "200", "largest mask count also timed with the slow reference")
       .option("model", "vit_b", "SAM for the AMG benchmark: vit_b, vit_l, vit_h, or none to skip")
-      .option("points-per-side", "32", "AMG grid (LangSplat: 32)");
+      .option("points-per-side", "32", "AMG grid (LangSplat: 32)")
+      .option("fixture", "", "SAM fixture folder (config.json, weights.safetensors, test_image.npy, amg/): run its "
+                             "tiny model on its image instead of --model")
+      .option("run", "strict", "with --fixture: the reference run whose parameters to use (strict, relaxed)");
   int threads = 0;
   try {
     if (!args.parse(argc, argv)) return 0;
@@ -201,7 +248,9 @@ int main(int argc, char** argv) {
   try {
     const auto sizes = cls::amg::parse_sizes(args.get("masks"));
     if (!sizes.empty()) cls::amg::bench_mask_nms(sizes, threads, args.get_int("reference-max"));
-    if (args.get("model") != "none") cls::amg::bench_amg(args.get("model"), args.get_int("points-per-side"), threads);
+    if (!args.get("fixture").empty()) cls::amg::bench_fixture_amg(args.get("fixture"), args.get("run"), threads);
+    else if (args.get("model") != "none")
+      cls::amg::bench_amg(args.get("model"), args.get_int("points-per-side"), threads);
   } catch (const cls::Error& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;

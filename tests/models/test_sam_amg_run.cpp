@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
+#include "core/blas_threads.h"
 #include "core/error.h"
 #include "core/npy.h"
 #include "models/sam/sam_predictor.h"
@@ -46,27 +47,10 @@ const TestImage& test_image() {
   return image;
 }
 
-AmgParams params_from_json(const nlohmann::json& j) {
-  AmgParams p;
-  p.points_per_side = j["points_per_side"];
-  p.points_per_batch = j["points_per_batch"];
-  p.pred_iou_thresh = j["pred_iou_thresh"];
-  p.stability_score_thresh = j["stability_score_thresh"];
-  p.stability_score_offset = j["stability_score_offset"];
-  p.box_nms_thresh = j["box_nms_thresh"];
-  p.crop_n_layers = j["crop_n_layers"];
-  p.crop_nms_thresh = j["crop_nms_thresh"];
-  p.crop_overlap_ratio = j["crop_overlap_ratio"];
-  p.crop_n_points_downscale_factor = j["crop_n_points_downscale_factor"];
-  p.min_mask_region_area = j["min_mask_region_area"];
-  p.mask_threshold = j["mask_threshold"].get<float>();
-  return p;
-}
-
 void check_run(const std::string& run) {
   const auto records_json = nlohmann::json::parse(cls::read_text_file(amg_fixture(run + "_records.json")));
   const MaskLevels expected = levels_from_json(records_json["levels"], run);
-  const AmgParams params = params_from_json(records_json["params"]);
+  const AmgParams params = params_from_json(records_json["params"], run + "_records.json");
   const TestImage& im = test_image();
   SamPredictorAmgModel model(tiny_predictor());
   const MaskLevels got = generate_masks(model, im.rgb.data(), im.height, im.width, params);
@@ -117,8 +101,8 @@ TEST(SamAmgRun, FirstBatchMatchesDebugDump) {
   for (size_t at = text.find("NaN"); at != std::string::npos; at = text.find("NaN", at)) text.replace(at, 3, "null");
   const auto dump = nlohmann::json::parse(text);
   // The relaxed run's parameters; crop 0 (the whole image) uses the layer-0 grid.
-  const AmgParams params =
-      params_from_json(nlohmann::json::parse(cls::read_text_file(amg_fixture("relaxed_records.json")))["params"]);
+  const AmgParams params = params_from_json(
+      nlohmann::json::parse(cls::read_text_file(amg_fixture("relaxed_records.json")))["params"], "relaxed_records.json");
   const TestImage& im = test_image();
   ASSERT_EQ(im.height, dump["original_size_hw"][0].get<int>());
   ASSERT_EQ(im.width, dump["original_size_hw"][1].get<int>());
@@ -174,3 +158,15 @@ TEST(SamAmgRun, RelaxedMatchesReference) { check_run("relaxed"); }
 // LangSplat's own parameters: 5120 prompts, about 16x the relaxed run (2-4 minutes on 2 cores, the
 // slowest test of the suite): it is the acceptance check of the AMG with LangSplat's defaults.
 TEST(SamAmgRun, StrictMatchesReference) { check_run("strict"); }
+
+TEST(BlasThreads, ScopeSetsAndRestoresOpenBlasThreads) {
+  // LibTorch loads OpenBLAS here on Debian; with another BLAS the guard does nothing.
+  const int before = cls::blas_threads();
+  if (before == 0) GTEST_SKIP() << "OpenBLAS is not the BLAS of this LibTorch";
+  const int other = before == 1 ? 2 : 1;
+  {
+    const cls::ScopedBlasThreads guard(other);
+    EXPECT_EQ(cls::blas_threads(), other);
+  }
+  EXPECT_EQ(cls::blas_threads(), before);
+}

@@ -72,6 +72,27 @@ nlohmann::json levels_to_json(const MaskLevels& levels) {
   return j;
 }
 
+AmgParams params_from_json(const nlohmann::json& j, const std::string& where) {
+  try {
+    AmgParams p;
+    p.points_per_side = j.at("points_per_side");
+    p.points_per_batch = j.at("points_per_batch");
+    p.pred_iou_thresh = j.at("pred_iou_thresh");
+    p.stability_score_thresh = j.at("stability_score_thresh");
+    p.stability_score_offset = j.at("stability_score_offset");
+    p.box_nms_thresh = j.at("box_nms_thresh");
+    p.crop_n_layers = j.at("crop_n_layers");
+    p.crop_nms_thresh = j.at("crop_nms_thresh");
+    p.crop_overlap_ratio = j.at("crop_overlap_ratio");
+    p.crop_n_points_downscale_factor = j.at("crop_n_points_downscale_factor");
+    p.min_mask_region_area = j.at("min_mask_region_area");
+    p.mask_threshold = j.at("mask_threshold").get<float>();
+    return p;
+  } catch (const nlohmann::json::exception& e) {
+    fail(where, cat("bad AMG params: ", e.what()));
+  }
+}
+
 MaskLevels read_levels_file(const std::string& path) {
   nlohmann::json j;
   try {

@@ -2,10 +2,28 @@
 
 #include <torch/torch.h>
 
+#include <algorithm>
+#include <cstring>
+
+#include "core/blas_threads.h"
 #include "core/error.h"
 #include "models/sam/sam_predictor.h"
 
 namespace cls::amg {
+
+namespace {
+
+// The reference decodes a whole points_per_batch (64) at once and upsamples every mask of it
+// through a 1024 x 1024 plane: tensors of 64-600 MB per step. glibc serves blocks above 32 MB with
+// mmap and returns them on free, so each batch faulted every page in again (half the AMG's CPU time
+// was the kernel's). Working in slices whose largest tensor stays under this budget lets freed
+// blocks be reused. Each prompt and each mask is computed on its own either way, so the slicing
+// does not change what is computed.
+constexpr int64_t kSliceBytes = int64_t(16) << 20;
+
+int64_t slice_count(int64_t bytes_per_item) { return std::max<int64_t>(1, kSliceBytes / std::max<int64_t>(1, bytes_per_item)); }
+
+}  // namespace
 
 void SamPredictorAmgModel::set_image(const uint8_t* rgb, int height, int width) {
   low_res_logits_ = at::Tensor();
@@ -19,17 +37,33 @@ void SamPredictorAmgModel::predict_points(const std::vector<Point2d>& points_102
   auto coords = torch::empty({b, 1, 2}, torch::kFloat64);
   auto* c = coords.data_ptr<double>();
   for (int64_t i = 0; i < b; ++i) c[2 * i] = points_1024[i][0], c[2 * i + 1] = points_1024[i][1];
-  const auto labels = torch::ones({b, 1}, torch::kInt32);
   const torch::Device device = predictor_.device();
+  coords = coords.to(device);
+  const auto labels = torch::ones({b, 1}, torch::TensorOptions().dtype(torch::kInt32).device(device));
   torch::NoGradGuard no_grad;
-  const sam::SamPrediction pred = predictor_.predict_batch(coords.to(device), labels.to(device), torch::Tensor(),
-                                                          torch::Tensor(), /*multimask_output=*/true,
-                                                          /*return_logits=*/true, /*upsample=*/false);
-  // One channel per mask: bilinear interpolation works plane by plane, so upsampling a subset gives
-  // the same values as upsampling the whole [B, 3] batch.
-  low_res_logits_ = pred.low_res_logits.flatten(0, 1).unsqueeze(1);
-  const auto ious = pred.iou_predictions.to(torch::kCPU, torch::kFloat32).contiguous();
-  iou_predictions.assign(ious.data_ptr<float>(), ious.data_ptr<float>() + ious.numel());
+  // The decoder's largest per-prompt tensor is the upscaled embedding: C/8 channels at 4x the
+  // embedding side, i.e. 2 * C * side^2 floats.
+  const auto& cfg = predictor_.model()->config;
+  const int64_t side = cfg.image_embedding_size();
+  const int64_t step = device.is_cpu() ? slice_count(2 * cfg.prompt_embed_dim * side * side * 4) : b;
+  iou_predictions.clear();
+  const ScopedBlasThreads blas(1);  // see core/blas_threads.h
+  for (int64_t s = 0; s < b; s += step) {
+    const int64_t e = std::min(b, s + step);
+    const sam::SamPrediction pred =
+        predictor_.predict_batch(coords.slice(0, s, e), labels.slice(0, s, e), torch::Tensor(), torch::Tensor(),
+                                 /*multimask_output=*/true, /*return_logits=*/true, /*upsample=*/false);
+    // One channel per mask: bilinear interpolation works plane by plane, so upsampling a subset gives
+    // the same values as upsampling the whole [B, 3] batch. The buffer is kept across batches.
+    const auto low = pred.low_res_logits.flatten(0, 1).unsqueeze(1);
+    const int64_t per = low.size(0) / (e - s);  // masks per prompt
+    const std::vector<int64_t> shape = {b * per, 1, low.size(2), low.size(3)};
+    if (s == 0 && (!low_res_logits_.defined() || low_res_logits_.sizes() != shape || low_res_logits_.device() != low.device()))
+      low_res_logits_ = torch::empty(shape, low.options());
+    low_res_logits_.slice(0, s * per, e * per).copy_(low);
+    const auto ious = pred.iou_predictions.to(torch::kCPU, torch::kFloat32).contiguous();
+    iou_predictions.insert(iou_predictions.end(), ious.data_ptr<float>(), ious.data_ptr<float>() + ious.numel());
+  }
 }
 
 void SamPredictorAmgModel::upsample_masks(const std::vector<int64_t>& indices, std::vector<float>& mask_logits) {
@@ -38,13 +72,24 @@ void SamPredictorAmgModel::upsample_masks(const std::vector<int64_t>& indices, s
   for (int64_t i : indices)
     if (i < 0 || i >= n) throw Error("AMG: mask index " + std::to_string(i) + " outside the last batch of " + std::to_string(n));
   torch::NoGradGuard no_grad;
-  const auto idx = torch::tensor(indices, torch::kInt64).to(low_res_logits_.device());
-  const auto low = low_res_logits_.index_select(0, idx);
-  const auto masks = predictor_.model()
-                         ->postprocess_masks(low, predictor_.input_size(), predictor_.original_size())
-                         .to(torch::kCPU, torch::kFloat32)
-                         .contiguous();
-  mask_logits.assign(masks.data_ptr<float>(), masks.data_ptr<float>() + masks.numel());
+  const auto [h, w] = predictor_.original_size();
+  const size_t plane = static_cast<size_t>(h) * w;
+  mask_logits.resize(indices.size() * plane);
+  // postprocess_masks passes each mask through an image_size^2 plane.
+  const int64_t side = predictor_.model()->config.image_size;
+  const int64_t count = static_cast<int64_t>(indices.size());
+  const int64_t step = low_res_logits_.device().is_cpu() ? slice_count(side * side * 4) : count;
+  for (int64_t s = 0; s < count; s += step) {
+    const int64_t e = std::min(count, s + step);
+    const std::vector<int64_t> part(indices.begin() + s, indices.begin() + e);
+    const auto idx = torch::tensor(part, torch::kInt64).to(low_res_logits_.device());
+    const auto masks = predictor_.model()
+                           ->postprocess_masks(low_res_logits_.index_select(0, idx), predictor_.input_size(),
+                                               predictor_.original_size())
+                           .to(torch::kCPU, torch::kFloat32)
+                           .contiguous();
+    std::memcpy(mask_logits.data() + s * plane, masks.data_ptr<float>(), masks.numel() * sizeof(float));
+  }
 }
 
 }  // namespace cls::amg
