@@ -1,6 +1,7 @@
 // SAM building blocks against hand-computed cases and independent formulas: Pillow's bilinear
 // resize, ResizeLongestSide, window partition, relative-position tables, the dense positional
-// encoding, weight-loading errors and the official ViT-B/L/H state_dict layouts.
+// encoding, weight-loading errors and the official ViT-B/L/H state_dict layouts; the banded encoder
+// attention and the decoder's folded cross-attention against the reference's order, in double.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +12,7 @@
 #include "core/error.h"
 #include "models/sam/image_encoder.h"
 #include "models/sam/resize_longest_side.h"
+#include "models/sam/two_way_transformer.h"
 #include "sam_fixture.h"
 
 namespace cls::sam {
@@ -97,6 +99,52 @@ TEST(SamImageEncoder, RelPosTableByHand) {
   EXPECT_NEAR(t[2][0].item<float>(), 40.0f, 1e-5);
   EXPECT_NEAR(t[0][2].item<float>(), 0.0f, 1e-5);
   EXPECT_NEAR(t[0][1].item<float>(), 4.0f, 1e-5);
+}
+
+TEST(SamImageEncoder, BandedAttentionEqualsTheWholeMatrixInDouble) {
+  // A 48 x 48 global grid: one attention row of 2304 keys is 442 KB, so the 16 MB bands hold 37 of
+  // the 48 query rows and the grid is done in two bands per head.
+  torch::manual_seed(3);
+  const int64_t dim = 16, heads = 2, side = 48;
+  ViTAttention attn(dim, heads, /*qkv_bias=*/true, /*use_rel_pos=*/true, std::make_pair(side, side));
+  attn->to(torch::kDouble);
+  {
+    torch::NoGradGuard no_grad;
+    attn->rel_pos_h.normal_(0, 0.3), attn->rel_pos_w.normal_(0, 0.3);
+  }
+  const auto x = torch::randn({1, side, side, dim}, torch::kDouble);
+  torch::NoGradGuard no_grad;
+  // The reference's order: the whole [heads, N, N] matrix at once.
+  const int64_t n = side * side;
+  const auto qkv = attn->qkv(x).reshape({1, n, 3, heads, -1}).permute({2, 0, 3, 1, 4}).reshape({3, heads, n, -1});
+  const auto q = qkv[0], k = qkv[1], v = qkv[2];
+  const auto Rh = get_rel_pos(side, side, attn->rel_pos_h), Rw = get_rel_pos(side, side, attn->rel_pos_w);
+  auto a = add_decomposed_rel_pos(torch::matmul(q * attn->scale, k.transpose(-2, -1)), q, Rh, Rw, {side, side}, {side, side});
+  const auto out = torch::matmul(a.softmax(-1), v).view({1, heads, side, side, -1}).permute({0, 2, 3, 1, 4}).reshape({1, side, side, -1});
+  const auto expected = attn->proj(out);
+  EXPECT_LT((attn(x) - expected).abs().max().item<double>(), 1e-12);
+}
+
+TEST(SamMaskDecoder, FoldedCrossAttentionEqualsTheReferenceOrderInDouble) {
+  // The decoder's own sizes (config.json); 3 prompts of 7 tokens against a 9 x 11 image.
+  const auto& t = testing::sam_config_json().at("mask_decoder").at("transformer");
+  const int64_t dim = t.at("embedding_dim"), heads = t.at("num_heads"), down = t.at("attention_downsample_rate");
+  torch::manual_seed(4);
+  DecoderAttention attn(dim, heads, down);
+  attn->to(torch::kDouble);
+  const int64_t B = 3, T = 7, N = 99;
+  const auto tokens = torch::randn({B, T, dim}, torch::kDouble), tokens_pe = torch::randn({B, T, dim}, torch::kDouble);
+  const auto image = torch::randn({B, N, dim}, torch::kDouble), image_pe = torch::randn({B, N, dim}, torch::kDouble);
+  torch::NoGradGuard no_grad;
+  const auto max_diff = [](const torch::Tensor& a, const torch::Tensor& b) { return (a - b).abs().max().item<double>(); };
+  // One image per prompt.
+  EXPECT_LT(max_diff(attn->tokens_to_image(tokens, image_pe, image), attn(tokens, image_pe, image)), 1e-12);
+  EXPECT_LT(max_diff(attn->image_to_tokens(image_pe, tokens_pe, tokens), attn(image_pe, tokens_pe, tokens)), 1e-12);
+  // One image shared by every prompt: the reference repeats it.
+  const auto one = image.narrow(0, 0, 1), one_pe = image_pe.narrow(0, 0, 1);
+  const auto rep = one.expand({B, N, dim}), rep_pe = one_pe.expand({B, N, dim});
+  EXPECT_LT(max_diff(attn->tokens_to_image(tokens, one_pe, one), attn(tokens, rep_pe, rep)), 1e-12);
+  EXPECT_LT(max_diff(attn->image_to_tokens(one_pe, tokens_pe, tokens), attn(rep_pe, tokens_pe, tokens)), 1e-12);
 }
 
 TEST(SamPromptEncoder, DensePeMatchesTheFormulaInDouble) {

@@ -37,13 +37,22 @@ MaskDecoderOutput MaskDecoderImpl::predict_masks(const torch::Tensor& image_embe
   output_tokens = output_tokens.unsqueeze(0).expand({sparse.size(0), -1, -1});
   const auto tokens = torch::cat({output_tokens, sparse}, 1);
   const int64_t n = tokens.size(0);
-  // One image embedding shared by all prompts (repeat_interleave); already per prompt if batch n.
-  auto src = image_embeddings.size(0) == n ? image_embeddings : torch::repeat_interleave(image_embeddings, n, 0);
-  src = src + dense;
-  const auto pos_src = image_pe.size(0) == n ? image_pe : torch::repeat_interleave(image_pe, n, 0);
-  const int64_t b = src.size(0), c = src.size(1), h = src.size(2), w = src.size(3);
+  // One image embedding shared by all prompts (the reference's repeat_interleave). Without mask
+  // inputs the dense embedding is one vector broadcast to every prompt (stride 0), so the prompts
+  // share src too and the transformer takes it once; it is per prompt only after the first block.
+  torch::Tensor src, pos_src;
+  if (image_embeddings.size(0) == 1 && image_pe.size(0) == 1 && (n == 1 || dense.stride(0) == 0)) {
+    src = image_embeddings + dense.narrow(0, 0, 1);
+    pos_src = image_pe;
+  } else {
+    src = image_embeddings.size(0) == n ? image_embeddings : torch::repeat_interleave(image_embeddings, n, 0);
+    src = src + dense;
+    pos_src = image_pe.size(0) == n ? image_pe : torch::repeat_interleave(image_pe, n, 0);
+  }
+  const int64_t c = src.size(1), h = src.size(2), w = src.size(3);
 
   auto [hs, keys] = transformer(src, pos_src, tokens);
+  const int64_t b = keys.size(0);
   const auto iou_token_out = hs.index({Slice(), 0, Slice()});
   const auto mask_tokens_out = hs.index({Slice(), Slice(1, 1 + num_mask_tokens), Slice()});
 

@@ -34,6 +34,50 @@ torch::Tensor DecoderAttentionImpl::forward(const torch::Tensor& q_in, const tor
   return out_proj(recombine_heads(torch::matmul(attn, v)));
 }
 
+namespace {
+// A [heads*dh, C] projection weight as [heads, dh, C] (row h*dh + d is head h's channel d).
+torch::Tensor per_head(const torch::Tensor& w, int64_t heads) { return w.view({heads, w.size(0) / heads, w.size(1)}); }
+}  // namespace
+
+torch::Tensor DecoderAttentionImpl::tokens_to_image(const torch::Tensor& q_in, const torch::Tensor& k_in,
+                                                    const torch::Tensor& v_in) {
+  const int64_t B = q_in.size(0), T = q_in.size(1), Bi = k_in.size(0), C = k_in.size(2);
+  const auto q = separate_heads(q_proj(q_in), num_heads);  // [B,h,T,dh]
+  const int64_t dh = q.size(3);
+  const auto Wk = per_head(k_proj->weight, num_heads), Wv = per_head(v_proj->weight, num_heads);
+  // q.b_k is the same for every key of a query, and softmax ignores it: k_proj's bias drops out.
+  const auto qk = torch::einsum("bhtd,hdc->bhtc", {q, Wk});  // [B,h,T,C]
+  // Rows (prompt, head, token) against the Bi image batches: one shared image takes every row.
+  const int64_t rows = B * num_heads * T / Bi;
+  auto attn = torch::bmm(qk.reshape({Bi, rows, C}), k_in.transpose(1, 2));
+  attn = torch::softmax(attn / std::sqrt(double(dh)), -1);
+  // Each softmax row sums to one, so v_proj's bias passes through unchanged.
+  const auto px = torch::bmm(attn, v_in).view({B, num_heads, T, C});
+  const auto o = torch::einsum("bhtc,hdc->bhtd", {px, Wv}) + v_proj->bias.view({1, num_heads, 1, dh});
+  return out_proj(recombine_heads(o));
+}
+
+torch::Tensor DecoderAttentionImpl::image_to_tokens(const torch::Tensor& q_in, const torch::Tensor& k_in,
+                                                    const torch::Tensor& v_in) {
+  const int64_t Bi = q_in.size(0), N = q_in.size(1), C = q_in.size(2), B = k_in.size(0), T = k_in.size(1);
+  const auto k = separate_heads(k_proj(k_in), num_heads), v = separate_heads(v_proj(v_in), num_heads);  // [B,h,T,dh]
+  const int64_t dh = k.size(3), ht = num_heads * T;
+  const auto kq = torch::einsum("bhtd,hdc->bhtc", {k, per_head(q_proj->weight, num_heads)}).reshape({B, ht, C});
+  const auto kb = torch::einsum("bhtd,hd->bht", {k, q_proj->bias.view({num_heads, dh})}).reshape({B, 1, ht});
+  // out_proj(concat_h P_h V_h) = sum_h P_h (V_h W_o,h^T) + b_o with W_o,h = out_proj.weight[:, h*dh:(h+1)*dh].
+  const auto Wo = out_proj->weight.view({C, num_heads, dh}).permute({1, 2, 0});  // [h, dh, C]
+  const auto u = torch::einsum("bhtd,hdc->bhtc", {v, Wo}).reshape({B, ht, C});
+  torch::Tensor attn;
+  if (Bi == B) {
+    attn = torch::baddbmm(kb, q_in, kq.transpose(1, 2));  // [B,N,h*T]
+  } else {  // one image for every prompt: [N, B*h*T] in one product
+    attn = torch::addmm(kb.reshape({1, B * ht}), q_in[0], kq.reshape({B * ht, C}).t());
+    attn = attn.view({N, B, ht}).transpose(0, 1);
+  }
+  attn = torch::softmax(attn.reshape({B, N, num_heads, T}) / std::sqrt(double(dh)), -1);
+  return torch::baddbmm(out_proj->bias.view({1, 1, C}), attn.reshape({B, N, ht}), u);
+}
+
 TwoWayAttentionBlockImpl::TwoWayAttentionBlockImpl(int64_t dim, int64_t num_heads, int64_t mlp_dim, int64_t downsample_rate,
                                                    bool skip_first_layer_pe_)
     : skip_first_layer_pe(skip_first_layer_pe_) {
@@ -60,12 +104,12 @@ void TwoWayAttentionBlockImpl::forward(torch::Tensor& queries, torch::Tensor& ke
   // Tokens attend to the image.
   auto q = queries + query_pe;
   auto k = keys + key_pe;
-  queries = norm2(queries + cross_attn_token_to_image(q, k, keys));
+  queries = norm2(queries + cross_attn_token_to_image->tokens_to_image(q, k, keys));
   queries = norm3(queries + mlp(queries));
   // The image attends to the tokens.
   q = queries + query_pe;
   k = keys + key_pe;
-  keys = norm4(keys + cross_attn_image_to_token(k, q, queries));
+  keys = norm4(keys + cross_attn_image_to_token->image_to_tokens(k, q, queries));
 }
 
 TwoWayTransformerImpl::TwoWayTransformerImpl(int depth, int64_t dim, int64_t num_heads, int64_t mlp_dim, int64_t downsample_rate) {
@@ -84,7 +128,7 @@ std::pair<torch::Tensor, torch::Tensor> TwoWayTransformerImpl::forward(const tor
   for (const auto& layer : *layers) layer->as<TwoWayAttentionBlock>()->forward(queries, keys, point_embedding, keys_pe);
   const auto q = queries + point_embedding;
   const auto k = keys + keys_pe;
-  queries = norm_final_attn(queries + final_attn_token_to_image(q, k, keys));
+  queries = norm_final_attn(queries + final_attn_token_to_image->tokens_to_image(q, k, keys));
   return {queries, keys};
 }
 

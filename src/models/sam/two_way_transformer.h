@@ -10,7 +10,18 @@ namespace cls::sam {
 // Attention with q/k/v projected down to dim / downsample_rate (transformer.py Attention).
 struct DecoderAttentionImpl : torch::nn::Module {
   DecoderAttentionImpl(int64_t embedding_dim, int64_t num_heads, int64_t downsample_rate = 1);
+  // The reference's order: project q, k and v, attend, project out. q [B,Nq,C], k and v [B,Nk,C].
   torch::Tensor forward(const torch::Tensor& q, const torch::Tensor& k, const torch::Tensor& v);
+  // The same attention where one side is a handful of tokens (T, about 7) and the other the image
+  // embedding (N = 4096 positions). The image-side projections are folded into the tokens' per head:
+  // scores q.(W x + b) = (W^T q).x + q.b, and sum_n p_n (W_v x_n + b_v) = W_v (sum_n p_n x_n) + b_v,
+  // likewise out_proj through the values of image_to_tokens. So nothing of size N x C is projected:
+  // for ViT-B the transformer does about a third of the multiply-adds of the reference's order. The
+  // image side may have batch 1 for B prompts that share it (no mask input); it is never copied.
+  // tokens_to_image: q [B,T,C] tokens; k, v [B or 1, N, C] image -> [B,T,C].
+  torch::Tensor tokens_to_image(const torch::Tensor& q, const torch::Tensor& k, const torch::Tensor& v);
+  // image_to_tokens: q [B or 1, N, C] image; k, v [B,T,C] tokens -> [B,N,C].
+  torch::Tensor image_to_tokens(const torch::Tensor& q, const torch::Tensor& k, const torch::Tensor& v);
   int64_t num_heads;
   torch::nn::Linear q_proj{nullptr}, k_proj{nullptr}, v_proj{nullptr}, out_proj{nullptr};
 };
@@ -19,7 +30,8 @@ TORCH_MODULE(DecoderAttention);
 struct TwoWayAttentionBlockImpl : torch::nn::Module {
   TwoWayAttentionBlockImpl(int64_t embedding_dim, int64_t num_heads, int64_t mlp_dim, int64_t downsample_rate,
                            bool skip_first_layer_pe);
-  // Updates queries [B,Nq,C] and keys [B,HW,C] in place of the reference's returned pair.
+  // Updates queries [B,Nq,C] and keys [B,HW,C] in place of the reference's returned pair; keys may
+  // come in with batch 1 (shared by every prompt) and leave with batch B.
   void forward(torch::Tensor& queries, torch::Tensor& keys, const torch::Tensor& query_pe, const torch::Tensor& key_pe);
   bool skip_first_layer_pe;
   DecoderAttention self_attn{nullptr}, cross_attn_token_to_image{nullptr}, cross_attn_image_to_token{nullptr};
@@ -30,7 +42,7 @@ TORCH_MODULE(TwoWayAttentionBlock);
 
 struct TwoWayTransformerImpl : torch::nn::Module {
   TwoWayTransformerImpl(int depth, int64_t embedding_dim, int64_t num_heads, int64_t mlp_dim, int64_t downsample_rate);
-  // image_embedding, image_pe [B,C,h,w]; point_embedding [B,N,C] -> (queries [B,N,C], keys [B,hw,C]).
+  // image_embedding, image_pe [B or 1,C,h,w]; point_embedding [B,N,C] -> (queries [B,N,C], keys [B,hw,C]).
   std::pair<torch::Tensor, torch::Tensor> forward(const torch::Tensor& image_embedding, const torch::Tensor& image_pe,
                                                   const torch::Tensor& point_embedding);
   torch::nn::ModuleList layers;
