@@ -138,6 +138,15 @@ TEST(SamAmgRun, FirstBatchMatchesDebugDump) {
           << some[i];
     EXPECT_THROW(model.upsample_masks({static_cast<int64_t>(all.size())}, sub), cls::Error);
   }
+  {  // An empty batch: no predictions, and nothing of the previous batch left to upsample.
+    SamPredictorAmgModel empty(tiny_predictor());
+    empty.set_image(im.rgb.data(), im.height, im.width);
+    std::vector<float> none = {1.0f}, sub;
+    empty.predict_points(pts, none);
+    empty.predict_points({}, none);
+    EXPECT_TRUE(none.empty());
+    EXPECT_THROW(empty.upsample_masks({0}, sub), cls::Error);
+  }
   const size_t plane = static_cast<size_t>(im.height) * im.width;
   for (size_t p = 0; p < pts.size(); ++p)
     for (size_t k = 0; k < per_point; ++k) {

@@ -47,6 +47,10 @@ void SamPredictorAmgModel::predict_points(const std::vector<Point2d>& points_102
   const int64_t side = cfg.image_embedding_size();
   const int64_t step = device.is_cpu() ? slice_count(2 * cfg.prompt_embed_dim * side * side * 4) : b;
   iou_predictions.clear();
+  if (b == 0) {  // nothing to upsample from this batch
+    low_res_logits_ = torch::empty({0, 1, 0, 0}, torch::TensorOptions().device(device));
+    return;
+  }
   const ScopedBlasThreads blas(1);  // see core/blas_threads.h
   for (int64_t s = 0; s < b; s += step) {
     const int64_t e = std::min(b, s + step);
