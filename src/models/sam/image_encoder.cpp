@@ -77,12 +77,6 @@ ViTAttentionImpl::ViTAttentionImpl(int64_t dim, int64_t num_heads_, bool qkv_bia
   }
 }
 
-namespace {
-// Largest attention band (float32) computed at once: under glibc's 32 MB mmap ceiling, so freed bands
-// are reused instead of being faulted in again, and near the size of a last-level cache.
-constexpr int64_t kAttentionBandBytes = int64_t(16) << 20;
-}  // namespace
-
 torch::Tensor ViTAttentionImpl::forward(const torch::Tensor& x) {
   const int64_t B = x.size(0), H = x.size(1), W = x.size(2), N = H * W;
   // qkv: [3, B*nHead, H*W, head_dim]
@@ -92,8 +86,8 @@ torch::Tensor ViTAttentionImpl::forward(const torch::Tensor& x) {
   if (use_rel_pos) Rh = get_rel_pos(H, H, rel_pos_h), Rw = get_rel_pos(W, W, rel_pos_w);
   // Bands of whole query rows (W tokens each) of `heads` heads: heads * rows * W * N floats at most.
   const int64_t row_bytes = W * N * int64_t(sizeof(float));
-  const int64_t rows = std::clamp<int64_t>(kAttentionBandBytes / row_bytes, 1, H);
-  const int64_t heads = rows < H ? 1 : std::max<int64_t>(1, kAttentionBandBytes / (H * row_bytes));
+  const int64_t rows = std::clamp<int64_t>(kCpuBlockBytes / row_bytes, 1, H);
+  const int64_t heads = rows < H ? 1 : std::max<int64_t>(1, kCpuBlockBytes / (H * row_bytes));
   const int64_t BH = q.size(0);
   auto out = torch::empty_like(q);
   const auto kt = k.transpose(-2, -1);

@@ -6,6 +6,13 @@
 
 namespace cls::sam {
 
+// The largest float32 block the CPU paths of SAM compute at once (encoder attention bands, AMG
+// decoder and upsampling slices). Under glibc's 32 MB mmap ceiling, so freed blocks are reused from
+// the heap instead of being mapped, faulted in and unmapped again on every step (the reference's
+// whole-batch tensors of 64-805 MB spent half the AMG's CPU time in the kernel), and near the size
+// of a last-level cache. Only the blocking changes: each row, prompt and mask is computed on its own.
+constexpr int64_t kCpuBlockBytes = int64_t(16) << 20;
+
 // LayerNorm over the channel dimension of an NCHW tensor (common.py LayerNorm2d): mean and biased
 // variance over C, (x - u) / sqrt(var + eps), then per-channel affine.
 struct LayerNorm2dImpl : torch::nn::Module {

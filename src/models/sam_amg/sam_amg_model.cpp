@@ -7,6 +7,7 @@
 
 #include "core/blas_threads.h"
 #include "core/error.h"
+#include "models/sam/sam_layers.h"
 #include "models/sam/sam_predictor.h"
 
 namespace cls::amg {
@@ -14,14 +15,8 @@ namespace cls::amg {
 namespace {
 
 // The reference decodes a whole points_per_batch (64) at once and upsamples every mask of it
-// through a 1024 x 1024 plane: tensors of 64-600 MB per step. glibc serves blocks above 32 MB with
-// mmap and returns them on free, so each batch faulted every page in again (half the AMG's CPU time
-// was the kernel's). Working in slices whose largest tensor stays under this budget lets freed
-// blocks be reused. Each prompt and each mask is computed on its own either way, so the slicing
-// does not change what is computed.
-constexpr int64_t kSliceBytes = int64_t(16) << 20;
-
-int64_t slice_count(int64_t bytes_per_item) { return std::max<int64_t>(1, kSliceBytes / std::max<int64_t>(1, bytes_per_item)); }
+// through a 1024 x 1024 plane: tensors of 64-600 MB per step. Slices of at most sam::kCpuBlockBytes.
+int64_t slice_count(int64_t bytes_per_item) { return std::max<int64_t>(1, sam::kCpuBlockBytes / std::max<int64_t>(1, bytes_per_item)); }
 
 }  // namespace
 
