@@ -1,7 +1,8 @@
 // SAM building blocks against hand-computed cases and independent formulas: Pillow's bilinear
 // resize, ResizeLongestSide, window partition, relative-position tables, the dense positional
 // encoding, weight-loading errors and the official ViT-B/L/H state_dict layouts; the banded encoder
-// attention and the decoder's folded cross-attention against the reference's order, in double.
+// attention, the decoder's folded and shared cross-attention and its channel-last upscaling against the
+// reference's order, in double.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +12,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "models/sam/image_encoder.h"
+#include "models/sam/mask_decoder.h"
 #include "models/sam/resize_longest_side.h"
 #include "models/sam/two_way_transformer.h"
 #include "sam_fixture.h"
@@ -145,6 +147,32 @@ TEST(SamMaskDecoder, FoldedCrossAttentionEqualsTheReferenceOrderInDouble) {
   const auto rep = one.expand({B, N, dim}), rep_pe = one_pe.expand({B, N, dim});
   EXPECT_LT(max_diff(attn->tokens_to_image(tokens, one_pe, one), attn(tokens, rep_pe, rep)), 1e-12);
   EXPECT_LT(max_diff(attn->image_to_tokens(one_pe, tokens_pe, tokens), attn(rep_pe, tokens_pe, tokens)), 1e-12);
+  // The same with the shared image's projections made once (SharedImageSide).
+  EXPECT_LT(max_diff(attn->tokens_to_projected_image(tokens, attn->k_proj(one_pe[0]), attn->v_proj(one[0])),
+                     attn(tokens, rep_pe, rep)),
+            1e-12);
+  EXPECT_LT(max_diff(attn->projected_image_to_tokens(attn->q_proj(one_pe[0]), tokens_pe, tokens),
+                     attn(rep_pe, tokens_pe, tokens)),
+            1e-12);
+}
+
+TEST(SamMaskDecoder, ChannelLastUpscalingEqualsTheReferenceModulesInDouble) {
+  // The fixture's decoder sizes; random weights (LayerNorm2d's affine too), 2 prompts on a 5 x 7 grid.
+  const auto cfg = sam_config_from_json_file(sam_fixture("config.json"));
+  torch::manual_seed(5);
+  MaskDecoder dec(cfg);
+  dec->to(torch::kDouble);
+  torch::NoGradGuard no_grad;
+  for (auto& p : dec->output_upscaling->parameters()) p.normal_(0, 0.5);
+  const int64_t b = 2, h = 5, w = 7, c = cfg.prompt_embed_dim, m = dec->num_mask_tokens;
+  const auto keys = torch::randn({b, h * w, c}, torch::kDouble);
+  const auto hyper = torch::randn({b, m, c / 8}, torch::kDouble);
+  // mask_decoder.py: upscale the [b, C, h, w] embedding with the modules, then hyper_in @ upscaled.
+  const auto upscaled = dec->output_upscaling->forward(keys.transpose(1, 2).reshape({b, c, h, w}));
+  const auto expected = torch::matmul(hyper, upscaled.view({b, c / 8, 16 * h * w})).view({b, m, 4 * h, 4 * w});
+  const auto got = dec->masks_from_keys(keys, hyper, h, w);
+  ASSERT_EQ(got.sizes(), expected.sizes());
+  EXPECT_LT((got - expected).abs().max().item<double>(), 1e-12);
 }
 
 TEST(SamPromptEncoder, DensePeMatchesTheFormulaInDouble) {

@@ -23,6 +23,7 @@ void SamPredictor::set_image(const uint8_t* rgb, int height, int width) {
   torch::NoGradGuard no_grad;
   const auto input = transformed_input(rgb, height, width);
   features_ = model_->image_encoder->forward(input);
+  shared_image_ = {};
   original_hw_ = {height, width};
   input_hw_ = transform_.target_shape(height, width);
 }
@@ -33,12 +34,14 @@ void SamPredictor::set_features(const torch::Tensor& features, std::pair<int, in
       features.size(2) != side || features.size(3) != side)
     throw Error("SAM: image embedding has the wrong shape for this model");
   features_ = features.to(device(), torch::kFloat);
+  shared_image_ = {};
   original_hw_ = original_hw;
   input_hw_ = transform_.target_shape(original_hw.first, original_hw.second);
 }
 
 void SamPredictor::reset_image() {
   features_ = torch::Tensor();
+  shared_image_ = {};
   original_hw_ = input_hw_ = {0, 0};
 }
 
@@ -81,8 +84,11 @@ SamPrediction SamPredictor::predict_batch(const torch::Tensor& point_coords, con
   const auto on_device = [&](const torch::Tensor& t) { return t.defined() ? t.to(dev) : t; };
   const auto emb = model_->prompt_encoder->forward(on_device(point_coords), on_device(point_labels), on_device(boxes),
                                                    on_device(mask_input));
-  const auto dec = model_->mask_decoder->forward(features_, model_->prompt_encoder->get_dense_pe(), emb.sparse, emb.dense,
-                                                 multimask_output);
+  const auto dense_pe = model_->prompt_encoder->get_dense_pe();
+  const bool no_mask = !mask_input.defined();
+  if (no_mask && !shared_image_.defined()) shared_image_ = model_->mask_decoder->share_image(features_, dense_pe, emb.dense);
+  const auto dec = model_->mask_decoder->forward(features_, dense_pe, emb.sparse, emb.dense, multimask_output,
+                                                 no_mask ? &shared_image_ : nullptr);
   SamPrediction out;
   out.low_res_logits = dec.low_res_masks;
   out.iou_predictions = dec.iou_predictions;

@@ -68,6 +68,9 @@ class SamPredictor {
   ResizeLongestSide transform_;
   torch::Tensor features_;
   std::pair<int, int> original_hw_{0, 0}, input_hw_{0, 0};
+  // The decoder's image side for prompts without mask input, made at the first such prediction for
+  // the image (MaskDecoderImpl::share_image).
+  SharedImageSide shared_image_;
 };
 
 }  // namespace cls::sam

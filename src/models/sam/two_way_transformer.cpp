@@ -57,25 +57,56 @@ torch::Tensor DecoderAttentionImpl::tokens_to_image(const torch::Tensor& q_in, c
   return out_proj(recombine_heads(o));
 }
 
+torch::Tensor DecoderAttentionImpl::tokens_to_projected_image(const torch::Tensor& q_in, const torch::Tensor& k,
+                                                              const torch::Tensor& v) {
+  const int64_t B = q_in.size(0), T = q_in.size(1), N = k.size(0), I = k.size(1), dh = I / num_heads;
+  // Every prompt's tokens against the one image, a product per head: [h, B*T, dh] x [h, dh, N].
+  const auto q = q_proj(q_in).view({B * T, num_heads, dh}).transpose(0, 1);
+  auto attn = torch::bmm(q, k.view({N, num_heads, dh}).permute({1, 2, 0}));
+  attn = torch::softmax(attn / std::sqrt(double(dh)), -1);
+  const auto o = torch::bmm(attn, v.view({N, num_heads, dh}).transpose(0, 1));  // [h, B*T, dh]
+  return out_proj(o.transpose(0, 1).reshape({B, T, I}));
+}
+
+// The tokens' values through out_proj, per head: out_proj(concat_h P_h V_h) = sum_h P_h (V_h W_o,h^T)
+// + b_o with W_o,h = out_proj.weight[:, h*dh:(h+1)*dh]. v [B,h,T,dh] -> [B, h*T, C].
+torch::Tensor DecoderAttentionImpl::values_through_out_proj(const torch::Tensor& v) const {
+  const int64_t B = v.size(0), dh = v.size(3), C = out_proj->weight.size(0);
+  const auto Wo = out_proj->weight.view({C, num_heads, dh}).permute({1, 2, 0});  // [h, dh, C]
+  return torch::einsum("bhtd,hdc->bhtc", {v, Wo}).reshape({B, -1, C});
+}
+
+// The image's attention to the tokens, from scores [B, h*T, N] (each position's softmax runs over a
+// prompt's T tokens of one head, dim 2 of [B, h, T, N], so it is vectorised over the N positions):
+// sum_(h,t) P[b, (h,t), n] u[b, (h,t), :] + b_o, with u the values through out_proj.
+torch::Tensor DecoderAttentionImpl::attend_to_tokens(const torch::Tensor& scores, const torch::Tensor& v_in) {
+  const int64_t B = v_in.size(0), T = v_in.size(1), C = v_in.size(2), N = scores.size(2);
+  const int64_t dh = out_proj->weight.size(1) / num_heads;
+  const auto attn = torch::softmax(scores.view({B, num_heads, T, N}) / std::sqrt(double(dh)), 2).view({B, num_heads * T, N});
+  const auto u = values_through_out_proj(separate_heads(v_proj(v_in), num_heads));  // [B, h*T, C]
+  return torch::baddbmm(out_proj->bias.view({1, 1, C}), attn.transpose(1, 2), u);
+}
+
+torch::Tensor DecoderAttentionImpl::projected_image_to_tokens(const torch::Tensor& q, const torch::Tensor& k_in,
+                                                              const torch::Tensor& v_in) {
+  const int64_t N = q.size(0), I = q.size(1), dh = I / num_heads, B = k_in.size(0), T = k_in.size(1);
+  // Every prompt's tokens against every position, a product per head: [h, B*T, dh] x [h, dh, N].
+  const auto k = k_proj(k_in).view({B * T, num_heads, dh}).transpose(0, 1);
+  const auto scores = torch::bmm(k, q.view({N, num_heads, dh}).permute({1, 2, 0}));  // [h, B*T, N]
+  return attend_to_tokens(scores.view({num_heads, B, T, N}).transpose(0, 1).reshape({B, num_heads * T, N}), v_in);
+}
+
 torch::Tensor DecoderAttentionImpl::image_to_tokens(const torch::Tensor& q_in, const torch::Tensor& k_in,
                                                     const torch::Tensor& v_in) {
   const int64_t Bi = q_in.size(0), N = q_in.size(1), C = q_in.size(2), B = k_in.size(0), T = k_in.size(1);
-  const auto k = separate_heads(k_proj(k_in), num_heads), v = separate_heads(v_proj(v_in), num_heads);  // [B,h,T,dh]
+  const auto k = separate_heads(k_proj(k_in), num_heads);  // [B,h,T,dh]
   const int64_t dh = k.size(3), ht = num_heads * T;
   const auto kq = torch::einsum("bhtd,hdc->bhtc", {k, per_head(q_proj->weight, num_heads)}).reshape({B, ht, C});
-  const auto kb = torch::einsum("bhtd,hd->bht", {k, q_proj->bias.view({num_heads, dh})}).reshape({B, 1, ht});
-  // out_proj(concat_h P_h V_h) = sum_h P_h (V_h W_o,h^T) + b_o with W_o,h = out_proj.weight[:, h*dh:(h+1)*dh].
-  const auto Wo = out_proj->weight.view({C, num_heads, dh}).permute({1, 2, 0});  // [h, dh, C]
-  const auto u = torch::einsum("bhtd,hdc->bhtc", {v, Wo}).reshape({B, ht, C});
-  torch::Tensor attn;
-  if (Bi == B) {
-    attn = torch::baddbmm(kb, q_in, kq.transpose(1, 2));  // [B,N,h*T]
-  } else {  // one image for every prompt: [N, B*h*T] in one product
-    attn = torch::addmm(kb.reshape({1, B * ht}), q_in[0], kq.reshape({B * ht, C}).t());
-    attn = attn.view({N, B, ht}).transpose(0, 1);
-  }
-  attn = torch::softmax(attn.reshape({B, N, num_heads, T}) / std::sqrt(double(dh)), -1);
-  return torch::baddbmm(out_proj->bias.view({1, 1, C}), attn.reshape({B, N, ht}), u);
+  const auto kb = torch::einsum("bhtd,hd->bht", {k, q_proj->bias.view({num_heads, dh})}).reshape({B, ht, 1});
+  if (Bi == B) return attend_to_tokens(torch::baddbmm(kb, kq, q_in.transpose(1, 2)), v_in);
+  // One image for every prompt: [B*h*T, N] in one product.
+  const auto scores = torch::addmm(kb.reshape({B * ht, 1}), kq.reshape({B * ht, C}), q_in[0].t());
+  return attend_to_tokens(scores.view({B, ht, N}), v_in);
 }
 
 TwoWayAttentionBlockImpl::TwoWayAttentionBlockImpl(int64_t dim, int64_t num_heads, int64_t mlp_dim, int64_t downsample_rate,
@@ -92,7 +123,7 @@ TwoWayAttentionBlockImpl::TwoWayAttentionBlockImpl(int64_t dim, int64_t num_head
 }
 
 void TwoWayAttentionBlockImpl::forward(torch::Tensor& queries, torch::Tensor& keys, const torch::Tensor& query_pe,
-                                       const torch::Tensor& key_pe) {
+                                       const torch::Tensor& key_pe, const SharedImageSide* shared) {
   // Self attention (the first layer replaces the queries: no residual, no PE).
   if (skip_first_layer_pe) {
     queries = self_attn(queries, queries, queries);
@@ -101,15 +132,16 @@ void TwoWayAttentionBlockImpl::forward(torch::Tensor& queries, torch::Tensor& ke
     queries = queries + self_attn(q, q, queries);
   }
   queries = norm1(queries);
-  // Tokens attend to the image.
+  // Tokens attend to the image. Both cross-attentions take keys + key_pe of the keys entering the block.
+  const auto k = shared ? torch::Tensor() : keys + key_pe;
   auto q = queries + query_pe;
-  auto k = keys + key_pe;
-  queries = norm2(queries + cross_attn_token_to_image->tokens_to_image(q, k, keys));
+  queries = norm2(queries + (shared ? cross_attn_token_to_image->tokens_to_projected_image(q, shared->key, shared->value)
+                                    : cross_attn_token_to_image->tokens_to_image(q, k, keys)));
   queries = norm3(queries + mlp(queries));
   // The image attends to the tokens.
   q = queries + query_pe;
-  k = keys + key_pe;
-  keys = norm4(keys + cross_attn_image_to_token->image_to_tokens(k, q, queries));
+  keys = norm4(keys + (shared ? cross_attn_image_to_token->projected_image_to_tokens(shared->query, q, queries)
+                              : cross_attn_image_to_token->image_to_tokens(k, q, queries)));
 }
 
 TwoWayTransformerImpl::TwoWayTransformerImpl(int depth, int64_t dim, int64_t num_heads, int64_t mlp_dim, int64_t downsample_rate) {
@@ -121,15 +153,25 @@ TwoWayTransformerImpl::TwoWayTransformerImpl(int depth, int64_t dim, int64_t num
 
 std::pair<torch::Tensor, torch::Tensor> TwoWayTransformerImpl::forward(const torch::Tensor& image_embedding,
                                                                        const torch::Tensor& image_pe,
-                                                                       const torch::Tensor& point_embedding) {
+                                                                       const torch::Tensor& point_embedding,
+                                                                       const SharedImageSide* shared) {
   const auto keys_pe = image_pe.flatten(2).permute({0, 2, 1});
   auto keys = image_embedding.flatten(2).permute({0, 2, 1});
   auto queries = point_embedding;
-  for (const auto& layer : *layers) layer->as<TwoWayAttentionBlock>()->forward(queries, keys, point_embedding, keys_pe);
+  for (size_t i = 0; i < layers->size(); ++i)
+    layers[i]->as<TwoWayAttentionBlock>()->forward(queries, keys, point_embedding, keys_pe, i == 0 ? shared : nullptr);
   const auto q = queries + point_embedding;
   const auto k = keys + keys_pe;
   queries = norm_final_attn(queries + final_attn_token_to_image->tokens_to_image(q, k, keys));
   return {queries, keys};
+}
+
+SharedImageSide TwoWayTransformerImpl::share_image(const torch::Tensor& image_embedding, const torch::Tensor& image_pe) {
+  const auto keys = image_embedding.flatten(2).permute({0, 2, 1})[0];  // [N, C]
+  const auto k = keys + image_pe.flatten(2).permute({0, 2, 1})[0];
+  const auto& first = layers[0]->as<TwoWayAttentionBlock>();
+  return {first->cross_attn_token_to_image->k_proj(k), first->cross_attn_token_to_image->v_proj(keys),
+          first->cross_attn_image_to_token->q_proj(k)};
 }
 
 }  // namespace cls::sam
