@@ -154,6 +154,15 @@ TEST(SamMaskDecoder, FoldedCrossAttentionEqualsTheReferenceOrderInDouble) {
   EXPECT_LT(max_diff(attn->projected_image_to_tokens(attn->q_proj(one_pe[0]), tokens_pe, tokens),
                      attn(rep_pe, tokens_pe, tokens)),
             1e-12);
+  // Added in place to a residual the caller owns: residual + attention, in the residual's storage.
+  const auto residual = torch::randn({B, N, dim}, torch::kDouble);
+  for (const bool projected : {false, true}) {
+    auto into = residual.clone();
+    const auto sum = projected ? attn->projected_image_to_tokens(attn->q_proj(one_pe[0]), tokens_pe, tokens, into)
+                               : attn->image_to_tokens(one_pe, tokens_pe, tokens, into);
+    EXPECT_EQ(sum.data_ptr(), into.data_ptr());
+    EXPECT_LT(max_diff(sum, residual + attn(rep_pe, tokens_pe, tokens)), 1e-12);
+  }
 }
 
 TEST(SamMaskDecoder, ChannelLastUpscalingEqualsTheReferenceModulesInDouble) {

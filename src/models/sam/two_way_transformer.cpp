@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "core/error.h"
+
 namespace cls::sam {
 
 DecoderAttentionImpl::DecoderAttentionImpl(int64_t dim, int64_t num_heads_, int64_t downsample_rate) : num_heads(num_heads_) {
@@ -79,34 +81,43 @@ torch::Tensor DecoderAttentionImpl::values_through_out_proj(const torch::Tensor&
 // The image's attention to the tokens, from scores [B, h*T, N] (each position's softmax runs over a
 // prompt's T tokens of one head, dim 2 of [B, h, T, N], so it is vectorised over the N positions):
 // sum_(h,t) P[b, (h,t), n] u[b, (h,t), :] + b_o, with u the values through out_proj.
-torch::Tensor DecoderAttentionImpl::attend_to_tokens(const torch::Tensor& scores, const torch::Tensor& v_in) {
+torch::Tensor DecoderAttentionImpl::attend_to_tokens(const torch::Tensor& scores, const torch::Tensor& v_in,
+                                                     torch::Tensor into) {
   const int64_t B = v_in.size(0), T = v_in.size(1), C = v_in.size(2), N = scores.size(2);
   const int64_t dh = out_proj->weight.size(1) / num_heads;
   const auto attn = torch::softmax(scores.view({B, num_heads, T, N}) / std::sqrt(double(dh)), 2).view({B, num_heads * T, N});
   const auto u = values_through_out_proj(separate_heads(v_proj(v_in), num_heads));  // [B, h*T, C]
-  return torch::baddbmm(out_proj->bias.view({1, 1, C}), attn.transpose(1, 2), u);
+  if (into.defined()) {
+    if (into.sizes() != torch::IntArrayRef{B, N, C} || !into.is_contiguous())
+      throw Error("SAM decoder attention: the tensor to add to must be a contiguous [B, N, C]");
+    into.add_(out_proj->bias);
+  } else {
+    into = out_proj->bias.expand({B, N, C}).clone(at::MemoryFormat::Contiguous);  // never a view of the bias
+  }
+  return into.baddbmm_(attn.transpose(1, 2), u);
 }
 
 torch::Tensor DecoderAttentionImpl::projected_image_to_tokens(const torch::Tensor& q, const torch::Tensor& k_in,
-                                                              const torch::Tensor& v_in) {
+                                                              const torch::Tensor& v_in, torch::Tensor into) {
   const int64_t N = q.size(0), I = q.size(1), dh = I / num_heads, B = k_in.size(0), T = k_in.size(1);
   // Every prompt's tokens against every position, a product per head: [h, B*T, dh] x [h, dh, N].
   const auto k = k_proj(k_in).view({B * T, num_heads, dh}).transpose(0, 1);
   const auto scores = torch::bmm(k, q.view({N, num_heads, dh}).permute({1, 2, 0}));  // [h, B*T, N]
-  return attend_to_tokens(scores.view({num_heads, B, T, N}).transpose(0, 1).reshape({B, num_heads * T, N}), v_in);
+  return attend_to_tokens(scores.view({num_heads, B, T, N}).transpose(0, 1).reshape({B, num_heads * T, N}), v_in,
+                          std::move(into));
 }
 
 torch::Tensor DecoderAttentionImpl::image_to_tokens(const torch::Tensor& q_in, const torch::Tensor& k_in,
-                                                    const torch::Tensor& v_in) {
+                                                    const torch::Tensor& v_in, torch::Tensor into) {
   const int64_t Bi = q_in.size(0), N = q_in.size(1), C = q_in.size(2), B = k_in.size(0), T = k_in.size(1);
   const auto k = separate_heads(k_proj(k_in), num_heads);  // [B,h,T,dh]
   const int64_t dh = k.size(3), ht = num_heads * T;
   const auto kq = torch::einsum("bhtd,hdc->bhtc", {k, per_head(q_proj->weight, num_heads)}).reshape({B, ht, C});
   const auto kb = torch::einsum("bhtd,hd->bht", {k, q_proj->bias.view({num_heads, dh})}).reshape({B, ht, 1});
-  if (Bi == B) return attend_to_tokens(torch::baddbmm(kb, kq, q_in.transpose(1, 2)), v_in);
+  if (Bi == B) return attend_to_tokens(torch::baddbmm(kb, kq, q_in.transpose(1, 2)), v_in, std::move(into));
   // One image for every prompt: [B*h*T, N] in one product.
   const auto scores = torch::addmm(kb.reshape({B * ht, 1}), kq.reshape({B * ht, C}), q_in[0].t());
-  return attend_to_tokens(scores.view({B, ht, N}), v_in);
+  return attend_to_tokens(scores.view({B, ht, N}), v_in, std::move(into));
 }
 
 TwoWayAttentionBlockImpl::TwoWayAttentionBlockImpl(int64_t dim, int64_t num_heads, int64_t mlp_dim, int64_t downsample_rate,
@@ -123,7 +134,7 @@ TwoWayAttentionBlockImpl::TwoWayAttentionBlockImpl(int64_t dim, int64_t num_head
 }
 
 void TwoWayAttentionBlockImpl::forward(torch::Tensor& queries, torch::Tensor& keys, const torch::Tensor& query_pe,
-                                       const torch::Tensor& key_pe, const SharedImageSide* shared) {
+                                       const torch::Tensor& key_pe, const SharedImageSide* shared, bool keys_owned) {
   // Self attention (the first layer replaces the queries: no residual, no PE).
   if (skip_first_layer_pe) {
     queries = self_attn(queries, queries, queries);
@@ -140,8 +151,14 @@ void TwoWayAttentionBlockImpl::forward(torch::Tensor& queries, torch::Tensor& ke
   queries = norm3(queries + mlp(queries));
   // The image attends to the tokens.
   q = queries + query_pe;
-  keys = norm4(keys + (shared ? cross_attn_image_to_token->projected_image_to_tokens(shared->query, q, queries)
-                              : cross_attn_image_to_token->image_to_tokens(k, q, queries)));
+  // keys + attention, summed in place: into the keys themselves when this block owns them (nothing
+  // reads them after this), else into a copy.
+  const int64_t B = queries.size(0), N = keys.size(1), C = keys.size(2);
+  const auto& residual = shared ? shared->image : keys;
+  auto into = keys_owned && keys.size(0) == B && keys.is_contiguous() ? keys
+                                                                      : residual.expand({B, N, C}).clone(at::MemoryFormat::Contiguous);
+  keys = norm4(shared ? cross_attn_image_to_token->projected_image_to_tokens(shared->query, q, queries, std::move(into))
+                      : cross_attn_image_to_token->image_to_tokens(k, q, queries, std::move(into)));
 }
 
 TwoWayTransformerImpl::TwoWayTransformerImpl(int depth, int64_t dim, int64_t num_heads, int64_t mlp_dim, int64_t downsample_rate) {
@@ -155,11 +172,13 @@ std::pair<torch::Tensor, torch::Tensor> TwoWayTransformerImpl::forward(const tor
                                                                        const torch::Tensor& image_pe,
                                                                        const torch::Tensor& point_embedding,
                                                                        const SharedImageSide* shared) {
-  const auto keys_pe = image_pe.flatten(2).permute({0, 2, 1});
+  // Contiguous: every block and the final attention add it to the keys.
+  const auto keys_pe = image_pe.flatten(2).permute({0, 2, 1}).contiguous();
   auto keys = image_embedding.flatten(2).permute({0, 2, 1});
   auto queries = point_embedding;
   for (size_t i = 0; i < layers->size(); ++i)
-    layers[i]->as<TwoWayAttentionBlock>()->forward(queries, keys, point_embedding, keys_pe, i == 0 ? shared : nullptr);
+    layers[i]->as<TwoWayAttentionBlock>()->forward(queries, keys, point_embedding, keys_pe, i == 0 ? shared : nullptr,
+                                                   /*keys_owned=*/i > 0);
   const auto q = queries + point_embedding;
   const auto k = keys + keys_pe;
   queries = norm_final_attn(queries + final_attn_token_to_image->tokens_to_image(q, k, keys));
@@ -171,7 +190,7 @@ SharedImageSide TwoWayTransformerImpl::share_image(const torch::Tensor& image_em
   const auto k = keys + image_pe.flatten(2).permute({0, 2, 1})[0];
   const auto& first = layers[0]->as<TwoWayAttentionBlock>();
   return {first->cross_attn_token_to_image->k_proj(k), first->cross_attn_token_to_image->v_proj(keys),
-          first->cross_attn_image_to_token->q_proj(k)};
+          first->cross_attn_image_to_token->q_proj(k), keys.contiguous()};
 }
 
 }  // namespace cls::sam

@@ -15,6 +15,7 @@ namespace cls::sam {
 struct SharedImageSide {
   torch::Tensor key, value;  // tokens to image: k_proj(src + pe), v_proj(src)
   torch::Tensor query;       // image to tokens: q_proj(src + pe)
+  torch::Tensor image;       // src itself, contiguous [N, C]: the image's residual
   bool defined() const { return key.defined(); }
 };
 
@@ -31,17 +32,22 @@ struct DecoderAttentionImpl : torch::nn::Module {
   // image side may have batch 1 for B prompts that share it (no mask input); it is never copied.
   // tokens_to_image: q [B,T,C] tokens; k, v [B or 1, N, C] image -> [B,T,C].
   torch::Tensor tokens_to_image(const torch::Tensor& q, const torch::Tensor& k, const torch::Tensor& v);
-  // image_to_tokens: q [B or 1, N, C] image; k, v [B,T,C] tokens -> [B,N,C].
-  torch::Tensor image_to_tokens(const torch::Tensor& q, const torch::Tensor& k, const torch::Tensor& v);
+  // image_to_tokens: q [B or 1, N, C] image; k, v [B,T,C] tokens -> [B,N,C]. With `into` (a
+  // contiguous [B,N,C] tensor the caller owns, e.g. the block's residual) the result is added to it
+  // in place and returned: no [B,N,C] pass for the bias or for the residual sum.
+  torch::Tensor image_to_tokens(const torch::Tensor& q, const torch::Tensor& k, const torch::Tensor& v,
+                                torch::Tensor into = {});
   // The same two with the image side already projected for every prompt (SharedImageSide): the
   // reference's order. tokens_to_projected_image: q [B,T,C]; k, v [N, C/r] -> [B,T,C].
   torch::Tensor tokens_to_projected_image(const torch::Tensor& q, const torch::Tensor& k, const torch::Tensor& v);
   // projected_image_to_tokens: q [N, C/r]; k, v [B,T,C] tokens -> [B,N,C] (out_proj folded as above).
-  torch::Tensor projected_image_to_tokens(const torch::Tensor& q, const torch::Tensor& k, const torch::Tensor& v);
+  torch::Tensor projected_image_to_tokens(const torch::Tensor& q, const torch::Tensor& k, const torch::Tensor& v,
+                                          torch::Tensor into = {});
   // The tokens' values v [B,h,T,dh] through out_proj, per head: [B, h*T, C] (image_to_tokens).
   torch::Tensor values_through_out_proj(const torch::Tensor& v) const;
-  // The image-to-tokens attention from its scores [B, h*T, N] and the tokens' values v_in [B,T,C].
-  torch::Tensor attend_to_tokens(const torch::Tensor& scores, const torch::Tensor& v_in);
+  // The image-to-tokens attention from its scores [B, h*T, N] and the tokens' values v_in [B,T,C],
+  // added to `into` as image_to_tokens says.
+  torch::Tensor attend_to_tokens(const torch::Tensor& scores, const torch::Tensor& v_in, torch::Tensor into);
   int64_t num_heads;
   torch::nn::Linear q_proj{nullptr}, k_proj{nullptr}, v_proj{nullptr}, out_proj{nullptr};
 };
@@ -52,9 +58,10 @@ struct TwoWayAttentionBlockImpl : torch::nn::Module {
                            bool skip_first_layer_pe);
   // Updates queries [B,Nq,C] and keys [B,HW,C] in place of the reference's returned pair; keys may
   // come in with batch 1 (shared by every prompt) and leave with batch B. `shared`, when given, is
-  // the projected image side of these keys (first block only).
+  // the projected image side of these keys (first block only). keys_owned: keys is the previous
+  // block's output, which this block may overwrite (the first block's keys are the caller's).
   void forward(torch::Tensor& queries, torch::Tensor& keys, const torch::Tensor& query_pe, const torch::Tensor& key_pe,
-               const SharedImageSide* shared = nullptr);
+               const SharedImageSide* shared, bool keys_owned);
   bool skip_first_layer_pe;
   DecoderAttention self_attn{nullptr}, cross_attn_token_to_image{nullptr}, cross_attn_image_to_token{nullptr};
   torch::nn::LayerNorm norm1{nullptr}, norm2{nullptr}, norm3{nullptr}, norm4{nullptr};
