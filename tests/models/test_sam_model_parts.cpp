@@ -104,8 +104,9 @@ TEST(SamImageEncoder, RelPosTableByHand) {
 }
 
 TEST(SamImageEncoder, BandedAttentionEqualsTheWholeMatrixInDouble) {
-  // A 48 x 48 global grid: one attention row of 2304 keys is 442 KB, so the 16 MB bands hold 37 of
-  // the 48 query rows and the grid is done in two bands per head.
+  // A 48 x 48 global grid: one attention row of 2304 keys is 442 KB, so the bands (16 MB, divided
+  // among the threads that take bands side by side) hold 37 of the 48 query rows or fewer, and each
+  // head takes two bands or more.
   torch::manual_seed(3);
   const int64_t dim = 16, heads = 2, side = 48;
   ViTAttention attn(dim, heads, /*qkv_bias=*/true, /*use_rel_pos=*/true, std::make_pair(side, side));
@@ -124,7 +125,13 @@ TEST(SamImageEncoder, BandedAttentionEqualsTheWholeMatrixInDouble) {
   auto a = add_decomposed_rel_pos(torch::matmul(q * attn->scale, k.transpose(-2, -1)), q, Rh, Rw, {side, side}, {side, side});
   const auto out = torch::matmul(a.softmax(-1), v).view({1, heads, side, side, -1}).permute({0, 2, 3, 1, 4}).reshape({1, side, side, -1});
   const auto expected = attn->proj(out);
-  EXPECT_LT((attn(x) - expected).abs().max().item<double>(), 1e-12);
+  // Bands one after another (one thread) and side by side, with the linear layers split by rows.
+  const int threads = at::get_num_threads();
+  for (const int n : {1, 2}) {
+    at::set_num_threads(n);
+    EXPECT_LT((attn(x) - expected).abs().max().item<double>(), 1e-12) << n << " threads";
+  }
+  at::set_num_threads(threads);
 }
 
 TEST(SamMaskDecoder, FoldedCrossAttentionEqualsTheReferenceOrderInDouble) {

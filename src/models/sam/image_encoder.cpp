@@ -1,7 +1,11 @@
 #include "models/sam/image_encoder.h"
 
+#include <ATen/Parallel.h>
+
 #include <algorithm>
 #include <cmath>
+
+#include "core/blas_threads.h"
 
 namespace cls::sam {
 
@@ -80,28 +84,37 @@ ViTAttentionImpl::ViTAttentionImpl(int64_t dim, int64_t num_heads_, bool qkv_bia
 torch::Tensor ViTAttentionImpl::forward(const torch::Tensor& x) {
   const int64_t B = x.size(0), H = x.size(1), W = x.size(2), N = H * W;
   // qkv: [3, B*nHead, H*W, head_dim]
-  const auto qkv_ = qkv(x).reshape({B, N, 3, num_heads, -1}).permute({2, 0, 3, 1, 4}).reshape({3, B * num_heads, N, -1});
+  const auto qkv_ = parallel_rows_linear(x, *qkv).reshape({B, N, 3, num_heads, -1}).permute({2, 0, 3, 1, 4}).reshape({3, B * num_heads, N, -1});
   const auto q = qkv_[0], k = qkv_[1], v = qkv_[2];
   torch::Tensor Rh, Rw;
   if (use_rel_pos) Rh = get_rel_pos(H, H, rel_pos_h), Rw = get_rel_pos(W, W, rel_pos_w);
-  // Bands of whole query rows (W tokens each) of `heads` heads: heads * rows * W * N floats at most.
+  // Bands of whole query rows (W tokens each) of `heads` heads: heads * rows * W * N floats at most,
+  // the block budget shared by the threads that take bands side by side (split_over_threads).
+  const bool split = split_over_threads(x);
+  const int64_t budget = kCpuBlockBytes / (split ? at::get_num_threads() : 1);
   const int64_t row_bytes = W * N * int64_t(sizeof(float));
-  const int64_t rows = std::clamp<int64_t>(kCpuBlockBytes / row_bytes, 1, H);
-  const int64_t heads = rows < H ? 1 : std::max<int64_t>(1, kCpuBlockBytes / (H * row_bytes));
-  const int64_t BH = q.size(0);
+  const int64_t rows = std::clamp<int64_t>(budget / row_bytes, 1, H);
+  const int64_t heads = rows < H ? 1 : std::max<int64_t>(1, budget / (H * row_bytes));
+  const int64_t BH = q.size(0), row_bands = (H + rows - 1) / rows, bands = (BH + heads - 1) / heads * row_bands;
   auto out = torch::empty_like(q);
   const auto kt = k.transpose(-2, -1);
-  for (int64_t h0 = 0; h0 < BH; h0 += heads) {
-    const int64_t h1 = std::min(BH, h0 + heads);
-    for (int64_t y0 = 0; y0 < H; y0 += rows) {
-      const int64_t y1 = std::min(H, y0 + rows);
-      const auto qb = q.slice(0, h0, h1).slice(1, y0 * W, y1 * W);
-      auto attn = torch::matmul(qb * scale, kt.slice(0, h0, h1));
-      if (use_rel_pos) attn = add_decomposed_rel_pos(attn, qb, Rh.slice(0, y0, y1), Rw, {y1 - y0, W}, {H, W});
-      out.slice(0, h0, h1).slice(1, y0 * W, y1 * W).copy_(torch::matmul(attn.softmax(-1), v.slice(0, h0, h1)));
-    }
+  const auto band = [&](int64_t i) {
+    const int64_t h0 = i / row_bands * heads, h1 = std::min(BH, h0 + heads);
+    const int64_t y0 = i % row_bands * rows, y1 = std::min(H, y0 + rows);
+    const auto qb = q.slice(0, h0, h1).slice(1, y0 * W, y1 * W);
+    auto attn = torch::matmul(qb * scale, kt.slice(0, h0, h1));
+    if (use_rel_pos) attn = add_decomposed_rel_pos(attn, qb, Rh.slice(0, y0, y1), Rw, {y1 - y0, W}, {H, W});
+    out.slice(0, h0, h1).slice(1, y0 * W, y1 * W).copy_(torch::matmul(attn.softmax(-1), v.slice(0, h0, h1)));
+  };
+  if (split) {
+    at::parallel_for(0, bands, 1, [&](int64_t b0, int64_t b1) {
+      torch::NoGradGuard no_grad;  // the worker threads' own grad mode
+      for (int64_t i = b0; i < b1; ++i) band(i);
+    });
+  } else {
+    for (int64_t i = 0; i < bands; ++i) band(i);
   }
-  return proj(out.view({B, num_heads, H, W, -1}).permute({0, 2, 3, 1, 4}).reshape({B, H, W, -1}));
+  return parallel_rows_linear(out.view({B, num_heads, H, W, -1}).permute({0, 2, 3, 1, 4}).reshape({B, H, W, -1}), *proj);
 }
 
 ViTBlockImpl::ViTBlockImpl(const SamConfig& cfg, int64_t window_size_) : window_size(window_size_) {
@@ -154,7 +167,12 @@ ImageEncoderViTImpl::ImageEncoderViTImpl(const SamConfig& cfg) {
 torch::Tensor ImageEncoderViTImpl::forward(const torch::Tensor& input) {
   auto x = patch_embed(input);
   if (pos_embed.defined()) x = x + pos_embed;
-  for (const auto& blk : *blocks) x = blk->as<ViTBlock>()->forward(x);
+  {
+    // The blocks' GEMMs run on LibTorch's threads (parallel_rows_linear, attention bands), each BLAS
+    // call on its calling thread.
+    const ScopedBlasThreads blas(split_over_threads(x) ? 1 : blas_threads());
+    for (const auto& blk : *blocks) x = blk->as<ViTBlock>()->forward(x);
+  }
   return neck->forward(x.permute({0, 3, 1, 2}));
 }
 

@@ -1,5 +1,7 @@
 #include "models/sam/sam_layers.h"
 
+#include <ATen/Parallel.h>
+
 namespace cls::sam {
 
 LayerNorm2dImpl::LayerNorm2dImpl(int64_t channels, double eps_) : eps(eps_) {
@@ -14,6 +16,27 @@ torch::Tensor LayerNorm2dImpl::forward(const torch::Tensor& x) {
   return weight.view({-1, 1, 1}) * y + bias.view({-1, 1, 1});
 }
 
+bool split_over_threads(const torch::Tensor& x) {
+  return x.device().is_cpu() && !torch::GradMode::is_enabled() && at::get_num_threads() > 1;
+}
+
+torch::Tensor parallel_rows_linear(const torch::Tensor& x, torch::nn::LinearImpl& lin) {
+  const int64_t threads = at::get_num_threads(), in = x.size(-1), rows = x.numel() / std::max<int64_t>(1, in);
+  if (!split_over_threads(x) || rows < 64 * threads) return lin.forward(x);
+  const auto x2 = x.reshape({rows, in});
+  const auto wt = lin.weight.t();
+  auto out = torch::empty({rows, lin.weight.size(0)}, x.options());
+  at::parallel_for(0, rows, (rows + threads - 1) / threads, [&](int64_t r0, int64_t r1) {
+    torch::NoGradGuard no_grad;  // the worker threads' own grad mode
+    auto block = out.slice(0, r0, r1);
+    if (lin.bias.defined()) at::addmm_out(block, lin.bias, x2.slice(0, r0, r1), wt);
+    else at::mm_out(block, x2.slice(0, r0, r1), wt);
+  });
+  auto sizes = x.sizes().vec();
+  sizes.back() = lin.weight.size(0);
+  return out.view(sizes);
+}
+
 torch::Tensor activate(const torch::Tensor& x, Activation act) {
   return act == Activation::GELU ? torch::gelu(x) : torch::relu(x);
 }
@@ -23,7 +46,9 @@ MLPBlockImpl::MLPBlockImpl(int64_t embedding_dim, int64_t mlp_dim, Activation ac
   lin2 = register_module("lin2", torch::nn::Linear(mlp_dim, embedding_dim));
 }
 
-torch::Tensor MLPBlockImpl::forward(const torch::Tensor& x) { return lin2(activate(lin1(x), act)); }
+torch::Tensor MLPBlockImpl::forward(const torch::Tensor& x) {
+  return parallel_rows_linear(activate(parallel_rows_linear(x, *lin1), act), *lin2);
+}
 
 MLPImpl::MLPImpl(int64_t input_dim, int64_t hidden_dim, int64_t output_dim, int num_layers) {
   for (int i = 0; i < num_layers; ++i) {
