@@ -3,7 +3,8 @@
 # synthetic scene, then the same scene given city models that are wrong in known ways, the truth kept
 # aside: a city transform off by growing errors (`synth --city-error`), and per variant a model that lacks
 # openings (`drop=F`: `synth --drop-openings F`) or is the building's LoD2 model (`lod2`, where the data
-# has one). Every run uses the image-segments provider (segments of the images, features from the exact
+# has one), and a scene whose photos show N extra trees just in front of the facades that the city model
+# lacks (`occl=N`: `synth --occluders N`; new photos, so its own photometric model and its own baseline). Every run uses the image-segments provider (segments of the images, features from the exact
 # ground truth under them: nothing comes from the label maps, so a wrong model shows), one shared
 # photometric model per building, and scores 2D on the held-out views and 3D on the ground-truth cloud,
 # which `synth` renders from the true geometry and the method never sees.
@@ -12,13 +13,14 @@
 # transform (--align off), CityLangSplat with the refinement (--align auto), and the label maps of the
 # transform used; per building and the mean over the buildings.
 # What it shows: how much a wrong model costs the CityGML terms, and whether `align` wins it back.
-# What it does not: CLIP/SAM (ground-truth features plus noise), more occluders, real SfM points.
+# What it does not: CLIP/SAM (ground-truth features plus noise), real SfM points.
 # Also per building, on the exact scene: the mechanics benchmark (`--models synthetic`, docs/benchmarks.md
 # "Mechanics benchmark") in its own columns.
 #   bash bench/robustness.sh [--work DIR] [--buildings "fzk citygml4j texture4"] [--errors "0 t=0.25 ..."]
-#                            [--variants "exact drop=0.3"] [--rgb-iterations N] [--language-iterations N]
+#                            [--variants "exact drop=0.3 lod2 occl=8"] [--rgb-iterations N] [--language-iterations N]
 #                            [--report-only]   (the table, JSON and plot of the runs WORK already holds)
-# A building's photometric model is trained once into WORK/<building>/rgb and reused when present (and
+# A building's photometric model is trained once per set of photos into WORK/<building>/rgb (rgb-occl=N)
+# and reused when present (and
 # `run` reuses every stage whose inputs did not change).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -37,15 +39,24 @@ while [ $# -gt 0 ]; do
     --language-iterations) language_iterations=$2; shift 2 ;;
     --report-only) report_only=1; shift ;;
     *) echo "usage: $0 [--work DIR (/tmp/cls-bench-robustness)] [--buildings \"fzk citygml4j texture4\"]" \
-            "[--errors \"0 t=0.25 t=0.5,r=0.5 t=1,r=2\"] [--variants \"exact drop=0.3\" (also lod2)]" \
+            "[--errors \"0 t=0.25 t=0.5,r=0.5 t=1,r=2\"] [--variants \"exact drop=0.3\" (also lod2, occl=N)]" \
             "[--rgb-iterations 1500] [--language-iterations 300] [--report-only]" >&2
        exit 2 ;;
   esac
 done
 case " $errors " in *" 0 "*) ;; *) echo "robustness.sh: --errors must include 0 (the baseline and the reference row run there)" >&2; exit 2 ;; esac
-case " $variants " in *" exact "*) ;; *) echo "robustness.sh: --variants must include exact (the baseline runs there)" >&2; exit 2 ;; esac
+# The exact photos' baseline runs with the exact model; occl=N scenes have their own photos and baseline.
+case " $variants " in
+  *" exact "*) ;;
+  *) for v in $variants; do
+       case $v in occl=*) ;; *) echo "robustness.sh: --variants must include exact with $v (the baseline of its photos runs there)" >&2; exit 2 ;; esac
+     done ;;
+esac
 for v in $variants; do
-  case $v in exact|lod2|drop=0.*|drop=1) ;; *) echo "robustness.sh: unknown variant $v (exact, lod2, drop=FRACTION)" >&2; exit 2 ;; esac
+  case $v in
+    exact|lod2|drop=0.*|drop=1|occl=[1-9]|occl=[1-9][0-9]) ;;
+    *) echo "robustness.sh: unknown variant $v (exact, lod2, drop=FRACTION, occl=COUNT in 1..99)" >&2; exit 2 ;;
+  esac
 done
 [ -x "$bin" ] || { echo "robustness.sh: $bin not found: build first (cmake --build build)" >&2; exit 1; }
 data=$(cd "$repo/../shared/data/citygml" 2>/dev/null && pwd || echo "$repo/data/citygml")
@@ -59,14 +70,15 @@ synth() {  # synth OUT VARIANT ERROR
   case $2 in
     lod2) args+=(--given-city "${lod2[$b]}" --given-lod 2) ;;
     drop=*) args+=(--drop-openings "${2#drop=}") ;;
+    occl=*) args+=(--occluders "${2#occl=}") ;;
   esac
   [ "$3" = 0 ] || args+=(--city-error "$3")
   "$bin" "${args[@]}"
 }
-run() {  # [MODELS=...] run SCENE OUT [run options]
+run() {  # [MODELS=...] run SCENE OUT [run options], with $rgb the photometric model of SCENE's photos
   local scene=$1 out=$2; shift 2
   echo "  run $(basename "$out") ($(date +%H:%M:%S))" >&2
-  "$bin" -q run "$scene" --models "${MODELS:-image-segments}" --rgb-model "$work/$b/rgb/point_cloud.ply" \
+  "$bin" -q run "$scene" --models "${MODELS:-image-segments}" --rgb-model "$rgb/point_cloud.ply" \
     --language-iterations "$language_iterations" --out "$out" "$@" > "$out.log" 2>&1 \
     || { echo "robustness.sh: run failed, see $out.log" >&2; tail -5 "$out.log" >&2; exit 1; }
 }
@@ -74,16 +86,20 @@ for b in $buildings; do
   [ "$report_only" = 0 ] || break
   [ -n "${city[$b]:-}" ] || { echo "robustness.sh: unknown building $b (fzk, citygml4j, texture4)" >&2; exit 2; }
   mkdir -p "$work/$b"
-  synth "$work/$b/scene-0" exact 0
-  if [ ! -f "$work/$b/rgb/point_cloud.ply" ]; then
-    echo "$b: train-rgb ($rgb_iterations iterations)" >&2
-    "$bin" -q train-rgb --scene "$work/$b/scene-0" --out "$work/$b/rgb" --iterations "$rgb_iterations" \
-      --densify-until $((rgb_iterations / 2)) > "$work/$b/rgb.log" 2>&1 \
-      || { echo "robustness.sh: train-rgb failed, see $work/$b/rgb.log" >&2; tail -5 "$work/$b/rgb.log" >&2; exit 1; }
-  fi
   for v in $variants; do
     if [ "$v" = lod2 ] && [ -z "${lod2[$b]:-}" ]; then echo "$b: no LoD2 model in the data: lod2 skipped" >&2; continue; fi
     prefix=""; [ "$v" = exact ] || prefix="$v-"  # the exact model's folders keep their names
+    # The photos: occluders change them, the other variants change only the city model they are given.
+    case $v in occl=*) photos=$v ;; *) photos=exact ;; esac
+    photos_scene=$work/$b/scene-0 rgb=$work/$b/rgb
+    [ "$photos" = exact ] || photos_scene=$work/$b/scene-$photos-0 rgb=$work/$b/rgb-$photos
+    synth "$photos_scene" "$photos" 0
+    if [ ! -f "$rgb/point_cloud.ply" ]; then
+      echo "$b: train-rgb on $(basename "$photos_scene") ($rgb_iterations iterations)" >&2
+      "$bin" -q train-rgb --scene "$photos_scene" --out "$rgb" --iterations "$rgb_iterations" \
+        --densify-until $((rgb_iterations / 2)) > "$rgb.log" 2>&1 \
+        || { echo "robustness.sh: train-rgb failed, see $rgb.log" >&2; tail -5 "$rgb.log" >&2; exit 1; }
+    fi
     for e in $errors; do
       scene=$work/$b/scene-$prefix$e
       synth "$scene" "$v" "$e"
@@ -92,6 +108,8 @@ for b in $buildings; do
         # autoencoder, and LangSplat as published (its 3-d autoencoder, normalised splatting).
         run "$scene" "$work/$b/run-0-off" --align off --baseline langsplat,langsplat-original
         MODELS=synthetic run "$scene" "$work/$b/run-0-synthetic" --align off  # the mechanics benchmark
+      elif [ "$photos" != exact ] && [ "$e" = 0 ]; then  # other photos: their own baseline
+        run "$scene" "$work/$b/run-$prefix$e-off" --align off --baseline langsplat
       else
         run "$scene" "$work/$b/run-$prefix$e-off" --align off --no-baseline
         [ "$e" = 0 ] || run "$scene" "$work/$b/run-$prefix$e-align" --align auto --no-baseline
@@ -138,9 +156,11 @@ for b in buildings:
                   + pair(scores(mech, "citylangsplat")) + pair(scores(mech, "langsplat"))
                   + [pair(scores(mech, "city-model-labels"))[0]])
 rows_a = with_mean(rows_a, 1) if rows_a else []
-# Per building, given model and transform error: CityLangSplat without and with align, the label maps.
+# Per building, given model and transform error: CityLangSplat without and with align, the label maps, and
+# the LangSplat baseline on the same photos (occl=N has its own).
 head_b = ("building", "model", "error", "ours 2D", "ours 3D", "ours+align 2D", "ours+align 3D", "labels 2D (given)",
-          "labels 2D (aligned)", "ours+align 3D - exact zero-error 3D")
+          "labels 2D (aligned)", "ours+align 3D - exact zero-error 3D", "LangSplat 2D (same photos)",
+          "LangSplat 3D (same photos)")
 rows_b = []
 for b in buildings:
     zero = scores(f"{b}/run-0-off", "citylangsplat")
@@ -154,7 +174,8 @@ for b in buildings:
             lab = scores(f"{b}/{run}", "city-model-labels")
             lab_al = lab if e == "0" else scores(f"{b}/run-{prefix}{e}-align", "city-model-labels")
             gap = al[1] - zero[1] if al and zero and al[1] is not None and zero[1] is not None else None
-            rows_b.append([b, v, e] + pair(off) + pair(al) + [lab and lab[0], lab_al and lab_al[0], gap])
+            base = scores(f"{b}/run-{v}-0-off" if v.startswith("occl=") else f"{b}/run-0-off", "langsplat")
+            rows_b.append([b, v, e] + pair(off) + pair(al) + [lab and lab[0], lab_al and lab_al[0], gap] + pair(base))
 rows_b = with_mean(rows_b, 3) if rows_b else []
 md = ["Per building (exact model, zero error):", ""] + table(head_a, rows_a, 1) + ["", "Given model x transform error:", ""] + table(head_b, rows_b, 3)
 open(os.path.join(work, "robustness.md"), "w").write("\n".join(md) + "\n")
