@@ -1,12 +1,15 @@
 #include "models/clip/clip_model.h"
 
 #include <ATen/ATen.h>
+#include <ATen/Parallel.h>
 
 #include <cmath>
 #include <limits>
 #include <sstream>
 
+#include "core/blas_threads.h"
 #include "core/error.h"
+#include "models/parallel_linear.h"
 #include "models/weights/clip_weights.h"
 #include "models/weights/weight_layout.h"
 
@@ -27,18 +30,31 @@ at::Tensor layer_norm(const at::Tensor& x, const at::Tensor& w, const at::Tensor
 }
 
 // nn.MultiheadAttention (batch-first here): packed q,k,v projection, heads split contiguously,
-// softmax(q k^T / sqrt(hd) + mask) v, out_proj.
+// softmax(q k^T / sqrt(hd) + mask) v, out_proj. On the CPU the sequences are shared among LibTorch's
+// threads (models/parallel_linear.h).
 at::Tensor multi_head_attention(const at::Tensor& x, const at::Tensor& in_w, const at::Tensor& in_b,
                                 const at::Tensor& out_w, const at::Tensor& out_b, int heads,
                                 const at::Tensor& mask) {
   const int64_t n = x.size(0), l = x.size(1), w = x.size(2), hd = w / heads;
-  const at::Tensor qkv = at::linear(x, in_w, in_b).view({n, l, 3, heads, hd}).permute({2, 0, 3, 1, 4});
-  const at::Tensor q = qkv[0] * (1.0 / std::sqrt(static_cast<double>(hd)));
-  at::Tensor scores = at::matmul(q, qkv[1].transpose(-2, -1));  // [n, heads, l, l]
-  if (mask.defined()) scores = scores + mask;
-  const at::Tensor attn = at::softmax(scores, -1);
-  const at::Tensor out = at::matmul(attn, qkv[2]).permute({0, 2, 1, 3}).reshape({n, l, w});
-  return at::linear(out, out_w, out_b);
+  const at::Tensor qkv = parallel_rows_linear(x, in_w, in_b).view({n, l, 3, heads, hd}).permute({2, 0, 3, 1, 4});
+  const auto attend = [&](int64_t s0, int64_t s1) {  // sequences [s0, s1)
+    const at::Tensor q = qkv[0].slice(0, s0, s1) * (1.0 / std::sqrt(static_cast<double>(hd)));
+    at::Tensor scores = at::matmul(q, qkv[1].slice(0, s0, s1).transpose(-2, -1));  // [s, heads, l, l]
+    if (mask.defined()) scores = scores + mask;
+    const at::Tensor attn = at::softmax(scores, -1);
+    return at::matmul(attn, qkv[2].slice(0, s0, s1)).permute({0, 2, 1, 3}).reshape({s1 - s0, l, w});
+  };
+  at::Tensor out;
+  if (split_over_threads(qkv) && n > 1) {
+    out = at::empty({n, l, w}, x.options());
+    at::parallel_for(0, n, 1, [&](int64_t s0, int64_t s1) {
+      at::NoGradGuard no_grad;  // the worker threads' own grad mode
+      out.slice(0, s0, s1).copy_(attend(s0, s1));
+    });
+  } else {
+    out = attend(0, n);
+  }
+  return parallel_rows_linear(out, out_w, out_b);
 }
 
 }  // namespace
@@ -119,6 +135,8 @@ ClipModel::ClipModel(const ClipConfig& config, const WeightFile& weights, const 
 
 at::Tensor ClipModel::run_blocks(at::Tensor x, const std::vector<Block>& blocks, int heads, const at::Tensor& mask,
                                  const std::string& prefix, ClipTrace* trace) const {
+  // The blocks' GEMMs run on LibTorch's threads, each BLAS call on its calling thread.
+  const ScopedBlasThreads blas(split_over_threads(x) ? 1 : blas_threads());
   for (size_t i = 0; i < blocks.size(); ++i) {
     const Block& b = blocks[i];
     const std::string name = prefix + std::to_string(i);
@@ -126,9 +144,9 @@ at::Tensor ClipModel::run_blocks(at::Tensor x, const std::vector<Block>& blocks,
     const at::Tensor attn = multi_head_attention(h1, b.in_proj_w, b.in_proj_b, b.out_proj_w, b.out_proj_b, heads, mask);
     x = x + attn;
     const at::Tensor h2 = layer_norm(x, b.ln_2_w, b.ln_2_b);
-    at::Tensor m = at::linear(h2, b.c_fc_w, b.c_fc_b);
+    at::Tensor m = parallel_rows_linear(h2, b.c_fc_w, b.c_fc_b);
     m = config_.activation == Activation::Gelu ? at::gelu(m) : m * at::sigmoid(1.702 * m);
-    m = at::linear(m, b.c_proj_w, b.c_proj_b);
+    m = parallel_rows_linear(m, b.c_proj_w, b.c_proj_b);
     x = x + m;
     if (trace) {
       (*trace)[name + ".ln_1"] = h1;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/blas_threads.h"
+#include "models/parallel_linear.h"
 
 namespace cls::sam {
 
@@ -84,13 +85,16 @@ ViTAttentionImpl::ViTAttentionImpl(int64_t dim, int64_t num_heads_, bool qkv_bia
 torch::Tensor ViTAttentionImpl::forward(const torch::Tensor& x) {
   const int64_t B = x.size(0), H = x.size(1), W = x.size(2), N = H * W;
   // qkv: [3, B*nHead, H*W, head_dim]
-  const auto qkv_ = parallel_rows_linear(x, *qkv).reshape({B, N, 3, num_heads, -1}).permute({2, 0, 3, 1, 4}).reshape({3, B * num_heads, N, -1});
+  const auto qkv_ = parallel_rows_linear(x, qkv->weight, qkv->bias)
+                        .reshape({B, N, 3, num_heads, -1})
+                        .permute({2, 0, 3, 1, 4})
+                        .reshape({3, B * num_heads, N, -1});
   const auto q = qkv_[0], k = qkv_[1], v = qkv_[2];
   torch::Tensor Rh, Rw;
   if (use_rel_pos) Rh = get_rel_pos(H, H, rel_pos_h), Rw = get_rel_pos(W, W, rel_pos_w);
   // Bands of whole query rows (W tokens each) of `heads` heads: heads * rows * W * N floats at most,
   // the block budget shared by the threads that take bands side by side (split_over_threads).
-  const bool split = split_over_threads(x);
+  const bool split = split_over_threads(q);
   const int64_t budget = kCpuBlockBytes / (split ? at::get_num_threads() : 1);
   const int64_t row_bytes = W * N * int64_t(sizeof(float));
   const int64_t rows = std::clamp<int64_t>(budget / row_bytes, 1, H);
@@ -114,7 +118,8 @@ torch::Tensor ViTAttentionImpl::forward(const torch::Tensor& x) {
   } else {
     for (int64_t i = 0; i < bands; ++i) band(i);
   }
-  return parallel_rows_linear(out.view({B, num_heads, H, W, -1}).permute({0, 2, 3, 1, 4}).reshape({B, H, W, -1}), *proj);
+  const auto heads_joined = out.view({B, num_heads, H, W, -1}).permute({0, 2, 3, 1, 4}).reshape({B, H, W, -1});
+  return parallel_rows_linear(heads_joined, proj->weight, proj->bias);
 }
 
 ViTBlockImpl::ViTBlockImpl(const SamConfig& cfg, int64_t window_size_) : window_size(window_size_) {

@@ -1,6 +1,6 @@
 #include "models/sam/sam_layers.h"
 
-#include <ATen/Parallel.h>
+#include "models/parallel_linear.h"
 
 namespace cls::sam {
 
@@ -16,27 +16,6 @@ torch::Tensor LayerNorm2dImpl::forward(const torch::Tensor& x) {
   return weight.view({-1, 1, 1}) * y + bias.view({-1, 1, 1});
 }
 
-bool split_over_threads(const torch::Tensor& x) {
-  return x.device().is_cpu() && !torch::GradMode::is_enabled() && at::get_num_threads() > 1;
-}
-
-torch::Tensor parallel_rows_linear(const torch::Tensor& x, torch::nn::LinearImpl& lin) {
-  const int64_t threads = at::get_num_threads(), in = x.size(-1), rows = x.numel() / std::max<int64_t>(1, in);
-  if (!split_over_threads(x) || rows < 64 * threads) return lin.forward(x);
-  const auto x2 = x.reshape({rows, in});
-  const auto wt = lin.weight.t();
-  auto out = torch::empty({rows, lin.weight.size(0)}, x.options());
-  at::parallel_for(0, rows, (rows + threads - 1) / threads, [&](int64_t r0, int64_t r1) {
-    torch::NoGradGuard no_grad;  // the worker threads' own grad mode
-    auto block = out.slice(0, r0, r1);
-    if (lin.bias.defined()) at::addmm_out(block, lin.bias, x2.slice(0, r0, r1), wt);
-    else at::mm_out(block, x2.slice(0, r0, r1), wt);
-  });
-  auto sizes = x.sizes().vec();
-  sizes.back() = lin.weight.size(0);
-  return out.view(sizes);
-}
-
 torch::Tensor activate(const torch::Tensor& x, Activation act) {
   return act == Activation::GELU ? torch::gelu(x) : torch::relu(x);
 }
@@ -47,7 +26,8 @@ MLPBlockImpl::MLPBlockImpl(int64_t embedding_dim, int64_t mlp_dim, Activation ac
 }
 
 torch::Tensor MLPBlockImpl::forward(const torch::Tensor& x) {
-  return parallel_rows_linear(activate(parallel_rows_linear(x, *lin1), act), *lin2);
+  const auto h = activate(parallel_rows_linear(x, lin1->weight, lin1->bias), act);
+  return parallel_rows_linear(h, lin2->weight, lin2->bias);
 }
 
 MLPImpl::MLPImpl(int64_t input_dim, int64_t hidden_dim, int64_t output_dim, int num_layers) {

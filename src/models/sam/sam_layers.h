@@ -13,17 +13,6 @@ namespace cls::sam {
 // of a last-level cache. Only the blocking changes: each row, prompt and mask is computed on its own.
 constexpr int64_t kCpuBlockBytes = int64_t(16) << 20;
 
-// Whether to split this CPU work over LibTorch's threads by hand (parallel_rows_linear, the encoder's
-// attention bands): on the CPU, without autograd (the worker threads do not record it), with threads.
-bool split_over_threads(const torch::Tensor& x);
-
-// lin(x) with x's rows split over LibTorch's threads, each block one GEMM on its own thread (when
-// split_over_threads and there are rows enough; else lin(x)). For the image encoder, which holds
-// OpenBLAS to the calling thread (ScopedBlasThreads): one thread pool then does all its work, where
-// LibTorch's OpenMP pool and OpenBLAS's own otherwise take turns spinning and yielding on the same
-// cores (docs/benchmarks.md, "The AMG on 2 cores").
-torch::Tensor parallel_rows_linear(const torch::Tensor& x, torch::nn::LinearImpl& lin);
-
 // LayerNorm over the channel dimension of an NCHW tensor (common.py LayerNorm2d): mean and biased
 // variance over C, (x - u) / sqrt(var + eps), then per-channel affine.
 struct LayerNorm2dImpl : torch::nn::Module {
