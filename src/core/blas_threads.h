@@ -1,9 +1,11 @@
 #pragma once
 // How many threads OpenBLAS may use, for one scope. Debian's LibTorch calls OpenBLAS, whose pthread
-// build (libopenblas0-pthread) keeps its own pool beside LibTorch's OpenMP one. Where small GEMMs
-// alternate with element-wise ops (SAM's mask decoder), the two pools take turns spinning on the same
-// cores: on 2 cores the decoder ran 2.2x slower than with OpenBLAS held to the calling thread
-// (docs/benchmarks.md). The functions are looked up at run time, so this is a no-op with another BLAS.
+// build (libopenblas0-pthread) keeps its own pool beside LibTorch's OpenMP one. Where GEMMs alternate
+// with element-wise ops (SAM's mask decoder, the transformers' blocks), the two pools take turns
+// spinning on the same cores: on 2 cores the decoder ran 2.2x slower than with OpenBLAS held to the
+// calling thread, and the encoders split their GEMMs over LibTorch's threads instead
+// (models/parallel_linear.h, docs/benchmarks.md). The functions are looked up at run time, so this is a
+// no-op with another BLAS.
 namespace cls {
 
 class ScopedBlasThreads {
