@@ -11,8 +11,10 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "core/blas_threads.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "models/parallel_linear.h"
 #include "models/weights/safetensors.h"
 
 namespace cls {
@@ -151,8 +153,14 @@ struct Autoencoder::Impl {
     at::Tensor z = net->encoder->forward(x);
     return config.normalize_latent ? l2_normalize(z) : z;
   }
+  // Layer by layer, the linear layers through parallel_rows_linear (torch::linear while autograd
+  // records, in training): a relevance map decodes millions of pixels on one thread pool.
   at::Tensor run_decoder(const at::Tensor& z) const {
-    at::Tensor r = net->decoder->forward(z);
+    at::Tensor r = z;
+    for (auto& layer : *net->decoder) {
+      if (const auto* linear = layer.ptr()->as<torch::nn::Linear>()) r = parallel_rows_linear(r, linear->weight, linear->bias);
+      else r = layer.forward(r);
+    }
     return config.normalize_output ? l2_normalize(r) : r;
   }
   c10::Device device() const { return net->parameters().front().device(); }
@@ -194,6 +202,7 @@ at::Tensor Autoencoder::decode(const at::Tensor& latents) const {
   at::Tensor z = impl_->prepare(latents, impl_->config.latent_dim(), "decode");
   torch::NoGradGuard no_grad;
   if (z.size(0) == 0) return at::empty({0, impl_->config.input_dim}, z.options());
+  const ScopedBlasThreads blas(split_over_threads(z) ? 1 : blas_threads());  // models/parallel_linear.h
   return impl_->run_decoder(z);
 }
 

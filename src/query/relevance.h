@@ -37,8 +37,11 @@ const std::vector<std::string>& canonical_phrases();  // "object", "things", "st
 // Latent -> feature map of the decoder (B x L -> B x D), e.g. Autoencoder::decode.
 using LatentDecoder = std::function<at::Tensor(const at::Tensor&)>;
 
-// Pixels decoded per call of the decoder (bounds the MLP's intermediate memory).
-constexpr int64_t kDecodeChunkPixels = 1 << 16;
+// Pixels decoded per call of the decoder (bounds the MLP's intermediate memory). 8192 x 512 floats
+// = 16 MB: the largest tensor of a call stays under glibc's 32 MB mmap ceiling, so the chunks reuse
+// freed heap instead of mapping and faulting in fresh pages per call (65,536 pixels: 128 MB, and a
+// third of a 1080p map's CPU time went to the kernel; docs/benchmarks.md).
+constexpr int64_t kDecodeChunkPixels = 1 << 13;
 
 // rasterize_features of `latents` (N x L, one row per Gaussian of `gaussians`) for a camera and pose
 // on a zero background, no gradients: image H x W x L, alpha H x W.
