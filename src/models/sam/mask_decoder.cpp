@@ -61,17 +61,21 @@ MaskDecoderOutput MaskDecoderImpl::predict_masks(const torch::Tensor& image_embe
   // One image embedding shared by all prompts (the reference's repeat_interleave). Without mask
   // inputs the dense embedding is one vector broadcast to every prompt (stride 0), so the prompts
   // share src too and the transformer takes it once; it is per prompt only after the first block.
+  // With `shared`, the transformer takes src and its PE from there, made once per image.
+  const bool one_src = image_embeddings.size(0) == 1 && (n == 1 || dense.stride(0) == 0);
+  if (shared && !one_src) throw Error("SAM mask decoder: a shared image side needs one image and no mask input");
   torch::Tensor src, pos_src;
-  if (image_embeddings.size(0) == 1 && image_pe.size(0) == 1 && (n == 1 || dense.stride(0) == 0)) {
-    src = image_embeddings + dense.narrow(0, 0, 1);
-    pos_src = image_pe;
-  } else {
-    if (shared) throw Error("SAM mask decoder: a shared image side needs one image and no mask input");
-    src = image_embeddings.size(0) == n ? image_embeddings : torch::repeat_interleave(image_embeddings, n, 0);
-    src = src + dense;
-    pos_src = image_pe.size(0) == n ? image_pe : torch::repeat_interleave(image_pe, n, 0);
+  if (!shared) {
+    if (one_src && image_pe.size(0) == 1) {
+      src = image_embeddings + dense.narrow(0, 0, 1);
+      pos_src = image_pe;
+    } else {
+      src = image_embeddings.size(0) == n ? image_embeddings : torch::repeat_interleave(image_embeddings, n, 0);
+      src = src + dense;
+      pos_src = image_pe.size(0) == n ? image_pe : torch::repeat_interleave(image_pe, n, 0);
+    }
   }
-  const int64_t h = src.size(2), w = src.size(3);
+  const int64_t h = image_embeddings.size(2), w = image_embeddings.size(3);
 
   auto [hs, keys] = transformer(src, pos_src, tokens, shared);
   const auto iou_token_out = hs.index({Slice(), 0, Slice()});

@@ -19,7 +19,8 @@ struct MaskDecoderImpl : torch::nn::Module {
   explicit MaskDecoderImpl(const SamConfig& cfg);
   // image_embeddings [1 or B, C, 64, 64] (repeated per prompt when 1), image_pe [1, C, 64, 64],
   // sparse [B, N, C], dense [B, C, 64, 64]. `shared`: share_image of the same image embedding, for
-  // prompts without mask input (dense = the no-mask embedding), or null.
+  // prompts without mask input (dense = the no-mask embedding), or null; with it, image_pe is not
+  // read (it may be undefined) and the image embedding gives only the grid size.
   MaskDecoderOutput forward(const torch::Tensor& image_embeddings, const torch::Tensor& image_pe,
                             const torch::Tensor& sparse_prompt_embeddings, const torch::Tensor& dense_prompt_embeddings,
                             bool multimask_output, const SharedImageSide* shared = nullptr);

@@ -84,11 +84,14 @@ SamPrediction SamPredictor::predict_batch(const torch::Tensor& point_coords, con
   const auto on_device = [&](const torch::Tensor& t) { return t.defined() ? t.to(dev) : t; };
   const auto emb = model_->prompt_encoder->forward(on_device(point_coords), on_device(point_labels), on_device(boxes),
                                                    on_device(mask_input));
-  const auto dense_pe = model_->prompt_encoder->get_dense_pe();
+  // Without mask input, the image side (with its positional encoding) is made once per image.
   const bool no_mask = !mask_input.defined();
-  if (no_mask && !shared_image_.defined()) shared_image_ = model_->mask_decoder->share_image(features_, dense_pe, emb.dense);
-  const auto dec = model_->mask_decoder->forward(features_, dense_pe, emb.sparse, emb.dense, multimask_output,
-                                                 no_mask ? &shared_image_ : nullptr);
+  if (no_mask && !shared_image_.defined())
+    shared_image_ = model_->mask_decoder->share_image(features_, model_->prompt_encoder->get_dense_pe(), emb.dense);
+  const auto dec = no_mask ? model_->mask_decoder->forward(features_, torch::Tensor(), emb.sparse, emb.dense,
+                                                           multimask_output, &shared_image_)
+                           : model_->mask_decoder->forward(features_, model_->prompt_encoder->get_dense_pe(),
+                                                           emb.sparse, emb.dense, multimask_output);
   SamPrediction out;
   out.low_res_logits = dec.low_res_masks;
   out.iou_predictions = dec.iou_predictions;

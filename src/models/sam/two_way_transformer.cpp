@@ -173,8 +173,8 @@ std::pair<torch::Tensor, torch::Tensor> TwoWayTransformerImpl::forward(const tor
                                                                        const torch::Tensor& point_embedding,
                                                                        const SharedImageSide* shared) {
   // Contiguous: every block and the final attention add it to the keys.
-  const auto keys_pe = image_pe.flatten(2).permute({0, 2, 1}).contiguous();
-  auto keys = image_embedding.flatten(2).permute({0, 2, 1});
+  const auto keys_pe = shared ? shared->pe.unsqueeze(0) : image_pe.flatten(2).permute({0, 2, 1}).contiguous();
+  auto keys = shared ? shared->image.unsqueeze(0) : image_embedding.flatten(2).permute({0, 2, 1});
   auto queries = point_embedding;
   for (size_t i = 0; i < layers->size(); ++i)
     layers[i]->as<TwoWayAttentionBlock>()->forward(queries, keys, point_embedding, keys_pe, i == 0 ? shared : nullptr,
@@ -186,11 +186,12 @@ std::pair<torch::Tensor, torch::Tensor> TwoWayTransformerImpl::forward(const tor
 }
 
 SharedImageSide TwoWayTransformerImpl::share_image(const torch::Tensor& image_embedding, const torch::Tensor& image_pe) {
-  const auto keys = image_embedding.flatten(2).permute({0, 2, 1})[0];  // [N, C]
-  const auto k = keys + image_pe.flatten(2).permute({0, 2, 1})[0];
+  const auto keys = image_embedding.flatten(2).permute({0, 2, 1})[0].contiguous();  // [N, C]
+  const auto pe = image_pe.flatten(2).permute({0, 2, 1})[0].contiguous();
+  const auto k = keys + pe;
   const auto& first = layers[0]->as<TwoWayAttentionBlock>();
   return {first->cross_attn_token_to_image->k_proj(k), first->cross_attn_token_to_image->v_proj(keys),
-          first->cross_attn_image_to_token->q_proj(k), keys.contiguous()};
+          first->cross_attn_image_to_token->q_proj(k), keys, pe};
 }
 
 }  // namespace cls::sam

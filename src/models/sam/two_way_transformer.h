@@ -7,15 +7,16 @@
 
 namespace cls::sam {
 
-// The image side of the first block's two cross-attentions when every prompt shares the image (no
-// mask input), each [N, C / downsample_rate]: what depends on the image alone, so a predictor
-// computes it once per image (TwoWayTransformerImpl::share_image) and each prompt only attends.
+// What every prompt without mask input shares of an image: the first block's projected image side,
+// each [N, C / downsample_rate], and the image and its positional encoding as the transformer takes
+// them. A predictor computes it once per image (TwoWayTransformerImpl::share_image), and each prompt
+// only attends.
 // Per prompt the first block's scores and token values then cost N x C/r x T multiply-adds instead
 // of the folded N x C x heads x T (16x fewer for ViT-B).
 struct SharedImageSide {
   torch::Tensor key, value;  // tokens to image: k_proj(src + pe), v_proj(src)
   torch::Tensor query;       // image to tokens: q_proj(src + pe)
-  torch::Tensor image;       // src itself, contiguous [N, C]: the image's residual
+  torch::Tensor image, pe;   // src and its positional encoding, contiguous [N, C]
   bool defined() const { return key.defined(); }
 };
 
@@ -72,7 +73,8 @@ TORCH_MODULE(TwoWayAttentionBlock);
 struct TwoWayTransformerImpl : torch::nn::Module {
   TwoWayTransformerImpl(int depth, int64_t embedding_dim, int64_t num_heads, int64_t mlp_dim, int64_t downsample_rate);
   // image_embedding, image_pe [B or 1,C,h,w]; point_embedding [B,N,C] -> (queries [B,N,C], keys [B,hw,C]).
-  // `shared`: share_image of image_embedding and image_pe (both batch 1), or null.
+  // `shared`: share_image of the image (batch 1), or null; with it, image_embedding and image_pe are
+  // not read (they may be undefined).
   std::pair<torch::Tensor, torch::Tensor> forward(const torch::Tensor& image_embedding, const torch::Tensor& image_pe,
                                                   const torch::Tensor& point_embedding,
                                                   const SharedImageSide* shared = nullptr);
