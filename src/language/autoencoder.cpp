@@ -11,7 +11,6 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "core/blas_threads.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "models/parallel_linear.h"
@@ -202,7 +201,7 @@ at::Tensor Autoencoder::decode(const at::Tensor& latents) const {
   at::Tensor z = impl_->prepare(latents, impl_->config.latent_dim(), "decode");
   torch::NoGradGuard no_grad;
   if (z.size(0) == 0) return at::empty({0, impl_->config.input_dim}, z.options());
-  const ScopedBlasThreads blas(split_over_threads(z) ? 1 : blas_threads());  // models/parallel_linear.h
+  const auto blas = blas_threads_for_split(z);  // models/parallel_linear.h
   return impl_->run_decoder(z);
 }
 

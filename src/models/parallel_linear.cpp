@@ -10,6 +10,10 @@ bool split_over_threads(const torch::Tensor& x) {
   return x.device().is_cpu() && at::get_num_threads() > 1 && !(torch::GradMode::is_enabled() && x.requires_grad());
 }
 
+ScopedBlasThreads blas_threads_for_split(const torch::Tensor& x) {
+  return ScopedBlasThreads(split_over_threads(x) ? 1 : blas_threads());
+}
+
 torch::Tensor parallel_rows_linear(const torch::Tensor& x, const torch::Tensor& weight, const torch::Tensor& bias) {
   const int64_t threads = at::get_num_threads(), in = x.size(-1), rows = x.numel() / std::max<int64_t>(1, in);
   const bool records = torch::GradMode::is_enabled() && (weight.requires_grad() || (bias.defined() && bias.requires_grad()));

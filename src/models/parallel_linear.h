@@ -6,12 +6,18 @@
 // the GEMMs over LibTorch's threads instead, each block one BLAS call on its own thread.
 #include <torch/torch.h>
 
+#include "core/blas_threads.h"
+
 namespace cls {
 
 // Whether to split CPU work on x (and what derives from it) over LibTorch's threads by hand: on the
 // CPU, with more than one thread, and only where autograd records nothing (the worker threads do not
 // record it): grad mode off, or x not requiring grad.
 bool split_over_threads(const torch::Tensor& x);
+
+// OpenBLAS held to the calling thread for a scope whose work on x is split over LibTorch's threads
+// (split_over_threads); otherwise left as it is.
+ScopedBlasThreads blas_threads_for_split(const torch::Tensor& x);
 
 // linear(x, weight, bias) with x's rows split over LibTorch's threads (when split_over_threads and
 // there are rows enough; else at::linear). x [..., in], weight [out, in], bias [out] or undefined.

@@ -7,7 +7,6 @@
 #include <limits>
 #include <sstream>
 
-#include "core/blas_threads.h"
 #include "core/error.h"
 #include "models/parallel_linear.h"
 #include "models/weights/clip_weights.h"
@@ -136,7 +135,7 @@ ClipModel::ClipModel(const ClipConfig& config, const WeightFile& weights, const 
 at::Tensor ClipModel::run_blocks(at::Tensor x, const std::vector<Block>& blocks, int heads, const at::Tensor& mask,
                                  const std::string& prefix, ClipTrace* trace) const {
   // The blocks' GEMMs run on LibTorch's threads, each BLAS call on its calling thread.
-  const ScopedBlasThreads blas(split_over_threads(x) ? 1 : blas_threads());
+  const auto blas = blas_threads_for_split(x);
   for (size_t i = 0; i < blocks.size(); ++i) {
     const Block& b = blocks[i];
     const std::string name = prefix + std::to_string(i);

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/blas_threads.h"
 #include "models/parallel_linear.h"
 
 namespace cls::sam {
@@ -175,7 +174,7 @@ torch::Tensor ImageEncoderViTImpl::forward(const torch::Tensor& input) {
   {
     // The blocks' GEMMs run on LibTorch's threads (parallel_rows_linear, attention bands), each BLAS
     // call on its calling thread.
-    const ScopedBlasThreads blas(split_over_threads(x) ? 1 : blas_threads());
+    const auto blas = blas_threads_for_split(x);
     for (const auto& blk : *blocks) x = blk->as<ViTBlock>()->forward(x);
   }
   return neck->forward(x.permute({0, 3, 1, 2}));
