@@ -4,10 +4,11 @@
 # aside: a city transform off by growing errors (`synth --city-error`), and per variant a model that lacks
 # openings (`drop=F`: `synth --drop-openings F`) or is the building's LoD2 model (`lod2`, where the data
 # has one), and a scene whose photos show N extra trees just in front of the facades that the city model
-# lacks (`occl=N`: `synth --occluders N`; new photos, so its own photometric model and its own baseline). Every run uses the image-segments provider (segments of the images, features from the exact
-# ground truth under them: nothing comes from the label maps, so a wrong model shows), one shared
-# photometric model per building, and scores 2D on the held-out views and 3D on the ground-truth cloud,
-# which `synth` renders from the true geometry and the method never sees.
+# lacks (`occl=N`: `synth --occluders N`; new photos, so its own photometric model and its own baseline).
+# Every run uses the image-segments provider (segments of the images, features from the exact ground
+# truth under them: nothing comes from the label maps, so a wrong model shows), one photometric model per
+# building and set of photos, and scores 2D on the held-out views and 3D on the ground-truth cloud, which
+# `synth` renders from the true geometry and the method never sees.
 # Rows: the LangSplat baselines (no CityGML: the same for every model; LangSplat's objective on the shared
 # autoencoder, and LangSplat as published in the last columns), CityLangSplat with the given
 # transform (--align off), CityLangSplat with the refinement (--align auto), and the label maps of the
@@ -17,11 +18,11 @@
 # Also per building, on the exact scene: the mechanics benchmark (`--models synthetic`, docs/benchmarks.md
 # "Mechanics benchmark") in its own columns.
 #   bash bench/robustness.sh [--work DIR] [--buildings "fzk citygml4j texture4"] [--errors "0 t=0.25 ..."]
-#                            [--variants "exact drop=0.3 lod2 occl=8"] [--rgb-iterations N] [--language-iterations N]
+#                            [--variants "exact drop=0.3 lod2 occl=8"] [--rgb-iterations N]
+#                            [--language-iterations N]
 #                            [--report-only]   (the table, JSON and plot of the runs WORK already holds)
 # A building's photometric model is trained once per set of photos into WORK/<building>/rgb (rgb-occl=N)
-# and reused when present (and
-# `run` reuses every stage whose inputs did not change).
+# and reused when present (and `run` reuses every stage whose inputs did not change).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 repo=$(pwd)
