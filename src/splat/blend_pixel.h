@@ -13,9 +13,10 @@ constexpr double kAlphaMax = 0.99;
 constexpr double kAlphaMin = 1.0 / 255.0;
 constexpr double kTransmittanceMin = 1e-4;
 
-template <class T>
-CLS_HD T gaussian_power(const T* mean2d, const T* conic, T px, T py) {
-  const T dx = mean2d[0] - px, dy = mean2d[1] - py;
+// P is T, or on the CPU a vector of pixel lanes (blend_lanes.h).
+template <class T, class P>
+CLS_HD P gaussian_power(const T* mean2d, const T* conic, const P& px, const P& py) {
+  const P dx = mean2d[0] - px, dy = mean2d[1] - py;
   return T(-0.5) * (conic[0] * dx * dx + conic[2] * dy * dy) - conic[1] * dx * dy;
 }
 

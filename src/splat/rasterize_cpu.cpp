@@ -1,5 +1,7 @@
 // CPU rasterizer: see rasterize_cpu.h. The per-Gaussian and per-pixel math lives in the shared
 // headers (project_gaussian.h, blend_pixel.h, sh.h) that the CUDA kernels use as well.
+// -Wpsabi: see blend_lanes.h (its lane vectors never cross a call).
+#pragma GCC diagnostic ignored "-Wpsabi"
 #include "splat/rasterize_cpu.h"
 
 #include <omp.h>
@@ -7,13 +9,16 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "scene/camera.h"
+#include "splat/blend_lanes.h"
 #include "splat/blend_pixel.h"
 #include "splat/sh.h"
 
@@ -75,27 +80,41 @@ void cutoff_box(TileGaussian<T>& g) {
   g.box[2] = g.mean2d[1] - hy, g.box[3] = g.mean2d[1] + hy;
 }
 
-// Indices into the tile list of the Gaussians that can reach pixel centres of the sub-tile whose
-// first pixel is (sx, sy), in list (depth) order.
+constexpr int kSubTilesPerSide = kTileSize / kSubTile;
+constexpr int kSubTilesPerTile = kSubTilesPerSide * kSubTilesPerSide;
+
+// For each sub-tile of the tile whose first pixel is (x0, y0), in one pass over the tile's list: the
+// indices into the list of the Gaussians whose box reaches a pixel centre of the sub-tile, in list
+// (depth) order. Sub-tile (i, j) (column, row) is out[j * kSubTilesPerSide + i].
 template <class T>
-void subtile_list(const std::vector<TileGaussian<T>>& list, int sx, int sy, std::vector<int32_t>& out) {
-  const T x_lo = T(sx) + T(0.5), x_hi = T(sx + kSubTile) - T(0.5);
-  const T y_lo = T(sy) + T(0.5), y_hi = T(sy + kSubTile) - T(0.5);
-  out.clear();
+void subtile_lists(const std::vector<TileGaussian<T>>& list, int x0, int y0, std::vector<int32_t>* out) {
+  for (int q = 0; q < kSubTilesPerTile; ++q) out[q].clear();
   for (int k = 0; k < static_cast<int>(list.size()); ++k) {
     const T* b = list[k].box;
-    if (b[1] >= x_lo && b[0] <= x_hi && b[3] >= y_lo && b[2] <= y_hi) out.push_back(k);
+    unsigned cols = 0, rows = 0;
+    for (int i = 0; i < kSubTilesPerSide; ++i) {
+      const int sx = x0 + i * kSubTile, sy = y0 + i * kSubTile;
+      if (b[1] >= T(sx) + T(0.5) && b[0] <= T(sx + kSubTile) - T(0.5)) cols |= 1u << i;
+      if (b[3] >= T(sy) + T(0.5) && b[2] <= T(sy + kSubTile) - T(0.5)) rows |= 1u << i;
+    }
+    for (int r = 0; r < kSubTilesPerSide; ++r)
+      if (rows >> r & 1u)
+        for (int i = 0; i < kSubTilesPerSide; ++i)
+          if (cols >> i & 1u) out[r * kSubTilesPerSide + i].push_back(k);
   }
 }
 
+// What the tiles read of every visible Gaussian, made once per pass rather than once per tile it
+// touches (1.4 M tile instances of 200k Gaussians in bench_splat).
 template <class T>
-void gather_tile(const SplatForwardState<T>& st, const T* opacities, int tile, std::vector<TileGaussian<T>>& out) {
-  const int begin = st.tile_begin[tile], end = st.tile_end[tile];
-  out.resize(end - begin);
-  for (int k = begin; k < end; ++k) {
-    const int id = st.ids[k];
+std::vector<TileGaussian<T>> tile_gaussians(const SplatForwardState<T>& st, const T* opacities) {
+  const int N = static_cast<int>(st.proj.size());
+  std::vector<TileGaussian<T>> out(N);
+#pragma omp parallel for schedule(static)
+  for (int id = 0; id < N; ++id) {
     const ProjectedGaussian<T>& p = st.proj[id];
-    TileGaussian<T>& g = out[k - begin];
+    if (!p.visible) continue;
+    TileGaussian<T>& g = out[id];
     g.mean2d[0] = p.mean2d[0], g.mean2d[1] = p.mean2d[1];
     g.conic[0] = p.conic[0], g.conic[1] = p.conic[1], g.conic[2] = p.conic[2];
     g.opacity = opacities[id];
@@ -104,6 +123,15 @@ void gather_tile(const SplatForwardState<T>& st, const T* opacities, int tile, s
     g.id = id;
     cutoff_box(g);
   }
+  return out;
+}
+
+template <class T>
+void gather_tile(const SplatForwardState<T>& st, const TileGaussian<T>* gaussians, int tile,
+                 std::vector<TileGaussian<T>>& out) {
+  const int begin = st.tile_begin[tile], end = st.tile_end[tile];
+  out.resize(end - begin);
+  for (int k = begin; k < end; ++k) out[k - begin] = gaussians[st.ids[k]];
 }
 
 // What every tile of a pass reads.
@@ -111,7 +139,7 @@ template <class T>
 struct TileInputs {
   const SplatCamera<T>& cam;
   const SplatForwardState<T>& st;
-  const T* opacities;
+  const TileGaussian<T>* gaussians;  // tile_gaussians()
   const T* values;
   int C;
   const T* bg;
@@ -133,155 +161,266 @@ struct BackwardTileJob : TileInputs<T> {
 };
 
 // A thread's buffers, reused from tile to tile.
+// One vector of lanes as a struct: std::vector drops a vector type's alignment from its template
+// argument, a struct's alignment it keeps.
+template <class T>
+struct alignas(sizeof(Lanes<T>)) LaneRow {
+  Lanes<T> v;
+};
+static_assert(sizeof(LaneRow<float>) == sizeof(Lanes<float>), "LaneRow arrays are arrays of lanes");
+
 template <class T>
 struct TileScratch {
-  std::vector<T> acc, buf;
+  std::vector<LaneRow<T>> acc, dpix;  // C rows each, with a run-time channel count
+  std::vector<T> buf;
   std::vector<uint8_t> touched;
   std::vector<TileGaussian<T>> list;
-  std::vector<int32_t> sub;
+  std::vector<int32_t> sub[kSubTilesPerTile];
 };
 
-// Front-to-back blending of one tile (renderCUDA). kC > 0 fixes the channel count at compile time
-// (RGB), kC = 0 loops over C at run time (the inner loop over contiguous channels vectorises).
+// The pixel of lane l of the sub-tile whose first pixel is (sx, sy), or -1 outside the image.
+[[gnu::always_inline]] inline int64_t lane_pixel(const int sx, const int sy, const int l, const int x1, const int y1, const int width) {
+  const int px = sx + l % kLaneSide, py = sy + l / kLaneSide;
+  return px < x1 && py < y1 ? static_cast<int64_t>(py) * width + px : -1;
+}
+
+// Pixel centres of the sub-tile's lanes.
+template <class T>
+[[gnu::always_inline]] inline void lane_centres(const int sx, const int sy, Lanes<T>& cx, Lanes<T>& cy) {
+  for (int l = 0; l < kLanes; ++l) cx[l] = T(sx + l % kLaneSide) + T(0.5), cy[l] = T(sy + l / kLaneSide) + T(0.5);
+}
+
+// acc[c] += sum over k of w[k] values[k][c], in order of k, for many channels: eight channels' lanes stay in
+// registers while the n contributions are added (each would otherwise load and store all of acc).
+template <class T>
+[[gnu::always_inline]] inline void add_weighted_values(Lanes<T>* acc, const Lanes<T>* w, const T* const* values, int n,
+                                                       int nc) {
+  using V = Lanes<T>;
+  constexpr int R = 8;
+  int c = 0;
+  for (; c + R <= nc; c += R) {
+    V sum[R];
+    for (int r = 0; r < R; ++r) sum[r] = acc[c + r];
+    for (int k = 0; k < n; ++k)
+      for (int r = 0; r < R; ++r) sum[r] += w[k] * values[k][c + r];
+    for (int r = 0; r < R; ++r) acc[c + r] = sum[r];
+  }
+  for (; c < nc; ++c)
+    for (int k = 0; k < n; ++k) acc[c] += w[k] * values[k][c];
+}
+
+// Front-to-back blending of one tile (renderCUDA), a 4x4 sub-tile at a time with one lane per pixel
+// (blend_lanes.h). kC > 0 fixes the channel count at compile time (RGB), kC = 0 loops over C at run time.
 // Always inlined: the kernel builds below compile it once per instruction set.
 template <class T, int kC>
 [[gnu::always_inline]] inline void forward_tile(const ForwardTileJob<T>& j, int tile, TileScratch<T>& s) {
+  using V = Lanes<T>;
+  using M = LaneMask<T>;
+  static_assert(kLaneSide == kSubTile, "one lane per pixel of a sub-tile");
   const SplatCamera<T>& cam = j.cam;
   const T* const values = j.values;
-  std::vector<T>& acc = s.acc;
   std::vector<TileGaussian<T>>& list = s.list;
-  std::vector<int32_t>& sub = s.sub;
   const int nc = kC > 0 ? kC : j.C;
   const int tx = tile % cam.tiles_x(), ty = tile / cam.tiles_x();
   const int x0 = tx * kTileSize, y0 = ty * kTileSize;
   const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
-  gather_tile(j.st, j.opacities, tile, list);
+  gather_tile(j.st, j.gaussians, tile, list);
+  subtile_lists(list, x0, y0, s.sub);
   // fixed-size channels live on the stack (registers for RGB)
-  T acc_fixed[kC > 0 ? kC : 1];
-  if (kC == 0) acc.resize(nc);
-  T* const acc_p = kC > 0 ? acc_fixed : acc.data();
+  V acc_fixed[kC > 0 ? kC : 1];
+  if (kC == 0) s.acc.resize(nc);
+  V* const acc = kC > 0 ? acc_fixed : &s.acc.data()->v;
   for (int sy = y0; sy < y1; sy += kSubTile)
   for (int sx = x0; sx < x1; sx += kSubTile) {
-  subtile_list(list, sx, sy, sub);
-  const int L = static_cast<int>(sub.size());
-  for (int py = sy; py < std::min(sy + kSubTile, y1); ++py) {
-    for (int px = sx; px < std::min(sx + kSubTile, x1); ++px) {
-      const T cx = T(px) + T(0.5), cy = T(py) + T(0.5);
-      T Tr = T(1), d = T(0);
-      std::fill(acc_p, acc_p + nc, T(0));
-      int last = 0;
-      for (int k = 0; k < L; ++k) {
-        const TileGaussian<T>& g = list[sub[k]];
-        const T power = gaussian_power(g.mean2d, g.conic, cx, cy);
-        if (power < g.cutoff) continue;
-        T G;
-        const T a = alpha_from_power(power, g.opacity, G);
-        if (a == T(0)) continue;
-        const T test_T = Tr * (T(1) - a);
-        if (test_T < T(kTransmittanceMin)) break;
-        const T w = a * Tr;
-        const T* v = values + static_cast<size_t>(g.id) * nc;
-        T* ac = acc_p;
-#pragma omp simd
-        for (int c = 0; c < nc; ++c) ac[c] += w * v[c];
-        d += w * g.depth;
-        Tr = test_T;
-        last = k + 1;
+    const std::vector<int32_t>& sub = s.sub[(sy - y0) / kSubTile * kSubTilesPerSide + (sx - x0) / kSubTile];
+    const int L = static_cast<int>(sub.size());
+    V cx, cy;
+    lane_centres<T>(sx, sy, cx, cy);
+    M live;  // lanes inside the image that have not stopped
+    for (int l = 0; l < kLanes; ++l) live[l] = lane_pixel(sx, sy, l, x1, y1, cam.width) >= 0 ? -1 : 0;
+    V Tr = V{} + T(1), d = V{};
+    M last = M{};
+    for (int c = 0; c < nc; ++c) acc[c] = V{};
+    // many channels: contributions wait here and are added to acc eight at a time
+    constexpr int kBatch = 8;
+    V batch_w[kBatch];
+    const T* batch_v[kBatch];
+    int batched = 0;
+    for (int k = 0; k < L; ++k) {
+      const TileGaussian<T>& g = list[sub[k]];
+      const V power = gaussian_power(g.mean2d, g.conic, cx, cy);
+      M pass = live;  // lane_alpha applies the cutoff; nearly every entry of a sub-tile list has a lane within it
+      V G;
+      const V a = lane_alpha(power, g.cutoff, g.opacity, pass, G);
+      if (!any_lane(pass)) continue;
+      const V test_T = Tr * (T(1) - a);
+      const M stop = pass & (test_T < T(kTransmittanceMin));
+      pass &= ~stop;
+      const V w = pass ? a * Tr : V{};
+      const T* v = values + static_cast<size_t>(g.id) * nc;
+      if (kC > 0) {
+        for (int c = 0; c < nc; ++c) acc[c] += w * v[c];
+      } else {
+        batch_w[batched] = w, batch_v[batched++] = v;
+        if (batched == kBatch) add_weighted_values(acc, batch_w, batch_v, batched, nc), batched = 0;
       }
-      const size_t pix = static_cast<size_t>(py) * cam.width + px;
-      T* out = j.image + pix * nc;
-      for (int c = 0; c < nc; ++c) out[c] = acc_p[c] + (j.bg ? Tr * j.bg[c] : T(0));
-      j.alpha_out[pix] = T(1) - Tr;
-      j.depth_out[pix] = d;
-      j.final_T[pix] = Tr;
-      j.n_contrib[pix] = last;  // entries of the sub-tile list walked
+      d += w * g.depth;
+      Tr = pass ? test_T : Tr;
+      last = pass ? M{} + (k + 1) : last;
+      if (any_lane(stop)) {
+        live &= ~stop;
+        if (!any_lane(live)) break;
+      }
     }
-  }
+    add_weighted_values(acc, batch_w, batch_v, batched, nc);
+    for (int l = 0; l < kLanes; ++l) {
+      const int64_t pix = lane_pixel(sx, sy, l, x1, y1, cam.width);
+      if (pix < 0) continue;
+      T* out = j.image + pix * nc;
+      for (int c = 0; c < nc; ++c) out[c] = acc[c][l] + (j.bg ? Tr[l] * j.bg[c] : T(0));
+      j.alpha_out[pix] = T(1) - Tr[l];
+      j.depth_out[pix] = d[l];
+      j.final_T[pix] = Tr[l];
+      j.n_contrib[pix] = static_cast<int32_t>(last[l]);  // entries of the sub-tile list walked
+    }
   }
 }
 
+// Backward of one tile: re-walks each sub-tile's list backwards from its pixels' last contributors (the
+// original's renderCUDA backward, one lane per pixel), summing per-entry gradients over the lanes in `buf`
+// (stride 9 + C: mean2d 2, |mean2d| 2, conic 3, opacity, depth, values C), then adds them to the
+// per-Gaussian sums under striped locks.
+// value_grad += sum over the lanes where `pass` of w_l dL/dimage(pixel_l), for many channels: eight
+// vectors of channels stay in registers while the lanes are added (one sum would otherwise be loaded
+// and stored per lane), then vectors and single channels for the rest.
+template <class T>
+[[gnu::always_inline]] inline void add_lane_rows(const Lanes<T>& w, const LaneMask<T>& pass, const T* dL_dimage,
+                                                 const int64_t* pixel, int nc, T* value_grad) {
+  using V = Lanes<T>;
+  const T* rows[kLanes];
+  T weights[kLanes];
+  int n = 0;
+  for (int l = 0; l < kLanes; ++l)
+    if (pass[l]) rows[n] = dL_dimage + pixel[l] * nc, weights[n++] = w[l];
+  auto add_block = [&](int c, auto regs) {
+    constexpr int R = decltype(regs)::value;
+    V sum[R];
+    std::memcpy(sum, value_grad + c, sizeof(sum));
+    for (int k = 0; k < n; ++k)
+      for (int r = 0; r < R; ++r) {
+        V d;
+        std::memcpy(&d, rows[k] + c + r * kLanes, sizeof(V));
+        sum[r] += weights[k] * d;
+      }
+    std::memcpy(value_grad + c, sum, sizeof(sum));
+  };
+  int c = 0;
+  for (; c + 8 * kLanes <= nc; c += 8 * kLanes) add_block(c, std::integral_constant<int, 8>{});
+  for (; c + kLanes <= nc; c += kLanes) add_block(c, std::integral_constant<int, 1>{});
+  for (; c < nc; ++c)
+    for (int k = 0; k < n; ++k) value_grad[c] += weights[k] * rows[k][c];
+}
 
-// Backward of one tile: re-walks each pixel's list backwards from its last contributor (the original's
-// renderCUDA backward), summing per-entry gradients in `buf` (stride 9 + C: mean2d 2, |mean2d| 2,
-// conic 3, opacity, depth, values C), then adds them to the per-Gaussian sums under striped locks.
 template <class T, int kC>
 [[gnu::always_inline]] inline void backward_tile(const BackwardTileJob<T>& j, int tile, TileScratch<T>& s) {
+  using V = Lanes<T>;
+  using M = LaneMask<T>;
   const SplatCamera<T>& cam = j.cam;
   const SplatForwardState<T>& st = j.st;
   const T* const values = j.values;
-  const T *const dL_dimage = j.dL_dimage, *const dL_dalpha = j.dL_dalpha, *const dL_ddepth = j.dL_ddepth;
+  const T* const dL_dimage = j.dL_dimage;
   const T* const bg = j.bg;
   std::vector<T>& buf = s.buf;
   std::vector<uint8_t>& touched = s.touched;
   std::vector<TileGaussian<T>>& list = s.list;
-  std::vector<int32_t>& sub = s.sub;
+  static_assert(9 + kC <= kLanes, "buf's fixed-channel entries are summed as one vector of lanes");
   const int nc = kC > 0 ? kC : j.C;
   const int S = 9 + nc;
   const int tx = tile % cam.tiles_x(), ty = tile / cam.tiles_x();
   const int x0 = tx * kTileSize, y0 = ty * kTileSize;
   const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
-  gather_tile(st, j.opacities, tile, list);
+  gather_tile(st, j.gaussians, tile, list);
   const int L = static_cast<int>(list.size());
   if (L == 0) return;
+  subtile_lists(list, x0, y0, s.sub);
   buf.assign(static_cast<size_t>(L) * S, T(0));
   touched.assign(L, 0);
+  // dL/dimage per channel across the lanes (registers for RGB)
+  V dpix_fixed[kC > 0 ? kC : 1];
+  if (kC == 0) s.dpix.resize(nc);
+  V* const dpix = kC > 0 ? dpix_fixed : &s.dpix.data()->v;
   for (int sy = y0; sy < y1; sy += kSubTile)
   for (int sx = x0; sx < x1; sx += kSubTile) {
-  subtile_list(list, sx, sy, sub);
-  for (int py = sy; py < std::min(sy + kSubTile, y1); ++py) {
-    for (int px = sx; px < std::min(sx + kSubTile, x1); ++px) {
-      const size_t pix = static_cast<size_t>(py) * cam.width + px;
-      const int n = st.n_contrib[pix];
-      if (n == 0) continue;
-      const T cx = T(px) + T(0.5), cy = T(py) + T(0.5);
-      const T* dpix = dL_dimage + pix * nc;
-      const T dA = dL_dalpha ? dL_dalpha[pix] : T(0);
-      const T dD = dL_ddepth ? dL_ddepth[pix] : T(0);
-      const T T_final = st.final_T[pix];
-      T bg_dot = T(0);
-      if (bg)
-        for (int c = 0; c < nc; ++c) bg_dot += bg[c] * dpix[c];
-      T Tr = T_final, last_alpha = T(0), rec_d = T(0), last_d = T(0);
-      T rec_dot = T(0), last_v_dot = T(0);
-      for (int j = n - 1; j >= 0; --j) {
-        const int k = sub[j];
-        const TileGaussian<T>& g = list[k];
-        const T power = gaussian_power(g.mean2d, g.conic, cx, cy);
-        if (power < g.cutoff) continue;
-        T G;
-        const T a = alpha_from_power(power, g.opacity, G);
-        if (a == T(0)) continue;
-        const int id = g.id;
-        Tr = Tr / (T(1) - a);
-        const T w = a * Tr;
-        T* e = buf.data() + static_cast<size_t>(k) * S;
-        touched[k] = 1;
-        const T* v = values + static_cast<size_t>(id) * nc;
-        T* ev = e + 9;
-        // dC/dalpha_i . dL/dC = T_i (v_i - rec_i) . dpix, where rec_i = sum over later contributors j of
-        // v_j alpha_j prod_{i<l<j} (1 - alpha_l). rec is linear in the values, so only its dot product
-        // with dpix is carried: rec_dot_i = a_{i+1} (v_{i+1} . dpix) + (1 - a_{i+1}) rec_dot_{i+1}.
-        T v_dot = T(0);
-#pragma omp simd reduction(+ : v_dot)
-        for (int c = 0; c < nc; ++c) {
-          v_dot += v[c] * dpix[c];
-          ev[c] += w * dpix[c];
-        }
-        rec_dot = last_alpha * last_v_dot + (T(1) - last_alpha) * rec_dot;
-        last_v_dot = v_dot;
-        T dL_da = v_dot - rec_dot;
-        rec_d = last_alpha * last_d + (T(1) - last_alpha) * rec_d;
-        last_d = g.depth;
-        dL_da += (g.depth - rec_d) * dD;
-        e[8] += w * dD;
-        dL_da *= Tr;
-        // alpha = 1 - T_final and the background term T_final * bg: dT_final/dalpha = -T_final/(1-alpha)
-        dL_da += (dA - bg_dot) * T_final / (T(1) - a);
-        last_alpha = a;
-        e[7] += gaussian_alpha_backward(g.mean2d, g.conic, g.opacity, cx, cy, G, dL_da, e, e + 2, e + 4);
+    V cx, cy, T_final, dA, dD, bg_dot;
+    lane_centres<T>(sx, sy, cx, cy);
+    M n_lane;
+    int64_t pixel[kLanes];
+    int n_max = 0;
+    for (int l = 0; l < kLanes; ++l) {
+      const int64_t pix = pixel[l] = lane_pixel(sx, sy, l, x1, y1, cam.width);
+      n_lane[l] = pix < 0 ? 0 : st.n_contrib[pix];
+      n_max = std::max(n_max, static_cast<int>(n_lane[l]));
+      T_final[l] = pix < 0 ? T(1) : st.final_T[pix];
+      dA[l] = pix >= 0 && j.dL_dalpha ? j.dL_dalpha[pix] : T(0);
+      dD[l] = pix >= 0 && j.dL_ddepth ? j.dL_ddepth[pix] : T(0);
+      bg_dot[l] = T(0);
+      for (int c = 0; c < nc; ++c) {
+        dpix[c][l] = pix < 0 ? T(0) : dL_dimage[pix * nc + c];
+        if (bg) bg_dot[l] += bg[c] * dpix[c][l];
       }
     }
-  }
+    if (n_max == 0) continue;
+    const std::vector<int32_t>& sub = s.sub[(sy - y0) / kSubTile * kSubTilesPerSide + (sx - x0) / kSubTile];
+    V Tr = T_final, last_alpha = V{}, rec_d = V{}, last_d = V{}, rec_dot = V{}, last_v_dot = V{};
+    for (int jj = n_max - 1; jj >= 0; --jj) {
+      const int k = sub[jj];
+      const TileGaussian<T>& g = list[k];
+      const V power = gaussian_power(g.mean2d, g.conic, cx, cy);
+      M pass = jj < n_lane;
+      V G;
+      const V a = lane_alpha(power, g.cutoff, g.opacity, pass, G);
+      if (!any_lane(pass)) continue;
+      // a = 0 in the other lanes, so these leave them as they are
+      const V one_minus_a = T(1) - a;
+      const V inv_one_minus_a = T(1) / one_minus_a;
+      Tr = Tr * inv_one_minus_a;
+      const V w = a * Tr;
+      T* e = buf.data() + static_cast<size_t>(k) * S;
+      touched[k] = 1;
+      const T* v = values + static_cast<size_t>(g.id) * nc;
+      // dC/dalpha_i . dL/dC = T_i (v_i - rec_i) . dpix, where rec_i = sum over later contributors j of
+      // v_j alpha_j prod_{i<l<j} (1 - alpha_l). rec is linear in the values, so only its dot product
+      // with dpix is carried: rec_dot_i = a_{i+1} (v_{i+1} . dpix) + (1 - a_{i+1}) rec_dot_{i+1}.
+      V v_dot = V{};
+      if (kC > 0) {
+        for (int c = 0; c < nc; ++c) v_dot += v[c] * dpix[c];
+      } else {  // four partial sums: one would wait on the previous multiply-add every channel
+        V part[4] = {};
+        int c = 0;
+        for (; c + 4 <= nc; c += 4)
+          for (int q = 0; q < 4; ++q) part[q] += v[c + q] * dpix[c + q];
+        for (; c < nc; ++c) part[0] += v[c] * dpix[c];
+        v_dot = (part[0] + part[1]) + (part[2] + part[3]);
+      }
+      rec_dot = pass ? last_alpha * last_v_dot + (T(1) - last_alpha) * rec_dot : rec_dot;
+      last_v_dot = pass ? v_dot : last_v_dot;
+      V dL_da = v_dot - rec_dot;
+      rec_d = pass ? last_alpha * last_d + (T(1) - last_alpha) * rec_d : rec_d;
+      last_d = pass ? V{} + g.depth : last_d;
+      dL_da += (g.depth - rec_d) * dD;
+      dL_da *= Tr;
+      // alpha = 1 - T_final and the background term T_final * bg: dT_final/dalpha = -T_final/(1-alpha)
+      dL_da += (dA - bg_dot) * T_final * inv_one_minus_a;
+      last_alpha = pass ? a : last_alpha;
+      // this entry's gradients per lane in buf's order (a few channels included), summed over the lanes
+      V q[kLanes] = {};
+      lane_alpha_backward(g.mean2d, g.conic, g.opacity, cx, cy, G, dL_da, pass, q);
+      q[8] = w * dD;
+      for (int c = 0; c < kC; ++c) q[9 + c] = w * dpix[c];
+      const V sums = lane_sums(q);
+      for (int i = 0; i < 9 + kC; ++i) e[i] += sums[i];
+      if (kC == 0) add_lane_rows(w, pass, dL_dimage, pixel, nc, e + 9);
+    }
   }
   for (int k = 0; k < L; ++k) {
     if (!touched[k]) continue;
@@ -297,8 +436,8 @@ template <class T, int kC>
   }
 }
 
-// The tile kernels per instruction set. The per-channel loops (128 latent channels in language training
-// and queries) run 4 wide in the x86-64 baseline (SSE2), 8 with AVX2 and 16 with AVX-512; the CPU's best
+// The tile kernels per instruction set. The 16 pixel lanes run as 4 registers in the x86-64 baseline (SSE2),
+// 2 with AVX2 and 1 with AVX-512 (float), as do the per-channel loops of many channels; the CPU's best
 // build is picked at run time (cpu_kernels()). Only these wrappers carry a target: what they call and do
 // not inline stays baseline code, so no AVX instruction runs on a CPU without it.
 template <class T>
@@ -462,7 +601,8 @@ void rasterize_forward_cpu(const SplatCamera<T>& cam, const SplatInputs<T>& in, 
   st.final_T.resize(n_pix);
   st.n_contrib.resize(n_pix);
   const T* values = sh ? st.colors.data() : in.features;
-  const ForwardTileJob<T> job{{cam, st, in.opacities, values, C, in.background}, image, alpha, depth,
+  const std::vector<TileGaussian<T>> gaussians = tile_gaussians(st, in.opacities);
+  const ForwardTileJob<T> job{{cam, st, gaussians.data(), values, C, in.background}, image, alpha, depth,
                               st.final_T.data(), st.n_contrib.data()};
   const ForwardTileFn<T> forward_tile_fn = tile_kernels<T>(C).first;
 #pragma omp parallel
@@ -498,7 +638,8 @@ void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>
   }
   const T* values = sh ? st.colors.data() : in.features;
   StripedLocks locks;
-  const BackwardTileJob<T> job{{cam, st, in.opacities, values, C, in.background}, dL_dimage, dL_dalpha, dL_ddepth,
+  const std::vector<TileGaussian<T>> gaussians = tile_gaussians(st, in.opacities);
+  const BackwardTileJob<T> job{{cam, st, gaussians.data(), values, C, in.background}, dL_dimage, dL_dalpha, dL_ddepth,
                                geom.data(), value_grad, locks};
   const BackwardTileFn<T> backward_tile_fn = tile_kernels<T>(C).second;
 #pragma omp parallel

@@ -63,7 +63,7 @@ TEST_P(SplatReferenceChannels, FeaturesMatchReference) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Channels, SplatReferenceChannels, ::testing::Values(1, 3, 16, 32, 128));
+INSTANTIATE_TEST_SUITE_P(Channels, SplatReferenceChannels, ::testing::Values(1, 3, 16, 32, 128, 147));
 
 // Pixel convention: a small round Gaussian whose mean projects exactly onto the centre of pixel
 // (20, 11), i.e. image point (20.5, 11.5), is brightest there and symmetric around it.
