@@ -1,4 +1,8 @@
-// citylangsplat: a thin CLI over the library. Global flags: -v/--verbose, -q/--quiet, --version.
+// citylangsplat: a thin CLI over the library. Global flags: -v/--verbose, -q/--quiet, --threads N,
+// --version.
+#include <ATen/Parallel.h>
+#include <omp.h>
+
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -6,6 +10,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "core/cpu_threads.h"
 #include "core/error.h"
 #include "core/exit_codes.h"
 #include "core/log.h"
@@ -52,9 +57,11 @@ void usage(FILE* out) {
                "\nglobal options:\n"
                "  -v, --verbose   more output\n"
                "  -q, --quiet     only errors\n"
+               "  --threads N     CPU threads of LibTorch and OpenMP (default: OMP_NUM_THREADS if set,\n"
+               "                  else the CPUs this process may run on; here %d)\n"
                "  --version       print the version\n"
                "\n'citylangsplat <command> --help' shows a command's options and defaults.\n%s\n",
-               cls::kExitCodesHelp);
+               cls::default_cpu_threads(), cls::kExitCodesHelp);
 }
 
 }  // namespace
@@ -62,9 +69,18 @@ void usage(FILE* out) {
 int main(int argc, char** argv) {
   std::vector<char*> args;
   args.push_back(argv[0]);
+  int threads = cls::default_cpu_threads();
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (args.size() == 1 && (a == "-v" || a == "--verbose")) {
+    if (args.size() == 1 && a == "--threads") {
+      const long n = i + 1 < argc ? std::strtol(argv[i + 1], nullptr, 10) : 0;
+      if (n <= 0 || n > 4096 || std::to_string(n) != argv[i + 1]) {
+        std::fprintf(stderr, "error: --threads needs a positive integer, got '%s'\n", i + 1 < argc ? argv[i + 1] : "");
+        return cls::kExitUsage;
+      }
+      threads = static_cast<int>(n);
+      ++i;
+    } else if (args.size() == 1 && (a == "-v" || a == "--verbose")) {
       cls::set_log_level(cls::LogLevel::Verbose);
     } else if (args.size() == 1 && (a == "-q" || a == "--quiet")) {
       cls::set_log_level(cls::LogLevel::Quiet);
@@ -82,6 +98,10 @@ int main(int argc, char** argv) {
     usage(stderr);
     return cls::kExitUsage;
   }
+  // Before any ATen call: LibTorch applies it to OpenMP in each thread that enters ATen later.
+  at::set_num_threads(threads);
+  omp_set_num_threads(threads);
+  cls::log_verbose(cls::cat("CPU threads: ", threads));
   for (const auto& c : kCommands) {
     if (std::strcmp(c.name, args[1]) != 0) continue;
     try {

@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <csignal>
 #include <map>
-#include <thread>
 
+#include "core/cpu_threads.h"
 #include "core/error.h"
 #include "core/exit_codes.h"
 #include "core/interrupt.h"
@@ -48,8 +48,8 @@ int run_tiles_locally(const fs::path& tiles_dir, const TilePlan& plan, const Loc
   const TilesLock lock(tiles_dir);
   install_interrupt_handlers();  // Ctrl-C or a kill of run-tiles stops the tasks after their checkpoint
   // The cores shared among the tasks (LibTorch and OpenMP would each take all of them).
-  const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  const std::string threads = "OMP_NUM_THREADS=" + std::to_string(std::max(1u, cores / static_cast<unsigned>(o.jobs)));
+  const int cores = available_cpus();
+  const std::string threads = "OMP_NUM_THREADS=" + std::to_string(std::max(1, cores / o.jobs));
   for (TilePhase phase : kTilePhases) {
     const std::vector<int> pending = pending_tasks(tiles_dir, plan, phase);
     if (pending.empty()) {

@@ -2,10 +2,14 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
+#include "cli_runner.h"
 #include "core/args.h"
 #include "core/atomic_file.h"
+#include "core/cpu_threads.h"
 #include "core/error.h"
+#include "core/exit_codes.h"
 #include "core/math.h"
 #include "core/progress.h"
 
@@ -90,3 +94,54 @@ TEST(Math, QuaternionRotationMatchesHandComputedCases) {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) EXPECT_NEAR(I.m[i][j], i == j ? 1.0 : 0.0, 1e-12);
 }
+
+namespace cls {
+namespace {
+
+// The CPUs in /proc/self/status's Cpus_allowed_list ("0-3,6"): the kernel's own account of the mask.
+int cpus_allowed_by_proc() {
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("Cpus_allowed_list:", 0) != 0) continue;
+    std::stringstream list(line.substr(line.find(':') + 1));
+    std::string range;
+    int count = 0;
+    while (std::getline(list, range, ',')) {
+      const size_t dash = range.find('-');
+      count += dash == std::string::npos ? 1 : std::stoi(range.substr(dash + 1)) - std::stoi(range.substr(0, dash)) + 1;
+    }
+    return count;
+  }
+  return -1;
+}
+
+TEST(CpuThreads, OmpNumThreadsElseTheAffinityMask) {
+  const char* env = std::getenv("OMP_NUM_THREADS");
+  const std::string saved = env ? env : "";
+  EXPECT_EQ(available_cpus(), cpus_allowed_by_proc());
+  ::unsetenv("OMP_NUM_THREADS");
+  EXPECT_EQ(default_cpu_threads(), available_cpus());
+  ::setenv("OMP_NUM_THREADS", "3", 1);
+  EXPECT_EQ(default_cpu_threads(), 3);
+  for (const char* bad : {"0", "-2", "2x", "", "many"}) {
+    ::setenv("OMP_NUM_THREADS", bad, 1);
+    EXPECT_EQ(default_cpu_threads(), available_cpus()) << "OMP_NUM_THREADS='" << bad << "'";
+  }
+  if (env) ::setenv("OMP_NUM_THREADS", saved.c_str(), 1);
+  else ::unsetenv("OMP_NUM_THREADS");
+}
+
+TEST(CpuThreads, GlobalFlagSetsThemOrIsAUsageError) {
+  const test::CliResult ok = test::run_cli("-v --threads 3 scene --help");
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  EXPECT_NE(ok.err.find("CPU threads: 3"), std::string::npos) << ok.err;
+  for (const char* bad : {"--threads 0 scene --help", "--threads 2x scene --help", "--threads"}) {
+    const test::CliResult r = test::run_cli(bad);
+    EXPECT_EQ(r.status, kExitUsage) << bad;
+    EXPECT_NE(r.err.find("--threads needs a positive integer"), std::string::npos) << bad << ": " << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace cls
