@@ -37,16 +37,6 @@ using Lanes = typename LaneTypes<T>::V;
 template <class T>
 using LaneMask = decltype(Lanes<T>{} < Lanes<T>{});
 
-// Sum of the 16 lanes (pairwise).
-template <class V>
-[[gnu::always_inline]] inline auto lane_sum(const V& v) {
-  const auto a = __builtin_shufflevector(v, v, 0, 1, 2, 3, 4, 5, 6, 7) +
-                 __builtin_shufflevector(v, v, 8, 9, 10, 11, 12, 13, 14, 15);
-  const auto b = __builtin_shufflevector(a, a, 0, 1, 2, 3) + __builtin_shufflevector(a, a, 4, 5, 6, 7);
-  const auto c = __builtin_shufflevector(b, b, 0, 1) + __builtin_shufflevector(b, b, 2, 3);
-  return c[0] + c[1];
-}
-
 // The lane sums of 16 vectors at once: lane i of the result is the sum of q[i]'s lanes (a transpose by
 // halving: 15 steps of two shuffles and an add, against 16 separate sums).
 template <class V>
