@@ -4,6 +4,7 @@
 #include <omp.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <string>
@@ -49,7 +50,7 @@ const Command kCommands[] = {
 
 void usage(FILE* out) {
   std::fprintf(out,
-               "usage: citylangsplat [-v|-q] <command> [options]\n\n"
+               "usage: citylangsplat [-v|-q] [--threads N] <command> [options]\n\n"
                "Open-vocabulary understanding of urban 3D scenes with CityGML-guided language Gaussians.\n\n"
                "commands:\n");
   for (const auto& c : kCommands) std::fprintf(out, "  %-12s %s\n", c.name, c.summary);
@@ -79,6 +80,7 @@ int main(int argc, char** argv) {
         return cls::kExitUsage;
       }
       threads = static_cast<int>(n);
+      ::setenv("OMP_NUM_THREADS", argv[i + 1], 1);  // the processes it starts (run-tiles' tasks) share them
       ++i;
     } else if (args.size() == 1 && (a == "-v" || a == "--verbose")) {
       cls::set_log_level(cls::LogLevel::Verbose);

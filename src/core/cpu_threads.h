@@ -8,8 +8,8 @@ namespace cls {
 // The CPUs this process may run on: its affinity mask (a Slurm or cgroup cpuset), at least 1.
 int available_cpus();
 
-// OMP_NUM_THREADS when it is a positive integer (what run-tiles and Slurm tasks set), else
-// available_cpus().
+// OMP_NUM_THREADS when it is a positive integer or a list starting with one ("4,2"; what run-tiles,
+// Slurm tasks and `citylangsplat --threads N` set for their children), else available_cpus().
 int default_cpu_threads();
 
 }  // namespace cls

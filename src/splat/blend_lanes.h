@@ -70,7 +70,7 @@ template <class Mask>
 [[gnu::always_inline]] inline Lanes<float> lane_exp(const Lanes<float>& power) {
   using V = Lanes<float>;
   using I = LaneMask<float>;
-  V x = power < -87.0f ? V{} - 87.0f : power;
+  V x = power >= -87.0f ? power : V{} - 87.0f;  // NaN too: no NaN reaches the integer conversion
   x = x > 0.0f ? V{} : x;
   const float kRound = 12582912.0f;  // 1.5 * 2^23: adding and subtracting it rounds to an integer
   const V n = (x * 1.44269504088896341f + kRound) - kRound;

@@ -229,7 +229,7 @@ template <class T, int kC>
   // fixed-size channels live on the stack (registers for RGB)
   V acc_fixed[kC > 0 ? kC : 1];
   if (kC == 0) s.acc.resize(nc);
-  V* const acc = kC > 0 ? acc_fixed : &s.acc.data()->v;
+  V* const acc = kC > 0 ? acc_fixed : &s.acc[0].v;
   for (int sy = y0; sy < y1; sy += kSubTile)
   for (int sx = x0; sx < x1; sx += kSubTile) {
     const std::vector<int32_t>& sub = s.sub[(sy - y0) / kSubTile * kSubTilesPerSide + (sx - x0) / kSubTile];
@@ -259,8 +259,8 @@ template <class T, int kC>
       const V w = pass ? a * Tr : V{};
       const T* v = values + static_cast<size_t>(g.id) * nc;
       if (kC > 0) {
-        for (int c = 0; c < nc; ++c) acc[c] += w * v[c];
-      } else {
+        for (int c = 0; c < nc; ++c) acc[c] += pass ? w * v[c] : V{};
+      } else {  // (a NaN value reaches the sub-tile's other lanes here: NaN features are an error upstream)
         batch_w[batched] = w, batch_v[batched++] = v;
         if (batched == kBatch) add_weighted_values(acc, batch_w, batch_v, batched, nc), batched = 0;
       }
@@ -415,8 +415,9 @@ template <class T, int kC>
       // this entry's gradients per lane in buf's order (a few channels included), summed over the lanes
       V q[kLanes] = {};
       lane_alpha_backward(g.mean2d, g.conic, g.opacity, cx, cy, G, dL_da, pass, q);
-      q[8] = w * dD;
-      for (int c = 0; c < kC; ++c) q[9 + c] = w * dpix[c];
+      // selects, not w * x: a lane that does not contribute must not bring an inf or NaN of its pixel in
+      q[8] = pass ? w * dD : V{};
+      for (int c = 0; c < kC; ++c) q[9 + c] = pass ? w * dpix[c] : V{};
       const V sums = lane_sums(q);
       for (int i = 0; i < 9 + kC; ++i) e[i] += sums[i];
       if (kC == 0) add_lane_rows(w, pass, dL_dimage, pixel, nc, e + 9);

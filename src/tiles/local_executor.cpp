@@ -48,7 +48,7 @@ int run_tiles_locally(const fs::path& tiles_dir, const TilePlan& plan, const Loc
   const TilesLock lock(tiles_dir);
   install_interrupt_handlers();  // Ctrl-C or a kill of run-tiles stops the tasks after their checkpoint
   // The cores shared among the tasks (LibTorch and OpenMP would each take all of them).
-  const int cores = available_cpus();
+  const int cores = default_cpu_threads();  // --threads N or OMP_NUM_THREADS where given
   const std::string threads = "OMP_NUM_THREADS=" + std::to_string(std::max(1, cores / o.jobs));
   for (TilePhase phase : kTilePhases) {
     const std::vector<int> pending = pending_tasks(tiles_dir, plan, phase);

@@ -122,9 +122,11 @@ TEST(CpuThreads, OmpNumThreadsElseTheAffinityMask) {
   EXPECT_EQ(available_cpus(), cpus_allowed_by_proc());
   ::unsetenv("OMP_NUM_THREADS");
   EXPECT_EQ(default_cpu_threads(), available_cpus());
-  ::setenv("OMP_NUM_THREADS", "3", 1);
-  EXPECT_EQ(default_cpu_threads(), 3);
-  for (const char* bad : {"0", "-2", "2x", "", "many"}) {
+  for (const char* three : {"3", " 3 ", "3,2"}) {  // OpenMP's nested list: the first entry is the outer level
+    ::setenv("OMP_NUM_THREADS", three, 1);
+    EXPECT_EQ(default_cpu_threads(), 3) << "OMP_NUM_THREADS='" << three << "'";
+  }
+  for (const char* bad : {"0", "-2", "2x", "", "many", ",3", "99999999999"}) {
     ::setenv("OMP_NUM_THREADS", bad, 1);
     EXPECT_EQ(default_cpu_threads(), available_cpus()) << "OMP_NUM_THREADS='" << bad << "'";
   }

@@ -184,3 +184,58 @@ TEST(SplatGradients, RasterizerFeatures) {
 
 }  // namespace
 }  // namespace cls
+
+namespace cls {
+namespace {
+
+// Pixels that nothing was blended into (n_contrib 0) give no gradient, whatever their dL/d(image, alpha,
+// depth) hold, also when they share a 4x4 sub-tile (the CPU's vector lanes) with covered pixels: NaN
+// there leaves every gradient as with zeros.
+TEST(SplatGradients, UncoveredPixelsReachNoGradient) {
+  for (const int channels : {3, 20}) {
+    const auto s = test::random_scene(6, 40, 36, channels, /*use_sh=*/false, 31, 0.7);
+    const auto a = test::scene_arrays<float>(s);
+    const size_t n_pix = static_cast<size_t>(s.cam.width) * s.cam.height;
+    std::vector<float> image(n_pix * channels), alpha(n_pix), depth(n_pix);
+    SplatForwardState<float> st;
+    rasterize_forward_cpu(test::cast_camera<float>(s.cam), a.inputs(s), image.data(), alpha.data(), depth.data(), st);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> U(-1, 1);
+    std::vector<float> di(n_pix * channels), da(n_pix), dd(n_pix);
+    for (float& v : di) v = U(rng);
+    for (size_t i = 0; i < n_pix; ++i) da[i] = U(rng), dd[i] = U(rng);
+    auto grads = [&](float uncovered) {
+      std::vector<float> i2 = di, a2 = da, d2 = dd;
+      for (size_t p = 0; p < n_pix; ++p) {
+        if (st.n_contrib[p] != 0) continue;
+        a2[p] = d2[p] = uncovered;
+        for (int c = 0; c < channels; ++c) i2[p * channels + c] = uncovered;
+      }
+      std::vector<float> gm(a.means.size()), gs(a.scales.size()), gq(a.quats.size()), go(a.opacities.size()),
+          gf(a.features.size());
+      SplatGradients<float> g;
+      g.means = gm.data(), g.scales = gs.data(), g.quats = gq.data(), g.opacities = go.data(), g.features = gf.data();
+      rasterize_backward_cpu(a.inputs(s), st, i2.data(), a2.data(), d2.data(), g);
+      std::vector<float> all;
+      for (const auto* v : {&gm, &gs, &gq, &go, &gf}) all.insert(all.end(), v->begin(), v->end());
+      return all;
+    };
+    // the case must exist: an uncovered pixel in the same 4x4 block as a covered one
+    int mixed = 0;
+    for (int y = 0; y < s.cam.height; y += 4)
+      for (int x = 0; x < s.cam.width; x += 4) {
+        int covered = 0, total = 0;
+        for (int dy = 0; dy < 4 && y + dy < s.cam.height; ++dy)
+          for (int dx = 0; dx < 4 && x + dx < s.cam.width; ++dx, ++total)
+            covered += st.n_contrib[static_cast<size_t>(y + dy) * s.cam.width + x + dx] != 0;
+        mixed += covered > 0 && covered < total;
+      }
+    ASSERT_GT(mixed, 0) << "no sub-tile mixes covered and uncovered pixels";
+    const std::vector<float> with_zero = grads(0.0f), with_nan = grads(std::nanf(""));
+    for (size_t k = 0; k < with_zero.size(); ++k)
+      ASSERT_EQ(with_zero[k], with_nan[k]) << "channels " << channels << " gradient " << k;
+  }
+}
+
+}  // namespace
+}  // namespace cls
