@@ -232,8 +232,11 @@ TEST(SplatGradients, UncoveredPixelsReachNoGradient) {
       }
     ASSERT_GT(mixed, 0) << "no sub-tile mixes covered and uncovered pixels";
     const std::vector<float> with_zero = grads(0.0f), with_nan = grads(std::nanf(""));
-    for (size_t k = 0; k < with_zero.size(); ++k)
-      ASSERT_EQ(with_zero[k], with_nan[k]) << "channels " << channels << " gradient " << k;
+    // equal up to the order in which threads add tiles' sums (rasterize_cpu.h)
+    for (size_t k = 0; k < with_zero.size(); ++k) {
+      ASSERT_TRUE(std::isfinite(with_nan[k])) << "channels " << channels << " gradient " << k;
+      ASSERT_NEAR(with_zero[k], with_nan[k], 1e-5 * (1 + std::abs(with_zero[k]))) << "channels " << channels << " gradient " << k;
+    }
   }
 }
 
