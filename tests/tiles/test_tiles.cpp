@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <thread>
+#include <cstdlib>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -323,9 +323,15 @@ TEST(LocalExecutor, RunsThePhasesInOrderAndStopsAfterAFailure) {
   o.binary = fake.string();
   o.jobs = 2;
   o.retries = 0;
+  // The executor divides the process's threads (--threads N exports OMP_NUM_THREADS) among its jobs.
+  const char* env = std::getenv("OMP_NUM_THREADS");
+  const std::string saved = env ? env : "";
+  ::setenv("OMP_NUM_THREADS", "6", 1);
   EXPECT_EQ(run_tiles_locally(dir.path, plan, o), 0);
+  if (env) ::setenv("OMP_NUM_THREADS", saved.c_str(), 1);
+  else ::unsetenv("OMP_NUM_THREADS");
   std::string calls = read_text_file(dir.path / "calls");
-  const std::string threads = std::to_string(std::max(1u, std::thread::hardware_concurrency() / 2));
+  const std::string threads = "3";
   auto lines = [](std::string text) {
     std::vector<std::string> out;
     for (size_t p; (p = text.find('\n')) != std::string::npos; text.erase(0, p + 1)) out.push_back(text.substr(0, p));
