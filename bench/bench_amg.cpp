@@ -20,6 +20,7 @@
 #include "core/args.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/heap_reuse.h"
 #include "core/npy.h"
 #include "models/sam/sam_config.h"
 #include "models/sam/sam_model.h"
@@ -222,6 +223,7 @@ std::vector<int> parse_sizes(const std::string& s) {
 }  // namespace cls::amg
 
 int main(int argc, char** argv) {
+  cls::reuse_freed_memory();  // as the CLI does
   cls::Args args("bench_amg",
                  "LangSplat mask NMS (fast vs torch vs reference) at 1000x750 and the whole LangSplat AMG on a "
                  "1000x750 image with a randomly initialised SAM. Prints Markdown rows for docs/benchmarks.md.",

@@ -17,6 +17,7 @@
 #include "bench_timer.h"
 #include "core/args.h"
 #include "core/error.h"
+#include "core/heap_reuse.h"
 #include "models/clip/clip_model.h"
 #include "models/clip/region_crops.h"
 #include "models/clip/region_encoder.h"
@@ -119,6 +120,7 @@ int run(int argc, char** argv) {
 }  // namespace cls
 
 int main(int argc, char** argv) {
+  cls::reuse_freed_memory();  // as the CLI does
   try {
     return cls::run(argc, argv);
   } catch (const cls::UsageError& e) {

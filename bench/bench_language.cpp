@@ -21,6 +21,7 @@
 #include "bench_timer.h"
 #include "core/args.h"
 #include "core/error.h"
+#include "core/heap_reuse.h"
 #include "language/autoencoder.h"
 #include "splat/rasterize.h"
 
@@ -177,6 +178,7 @@ int bench_main(int argc, char** argv) {
 }  // namespace cls
 
 int main(int argc, char** argv) {
+  cls::reuse_freed_memory();  // as the CLI does
   try {
     return cls::bench_main(argc, argv);
   } catch (const cls::Error& e) {

@@ -18,6 +18,7 @@
 #include "bench_timer.h"
 #include "core/args.h"
 #include "core/error.h"
+#include "core/heap_reuse.h"
 #include "query/relevance.h"
 
 namespace cls {
@@ -109,6 +110,7 @@ int bench_main(int argc, char** argv) {
 }  // namespace cls
 
 int main(int argc, char** argv) {
+  cls::reuse_freed_memory();  // as the CLI does
   try {
     return cls::bench_main(argc, argv);
   } catch (const cls::Error& e) {

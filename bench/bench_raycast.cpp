@@ -15,6 +15,7 @@
 #include "bench_timer.h"
 #include "core/args.h"
 #include "core/error.h"
+#include "core/heap_reuse.h"
 #include "raycast/label_maps.h"
 #include "raycast/look_at.h"
 #include "raycast/raycaster.h"
@@ -112,6 +113,7 @@ void bench_parse(const std::string& path, int repeats) {
 }  // namespace cls
 
 int main(int argc, char** argv) {
+  cls::reuse_freed_memory();  // as the CLI does
   cls::Args args("bench_raycast",
                  "Raycast throughput (Mrays/s) at 1920x1080 with and without the label maps, for FZK-Haus LoD3, "
                  "the 100 LoD2 buildings and the citygml4j LoD3 building, and the parse time of the largest "

@@ -14,6 +14,7 @@
 #include "bench_timer.h"
 #include "core/args.h"
 #include "core/error.h"
+#include "core/heap_reuse.h"
 #include "models/sam/sam_predictor.h"
 
 namespace cls {
@@ -76,6 +77,7 @@ int run(int argc, char** argv) {
 }  // namespace cls
 
 int main(int argc, char** argv) {
+  cls::reuse_freed_memory();  // as the CLI does
   try {
     return cls::run(argc, argv);
   } catch (const cls::Error& e) {

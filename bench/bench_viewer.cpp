@@ -23,6 +23,7 @@
 #include "bench_timer.h"
 #include "core/args.h"
 #include "core/error.h"
+#include "core/heap_reuse.h"
 #include "language/language_model.h"
 #include "language/provenance.h"
 #include "viewer/viewer_model.h"
@@ -155,6 +156,7 @@ int bench_main(int argc, char** argv) {
 }  // namespace cls
 
 int main(int argc, char** argv) {
+  cls::reuse_freed_memory();  // as the CLI does
   try {
     return cls::bench_main(argc, argv);
   } catch (const std::exception& e) {

@@ -12,6 +12,7 @@
 
 #include "cli/commands.h"
 #include "core/cpu_threads.h"
+#include "core/heap_reuse.h"
 #include "core/error.h"
 #include "core/exit_codes.h"
 #include "core/log.h"
@@ -68,6 +69,7 @@ void usage(FILE* out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  cls::reuse_freed_memory();
   std::vector<char*> args;
   args.push_back(argv[0]);
   int threads = cls::default_cpu_threads();

@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <unistd.h>
 
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -10,6 +14,7 @@
 #include "core/cpu_threads.h"
 #include "core/error.h"
 #include "core/exit_codes.h"
+#include "core/heap_reuse.h"
 #include "core/math.h"
 #include "core/progress.h"
 
@@ -143,6 +148,46 @@ TEST(CpuThreads, GlobalFlagSetsThemOrIsAUsageError) {
     EXPECT_EQ(r.status, kExitUsage) << bad;
     EXPECT_NE(r.err.find("--threads needs a positive integer"), std::string::npos) << bad << ": " << r.err;
   }
+}
+
+// Minor page faults of this process so far (the kernel's count).
+long minor_faults() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_minflt;
+}
+
+// Faults taken writing every page of a fresh block of `bytes`, which is then freed.
+long faults_to_fill_and_free(std::size_t bytes) {
+  const long before = minor_faults();
+  char* p = static_cast<char*>(std::malloc(bytes));
+  if (!p) return -1;
+  std::memset(p, 1, bytes);
+  asm volatile("" : : "r"(p) : "memory");  // the block is used: the compiler keeps the malloc and the writes
+  std::free(p);
+  return minor_faults() - before;
+}
+
+// 64 MiB is above glibc's largest dynamic mmap threshold (32 MiB): without reuse_freed_memory every
+// such block is mapped afresh and faults each of its 16,384 pages in again.
+TEST(HeapReuse, AFreedLargeBlockIsReusedWithoutPageFaults) {
+  const char* tunables = std::getenv("GLIBC_TUNABLES");
+  if (tunables && std::strstr(tunables, "glibc.malloc.")) GTEST_SKIP() << "GLIBC_TUNABLES sets malloc: " << tunables;
+  const std::size_t bytes = std::size_t(64) << 20;
+  const long pages = static_cast<long>(bytes / static_cast<std::size_t>(sysconf(_SC_PAGESIZE)));
+  ASSERT_GE(faults_to_fill_and_free(bytes), pages / 2) << "a fresh block faults its pages in";
+  ASSERT_TRUE(reuse_freed_memory());
+  faults_to_fill_and_free(bytes);  // now from the heap, which keeps it
+  EXPECT_LT(faults_to_fill_and_free(bytes), pages / 100);
+}
+
+TEST(HeapReuse, TheUsersMallocTunablesWin) {
+  const char* env = std::getenv("GLIBC_TUNABLES");
+  const std::string saved = env ? env : "";
+  ::setenv("GLIBC_TUNABLES", "glibc.malloc.trim_threshold=4096", 1);
+  EXPECT_FALSE(reuse_freed_memory());
+  if (env) ::setenv("GLIBC_TUNABLES", saved.c_str(), 1);
+  else ::unsetenv("GLIBC_TUNABLES");
 }
 
 }  // namespace

@@ -1,0 +1,20 @@
+#pragma once
+// Freed memory kept for reuse instead of returned to the kernel. glibc maps every block above its
+// mmap threshold (128 KiB, raised as blocks are freed, at most 32 MiB) and unmaps it on free, and
+// returns the heap's free top above its trim threshold: training and decoding loops that make and
+// free the same large tensors every iteration then fault every page in again, and the kernel clears
+// each. train-rgb at 480x360 took 12,500 page faults per iteration (docs/benchmarks.md).
+
+#include <cstddef>
+
+namespace cls {
+
+// Blocks up to this size come from the heap and are reused after free.
+constexpr std::size_t kHeapReuseMaxBlock = std::size_t(1) << 30;
+
+// Raises glibc's mmap and trim thresholds to kHeapReuseMaxBlock (M_MMAP_THRESHOLD, M_TRIM_THRESHOLD).
+// Call once at the start of a program, before large allocations. Does nothing and returns false when
+// the user set glibc's malloc tunables (GLIBC_TUNABLES with "glibc.malloc."): theirs win.
+bool reuse_freed_memory();
+
+}  // namespace cls
