@@ -54,21 +54,20 @@ struct TileGaussian {
   T mean2d[2];
   T conic[3];
   T opacity;
-  T cutoff;  // alpha_cutoff_power(opacity)
   T depth;
-  T box[4];  // xmin, xmax, ymin, ymax: a conservative bound of where power >= cutoff
+  T box[4];  // xmin, xmax, ymin, ymax: a conservative bound of where alpha >= 1/255
   int32_t id;
 };
 
 // Pixels walk only the Gaussians whose cutoff ellipse box overlaps their 4x4 sub-tile: the others
-// would all be skipped by the cutoff test, so results are the same, with ~16x fewer evaluations.
+// would all have alpha < 1/255 there, so results are the same, with ~16x fewer evaluations.
 constexpr int kSubTile = 4;
 
 // Bounding box of {d : -0.5 d^T Q d >= cutoff}: half-widths sqrt(R (Q^-1)_xx), sqrt(R (Q^-1)_yy) with
-// R = -2 cutoff, widened by a margin far beyond rounding.
+// R = -2 cutoff (alpha_cutoff_power), widened by a margin far beyond rounding.
 template <class T>
-void cutoff_box(TileGaussian<T>& g) {
-  const T R = T(-2) * g.cutoff;
+void cutoff_box(TileGaussian<T>& g, T cutoff) {
+  const T R = T(-2) * cutoff;
   const T det = g.conic[0] * g.conic[2] - g.conic[1] * g.conic[1];
   if (!(R > T(0)) || !(det > T(0))) {
     g.box[0] = g.box[2] = T(1e30), g.box[1] = g.box[3] = T(-1e30);  // never passes
@@ -118,10 +117,9 @@ std::vector<TileGaussian<T>> tile_gaussians(const SplatForwardState<T>& st, cons
     g.mean2d[0] = p.mean2d[0], g.mean2d[1] = p.mean2d[1];
     g.conic[0] = p.conic[0], g.conic[1] = p.conic[1], g.conic[2] = p.conic[2];
     g.opacity = opacities[id];
-    g.cutoff = alpha_cutoff_power(g.opacity);
     g.depth = p.depth;
     g.id = id;
-    cutoff_box(g);
+    cutoff_box(g, alpha_cutoff_power(g.opacity));
   }
   return out;
 }
@@ -249,9 +247,9 @@ template <class T, int kC>
     for (int k = 0; k < L; ++k) {
       const TileGaussian<T>& g = list[sub[k]];
       const V power = gaussian_power(g.mean2d, g.conic, cx, cy);
-      M pass = live;  // lane_alpha applies the cutoff; nearly every entry of a sub-tile list has a lane within it
+      M pass = live;  // nearly every entry of a sub-tile list has a lane within its cutoff
       V G;
-      const V a = lane_alpha(power, g.cutoff, g.opacity, pass, G);
+      const V a = lane_alpha(power, g.opacity, pass, G);
       if (!any_lane(pass)) continue;
       const V test_T = Tr * (T(1) - a);
       const M stop = pass & (test_T < T(kTransmittanceMin));
@@ -380,9 +378,11 @@ template <class T, int kC>
       const int k = sub[jj];
       const TileGaussian<T>& g = list[k];
       const V power = gaussian_power(g.mean2d, g.conic, cx, cy);
-      M pass = jj < n_lane;
+      // jj < n_lane as a sign bit, not a comparison: GCC 12 scalarises an integer and a float comparison combined
+      // into one mask (lane_alpha's) in the AVX-512 build, one compare per lane
+      M pass = (jj - n_lane) >> 31;
       V G;
-      const V a = lane_alpha(power, g.cutoff, g.opacity, pass, G);
+      const V a = lane_alpha(power, g.opacity, pass, G);
       if (!any_lane(pass)) continue;
       // a = 0 in the other lanes, so these leave them as they are
       const V one_minus_a = T(1) - a;
