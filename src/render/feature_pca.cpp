@@ -18,7 +18,7 @@ FeaturePca fit_feature_pca(const at::Tensor& features, const at::Tensor& mask, i
   pca.mean = x.mean(0);
   const at::Tensor centred = x - pca.mean;
   const at::Tensor cov = centred.t().matmul(centred) / double(std::max<int64_t>(1, x.size(0) - 1));
-  const at::Tensor vectors = std::get<1>(torch::linalg::eigh(cov, "L"));  // ascending eigenvalues
+  const at::Tensor vectors = std::get<1>(at::linalg_eigh(cov, "L"));  // ascending eigenvalues
   const int64_t k = std::min<int64_t>(3, C);
   pca.components = torch::zeros({C, 3}, torch::kFloat64);
   pca.components.slice(1, 0, k).copy_(vectors.flip(1).slice(1, 0, k));

@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# The GPU checks, on a lent device machine, in a copy of this repository that carries .gpu/ (made by
+# scripts/device/prepare.sh). Appends every step's output to $OUT/gpu.log and prints one line per step.
+#   bash scripts/device/gpu_checks.sh [STEP...]     (default: every step but suite, in the order of ALL)
+# Steps: splat_tests (the CUDA rasterizer against the CPU path), models_tests (CLIP/SAM fixture parity
+# on CUDA), bench_* (rasterizer, CLIP, language field, SAM AMG on the GPU), run (`run --models tiny` on
+# the bundled example), suite (every test program carried, 16 at a time, one OpenMP thread each).
+set -uo pipefail
+ROOT=$PWD
+LOG=${OUT:-/tmp}/gpu.log
+mkdir -p /tmp/gpu && tar -xJf .gpu/bundle.tar.xz -C /tmp/gpu || exit 1
+# The build's compiled-in paths (fixtures, the CLI for CLI tests, the tokenizer's data) name the
+# source and build folders of the machine that built it: the same paths point here.
+read -r SRC BLD < /tmp/gpu/paths.txt
+mkdir -p "$(dirname "$SRC")" "$(dirname "$BLD")"
+[ -e "$SRC" ] || ln -s "$ROOT" "$SRC"
+ln -sfn /tmp/gpu/build "$BLD"
+TORCH=$(cd / && python3 -c 'import torch, os; print(os.path.dirname(torch.__file__))')
+export LD_LIBRARY_PATH=$BLD:/tmp/gpu/lib:$TORCH/lib:$TORCH/../nvidia/cu13/lib:/usr/local/cuda/lib64
+B=$BLD
+SUMMARY=()
+step() {  # step NAME LIMIT_S COMMAND...
+  local name=$1 limit=$2 t0 rc
+  shift 2
+  t0=$EPOCHREALTIME
+  { echo; echo "=== $name: $*"; } >> "$LOG"
+  timeout "$limit" "$@" >> "$LOG" 2>&1
+  rc=$?
+  SUMMARY+=("$(awk -v n="$name" -v rc=$rc -v t0="$t0" -v t1="$EPOCHREALTIME" \
+    'BEGIN { printf "%-28s rc=%-3s %7.1f s", n, rc, t1 - t0 }')")
+  echo "${SUMMARY[-1]}"
+}
+
+{ nvidia-smi --query-gpu=name,driver_version,memory.total,clocks.sm --format=csv; nproc
+  ldd "$B/citylangsplat" "$B"/test_* "$B"/bench/bench_* | grep "not found"; } >> "$LOG" 2>&1
+# Each case is one step; the default order puts what matters most first, so that a call cut short
+# by its time limit still brings back the rest's log.
+ALL=(splat_tests bench_splat models_tests bench_clip_bf16 bench_language run bench_amg amg_fixture bench_clip_other
+     bench_splat_200k)
+steps=("$@")
+[ ${#steps[@]} -gt 0 ] || steps=("${ALL[@]}")
+for s in "${steps[@]}"; do
+  case $s in
+    splat_tests) step "$s" 90 "$B/test_splat" --gtest_filter='*Cuda*:*CUDA*' ;;
+    models_tests)
+      step "$s" 150 env CLS_TEST_DEVICE=cuda "$B/test_models" \
+        --gtest_filter='ClipParity*:ClipModel.ReducedPrecision*:SamPredictor.*:SamAmgRun.*' ;;
+    bench_splat)
+      step "$s" 90 "$B/bench/bench_splat" --device cuda --threads 16 --gaussians 1000000 --width 1600 --height 1000 \
+        --iters 10 ;;
+    bench_splat_200k) step "$s" 45 "$B/bench/bench_splat" --device cuda --threads 16 --iters 10 ;;
+    bench_clip_bf16) step "$s" 45 "$B/bench/bench_clip" --device cuda --dtype bfloat16 --batch 256 --batches 5 --texts 512 ;;
+    bench_clip_other)
+      for dt in float16 float32; do
+        step "bench_clip_$dt" 45 "$B/bench/bench_clip" --device cuda --dtype $dt --batch 256 --batches 5 --texts 512
+      done ;;
+    bench_language)
+      step "$s" 90 "$B/bench/bench_language" --device cuda --threads 16 --repeats 10 \
+        --train-scenes 50000@480x360,200000@800x600,1000000@1600x1000 --query-scene 200000@1920x1080 ;;
+    bench_amg) step "$s" 120 "$B/bench/bench_amg" --device cuda --masks '' --model vit_h --threads 16 ;;
+    amg_fixture)
+      step "$s" 90 "$B/bench/bench_amg" --device cuda --masks '' --fixture "$ROOT/tests/fixtures/sam" --threads 16 ;;
+    run)
+      step make_example 60 env CITYLANGSPLAT="$B/citylangsplat" bash scripts/make_example.sh /tmp/example
+      step run_tiny 300 "$B/citylangsplat" run /tmp/example --models tiny
+      cat /tmp/example/citylangsplat/run.json >> "$LOG" 2>&1 ;;
+    suite)
+      export OMP_NUM_THREADS=1
+      for t in "$B"/test_*; do echo "$t"; done | xargs -P 16 -I{} sh -c \
+        '{} --gtest_brief=1 > /tmp/$(basename {}).log 2>&1; echo "$(basename {}) rc=$?"' >> "$LOG"
+      cat /tmp/test_*.log >> "$LOG" ;;
+    *) echo "gpu_checks: unknown step $s (steps: ${ALL[*]} suite)" >&2; exit 2 ;;
+  esac
+done
+echo; printf '%s\n' "${SUMMARY[@]}"
