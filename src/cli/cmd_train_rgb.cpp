@@ -51,6 +51,7 @@ int cmd_train_rgb(int argc, char** argv) {
       .option("test-every", std::to_string(d.test_every), "hold out every this-th view for testing (0 = none)")
       .option("checkpoint-every", std::to_string(d.checkpoint_every), "checkpoint interval (iterations, 0 = only at the end / on interrupt)")
       .option("seed", std::to_string(d.seed), "random seed (view order, backgrounds, split samples)")
+      .option("device", d.device, "auto (CUDA where this build and machine have it), cpu or cuda")
       .flag("random-background", "a random background colour every iteration")
       .flag("white-background", "white instead of black background")
       .flag("resume", "continue from OUT/checkpoints/checkpoint.safetensors");
@@ -86,6 +87,7 @@ int cmd_train_rgb(int argc, char** argv) {
   o.random_background = args.flag_set("random-background");
   o.white_background = args.flag_set("white-background");
   o.resume = args.flag_set("resume");
+  o.device = args.get("device");
   if (o.random_background && o.white_background)
     throw UsageError("train-rgb: --random-background and --white-background exclude each other");
 

@@ -39,6 +39,7 @@
 #include "language/language_model.h"
 #include "language/provenance.h"
 #include "scene/view_selection.h"
+#include "splat/compute_device.h"
 #include "splat/adam.h"
 #include "splat/checkpoint.h"
 #include "splat/ply_gaussians.h"
@@ -62,18 +63,6 @@ struct ViewTargets {
   at::Tensor gml_latents;        // R x L (device)
   at::Tensor coverage;           // H x W float 0/1 (device)
 };
-
-at::Device pick_device(const std::string& name) {
-  if (name == "cpu") return at::kCPU;
-  if (name == "cuda" || name == "auto") {
-#ifdef CLS_WITH_CUDA
-    if (at::hasCUDA()) return at::Device(at::kCUDA, 0);
-#endif
-    if (name == "cuda") throw UsageError("--device cuda: this build or machine has no CUDA device");
-    return at::kCPU;
-  }
-  throw UsageError("unknown device '" + name + "' (auto, cpu or cuda)");
-}
 
 at::Tensor encode_rows(const Autoencoder& ae, const at::Tensor& features, at::Device device) {
   if (!features.defined() || features.size(0) == 0) return at::zeros({0, ae.config().latent_dim()}, at::kFloat).to(device);
@@ -220,7 +209,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
   const auto start = std::chrono::steady_clock::now();
   if (o.iterations < 1) throw UsageError("--iterations must be at least 1");
   if (o.lr <= 0) throw UsageError("--lr must be positive");
-  const at::Device device = pick_device(o.device);
+  const at::Device device = compute_device(o.device);
   install_interrupt_handlers();
 
   // Frozen geometry: activated parameters without gradients.

@@ -122,7 +122,7 @@ void Adam::restore(const std::map<std::string, at::Tensor>& tensors, const std::
       if (it->second.sizes() != g.param.sizes())
         fail(source, "tensor '" + key + "' has the wrong shape for parameter '" + g.name + "'");
       (std::string(which) == "exp_avg" ? g.exp_avg : g.exp_avg_sq) =
-          it->second.to(g.param.dtype()).clone().contiguous();
+          it->second.to(g.param.options()).clone().contiguous();
     }
     auto step = scalars.find(g.name + ".step");
     auto lr = scalars.find(g.name + ".lr");

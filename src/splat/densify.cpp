@@ -29,10 +29,11 @@ at::Tensor rotation_matrices(const at::Tensor& quats) {
 
 }  // namespace
 
-void DensifyStats::reset(int64_t n) {
-  grad_accum = torch::zeros({n});
-  count = torch::zeros({n});
-  max_radii = torch::zeros({n});
+void DensifyStats::reset(int64_t n, const c10::Device& device) {
+  const auto f = torch::TensorOptions().dtype(torch::kFloat).device(device);
+  grad_accum = torch::zeros({n}, f);
+  count = torch::zeros({n}, f);
+  max_radii = torch::zeros({n}, f);
 }
 
 void add_densification_stats(DensifyStats& stats, const at::Tensor& mean2d_grad, const at::Tensor& radii) {
@@ -77,10 +78,11 @@ DensifyResult densify_and_prune(Adam& adam, DensifyStats& stats, const DensifyOp
   // The cap: a clone adds one Gaussian, a split N - 1; keep the highest-gradient candidates that fit.
   if (options.max_gaussians > 0) {
     int64_t budget = std::max<int64_t>(0, options.max_gaussians - n0);
-    const auto g = grads.contiguous();
+    const auto g = grads.cpu().contiguous();
+    const auto clone_cpu = clone_mask.cpu().contiguous(), split_cpu = split_mask.cpu().contiguous();
     const float* gp = g.data_ptr<float>();
-    const bool* cp = clone_mask.data_ptr<bool>();
-    const bool* sp = split_mask.data_ptr<bool>();
+    const bool* cp = clone_cpu.data_ptr<bool>();
+    const bool* sp = split_cpu.data_ptr<bool>();
     std::vector<int64_t> order;
     for (int64_t i = 0; i < n0; ++i)
       if (cp[i] || sp[i]) order.push_back(i);
@@ -94,8 +96,8 @@ DensifyResult densify_and_prune(Adam& adam, DensifyStats& stats, const DensifyOp
       budget -= cost;
       (cp[i] ? kc : ks)[i] = true;
     }
-    clone_mask = keep_clone;
-    split_mask = keep_split;
+    clone_mask = keep_clone.to(grads.device());
+    split_mask = keep_split.to(grads.device());
   }
 
   // densify_and_clone: exact copies of small Gaussians with a large gradient.
@@ -108,18 +110,19 @@ DensifyResult densify_and_prune(Adam& adam, DensifyStats& stats, const DensifyOp
 
   // densify_and_split: N children sampled from each large Gaussian, scale / (0.8 N); parents removed.
   const int64_t n1 = adam.group("means").param.size(0);
-  at::Tensor split_full = torch::cat({split_mask, torch::zeros({n1 - n0}, torch::kBool)});
+  const auto no_rows = [&](int64_t k) { return torch::zeros({k}, split_mask.options()); };  // bool, on the device
+  at::Tensor split_full = torch::cat({split_mask, no_rows(n1 - n0)});
   result.split = split_mask.sum().item<int64_t>();
   if (result.split > 0) {
     const int n = options.split_n;
     const at::Tensor scales = adam.group("log_scales").param.detach().index({split_full}).exp();
     const at::Tensor stds = scales.repeat({n, 1});
     // Standard normal samples from the checkpointed generator, in a fixed order.
-    at::Tensor normal = torch::empty_like(stds);
+    at::Tensor normal = torch::empty(stds.sizes(), torch::kFloat);
     std::normal_distribution<double> gauss(0.0, 1.0);
     float* np = normal.data_ptr<float>();
     for (int64_t i = 0; i < normal.numel(); ++i) np[i] = float(gauss(rng));
-    const at::Tensor samples = normal * stds;
+    const at::Tensor samples = normal.to(stds.options()) * stds;
     const at::Tensor rots = rotation_matrices(adam.group("quats").param.detach().index({split_full})).repeat({n, 1, 1});
     const at::Tensor parent_means = adam.group("means").param.detach().index({split_full}).repeat({n, 1});
     std::map<std::string, at::Tensor> rows;
@@ -133,7 +136,7 @@ DensifyResult densify_and_prune(Adam& adam, DensifyStats& stats, const DensifyOp
     rows["log_scales"] = (stds / (0.8 * n)).log();
     adam.append_rows(rows);
     const int64_t n2 = adam.group("means").param.size(0);
-    adam.keep_rows(~torch::cat({split_full, torch::zeros({n2 - n1}, torch::kBool)}));
+    adam.keep_rows(~torch::cat({split_full, no_rows(n2 - n1)}));
   }
 
   // Prune: transparent, and (after the first opacity reset) too large in the world / on screen.
@@ -145,14 +148,15 @@ DensifyResult densify_and_prune(Adam& adam, DensifyStats& stats, const DensifyOp
     prune = prune | (world_scale > 0.1 * options.extent);
   }
   if (options.max_screen_radius > 0) {
-    at::Tensor radii = torch::cat({stats.max_radii, torch::zeros({result.cloned})});
-    radii = torch::cat({radii, torch::zeros({options.split_n * result.split})}).index({~torch::cat(
-        {split_full, torch::zeros({options.split_n * result.split}, torch::kBool)})});
+    const auto zero_radii = [&](int64_t k) { return torch::zeros({k}, stats.max_radii.options()); };
+    at::Tensor radii = torch::cat({stats.max_radii, zero_radii(result.cloned)});
+    radii = torch::cat({radii, zero_radii(options.split_n * result.split)})
+                .index({~torch::cat({split_full, no_rows(options.split_n * result.split)})});
     prune = prune | (radii > options.max_screen_radius);
   }
   result.pruned = prune.sum().item<int64_t>();
   if (result.pruned > 0) adam.keep_rows(~prune);
-  stats.reset(adam.group("means").param.size(0));
+  stats.reset(adam.group("means").param.size(0), adam.group("means").param.device());
   return result;
 }
 

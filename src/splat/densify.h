@@ -22,7 +22,7 @@ struct DensifyStats {
   at::Tensor count;       // N float: views in which the Gaussian was visible
   at::Tensor max_radii;   // N float: largest screen radius seen, pixels
 
-  void reset(int64_t n);
+  void reset(int64_t n, const c10::Device& device = c10::kCPU);  // zeros on `device`
   int64_t size() const { return grad_accum.defined() ? grad_accum.size(0) : 0; }
 };
 

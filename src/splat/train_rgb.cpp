@@ -21,6 +21,7 @@
 #include "scene/view_selection.h"
 #include "splat/adam.h"
 #include "splat/checkpoint.h"
+#include "splat/compute_device.h"
 #include "splat/densify.h"
 #include "splat/image_tensor.h"
 #include "splat/model_layout.h"
@@ -160,7 +161,7 @@ void save_checkpoint(const std::string& path, const Adam& adam, const DensifySta
   write_checkpoint(path, c);
 }
 
-void load_checkpoint(const std::string& path, Adam& adam, DensifyStats& stats, TrainState& s) {
+void load_checkpoint(const std::string& path, Adam& adam, DensifyStats& stats, TrainState& s, const at::Device& device) {
   const Checkpoint c = read_checkpoint(path);
   if (c.info.value("format", "") != "citylangsplat-rgb-checkpoint")
     fail(path, "not a photometric training checkpoint");
@@ -178,12 +179,12 @@ void load_checkpoint(const std::string& path, Adam& adam, DensifyStats& stats, T
         fail(path, std::string("tensor 'param.") + name + "' has the wrong shape or type");
       if (n >= 0 && p.size(0) != n) fail(path, std::string("tensor 'param.") + name + "' has a different row count");
       n = p.size(0);
-      g.param = p.clone().set_requires_grad(true);
+      g.param = p.to(device).clone().set_requires_grad(true);
     }
     adam.restore(c.tensors, c.info.at("adam").get<std::map<std::string, double>>(), path);
-    stats.grad_accum = tensor("stats.grad_accum").clone();
-    stats.count = tensor("stats.count").clone();
-    stats.max_radii = tensor("stats.max_radii").clone();
+    stats.grad_accum = tensor("stats.grad_accum").to(device).clone();
+    stats.count = tensor("stats.count").to(device).clone();
+    stats.max_radii = tensor("stats.max_radii").to(device).clone();
     if (stats.size() != n || stats.count.size(0) != n || stats.max_radii.size(0) != n)
       fail(path, "densification statistics do not match the Gaussian count");
     s.iteration = c.info.at("iteration").get<int>();
@@ -199,8 +200,8 @@ void load_checkpoint(const std::string& path, Adam& adam, DensifyStats& stats, T
   }
 }
 
-at::Tensor background_for(const RgbTrainOptions& o) {
-  return torch::full({3}, o.white_background ? 1.0f : 0.0f);
+at::Tensor background_for(const RgbTrainOptions& o, const at::Device& device) {
+  return torch::full({3}, o.white_background ? 1.0f : 0.0f, torch::TensorOptions().device(device));
 }
 
 RasterizeSettings settings_for(const SceneView& v, const at::Tensor& background) {
@@ -251,6 +252,7 @@ void check_options(const RgbTrainOptions& o) {
 
 RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
   check_options(options);
+  const at::Device device = compute_device(options.device);
   torch::NoGradGuard outer_no_grad;  // re-enabled for the forward/backward only
   const auto wall_start = std::chrono::steady_clock::now();
   if (scene.views.empty()) throw Error(scene.root + ": the scene has no views");
@@ -263,7 +265,7 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
     Progress progress("load images", scene.views.size(), "images");
     for (const auto& [from, to] : {std::pair(&split.train, &train), std::pair(&split.test, &test)})
       for (const SceneView* sv : *from) {
-        to->push_back(View{sv, image_to_tensor(loader.load(*sv))});
+        to->push_back(View{sv, image_to_tensor(loader.load(*sv)).to(device)});
         progress.advance();
       }
   }
@@ -272,12 +274,12 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
   const double extent = scene_extent(train);
   log_info("train-rgb: " + std::to_string(train.size()) + " training views, " + std::to_string(test.size()) +
            " test views, scene extent " + std::to_string(extent) + ", " + std::to_string(scene.points.size()) +
-           " initial Gaussians");
+           " initial Gaussians, on " + device.str());
 
   // Parameters and their learning rates (3DGS training_setup).
   const GaussianModel init = init_from_points(scene.points, options.sh_degree);
   Adam adam(0.9, 0.999, 1e-15);
-  auto leaf = [](const at::Tensor& t) { return t.clone().set_requires_grad(true); };
+  auto leaf = [&](const at::Tensor& t) { return t.to(device).clone().set_requires_grad(true); };
   adam.add("means", leaf(init.means), options.position_lr_init * extent);
   adam.add("log_scales", leaf(init.log_scales), options.scaling_lr);
   adam.add("quats", leaf(init.quats), options.rotation_lr);
@@ -285,7 +287,7 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
   adam.add("sh_dc", leaf(init.sh_dc), options.feature_lr);
   adam.add("sh_rest", leaf(init.sh_rest), options.feature_lr / 20.0);
   DensifyStats stats;
-  stats.reset(init.size());
+  stats.reset(init.size(), device);
   TrainState state;
   state.rng.seed(options.seed);
 
@@ -293,7 +295,7 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
   fs::create_directories(options.out_dir);
   if (options.resume) {
     if (!fs::exists(ckpt)) throw Error(ckpt + ": no checkpoint to resume from");
-    load_checkpoint(ckpt, adam, stats, state);
+    load_checkpoint(ckpt, adam, stats, state, device);
     log_info("train-rgb: resuming at iteration " + std::to_string(state.iteration) + " with " +
              std::to_string(adam.group("means").param.size(0)) + " Gaussians");
   }
@@ -305,7 +307,7 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
   } timing;
   const auto loop_start = std::chrono::steady_clock::now();
   install_interrupt_handlers();
-  const at::Tensor fixed_background = background_for(options);
+  const at::Tensor fixed_background = background_for(options, device);
   const int start_iteration = state.iteration;
   auto session_seconds = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
@@ -346,12 +348,12 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
       at::Tensor background = fixed_background;
       if (options.random_background) {
         std::uniform_real_distribution<float> u(0.0f, 1.0f);
-        background = torch::tensor({u(state.rng), u(state.rng), u(state.rng)});
+        background = torch::tensor({u(state.rng), u(state.rng), u(state.rng)}).to(device);
       }
 
       const GaussianModel g = model_from_adam(adam);
       const int64_t n = g.size();
-      at::Tensor means2d = torch::zeros({n, 2}).set_requires_grad(true);
+      at::Tensor means2d = torch::zeros({n, 2}, g.means.options()).set_requires_grad(true);
       at::Tensor radii;
       at::Tensor loss_value, l1_value, image;
       {
@@ -377,7 +379,7 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
         // The original's screen-space gradient is w.r.t. NDC: pixel gradient x (W/2, H/2).
         const double half_w = 0.5 * view.view->camera.width, half_h = 0.5 * view.view->camera.height;
         const at::Tensor grad_px = means2d.grad().defined() ? means2d.grad() : torch::zeros_like(means2d);
-        const at::Tensor grad_ndc = grad_px * torch::tensor({float(half_w), float(half_h)});
+        const at::Tensor grad_ndc = grad_px * torch::tensor({float(half_w), float(half_h)}).to(device);
         add_densification_stats(stats, grad_ndc, radii);
         if (it > options.densify_from && it % options.densify_every == 0) {
           DensifyOptions d;
@@ -469,6 +471,7 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
                                   {"ms_per_iteration", ms_per_iteration},
                                   {"scene", scene.root},
                                   {"extent", extent},
+                                  {"device", device.str()},
                                   {"options", options_json(options)}};
   write_text_atomic(fs::path(options.out_dir) / "summary.json", summary.dump(2) + "\n");
   // The final state, so that a later run with more iterations can continue from it.

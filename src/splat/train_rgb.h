@@ -30,6 +30,7 @@ struct RgbTrainOptions {
   int checkpoint_every = 5000;
   bool resume = false;
   uint64_t seed = 1;
+  std::string device = "auto";  // compute_device(): auto (CUDA where built and present), cpu or cuda
 };
 
 struct RgbTrainReport {
