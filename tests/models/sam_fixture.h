@@ -11,6 +11,7 @@
 #include "models/sam/sam_model.h"
 #include "models/weights/npy_tensor.h"
 #include "models/weights/safetensors.h"
+#include "test_device.h"
 
 namespace cls::sam::testing {
 
@@ -26,11 +27,12 @@ inline const nlohmann::json& sam_config_json() {
 // Masks per prompt with multimask_output (the s / m / l outputs the AMG uses).
 inline int64_t num_multimask_outputs() { return sam_config_json().at("num_multimask_outputs").get<int64_t>(); }
 
-// The tiny model of config.json with weights.safetensors loaded.
+// The tiny model of config.json with weights.safetensors loaded, on cls::testing::test_device().
 inline Sam load_tiny_sam() {
   Sam model(sam_config_from_json_file(sam_fixture("config.json")));
   load_sam_weights(*model, read_safetensors(sam_fixture("weights.safetensors")));
   model->eval();
+  model->to(cls::testing::test_device());
   return model;
 }
 
@@ -39,7 +41,7 @@ struct Diff {
   double max_abs = 0, worst_excess = 0;
 };
 inline Diff compare(const torch::Tensor& a, const torch::Tensor& b, double atol, double rtol) {
-  const auto d = (a.to(torch::kDouble) - b.to(torch::kDouble)).abs();
+  const auto d = (a.to(torch::kCPU, torch::kDouble) - b.to(torch::kCPU, torch::kDouble)).abs();
   Diff r;
   if (d.numel() == 0) return r;
   r.max_abs = d.max().item<double>();

@@ -13,6 +13,7 @@
 #include "models/clip/clip_loader.h"
 #include "models/clip/clip_model.h"
 #include "test_clip_fixture.h"
+#include "test_device.h"
 
 namespace {
 
@@ -23,7 +24,7 @@ constexpr double kTol = 1e-4;
 
 void expect_close(const at::Tensor& got, const at::Tensor& want, const std::string& what, double tol = kTol) {
   ASSERT_EQ(got.sizes(), want.sizes()) << what;
-  const at::Tensor g = got.to(at::kDouble), w = want.to(at::kDouble);
+  const at::Tensor g = got.to(at::kCPU, at::kDouble), w = want.to(at::kCPU, at::kDouble);
   const double max_diff = (g - w).abs().max().item<double>();
   EXPECT_TRUE(at::allclose(g, w, tol, tol)) << what << ": max abs diff " << max_diff;
 }
@@ -54,7 +55,7 @@ TEST_P(ClipParity, FeaturesLogitsAndIntermediates) {
   const std::string act = cfg.at("activation");
   ASSERT_TRUE(act == "gelu" || act == "quick_gelu") << act;
   EXPECT_EQ(f.config.activation, act == "gelu" ? Activation::Gelu : Activation::QuickGelu);
-  const ClipModel clip(f.config, f.state, {}, dir);
+  const ClipModel clip(f.config, f.state, {cls::testing::test_device()}, dir);
   ClipTrace trace;
   const at::Tensor img = clip.encode_image(f.images, &trace);
   const at::Tensor txt = clip.encode_text(f.tokens, &trace);
@@ -87,7 +88,7 @@ TEST_P(ClipParity, FeaturesLogitsAndIntermediates) {
 TEST_P(ClipParity, OneSampleAtATimeMatchesTheBatch) {
   const std::string model = GetParam();
   const Fixture f = load(model);
-  const ClipModel clip(f.config, f.state);
+  const ClipModel clip(f.config, f.state, {cls::testing::test_device()});
   const at::Tensor img = clip.encode_image(f.images), txt = clip.encode_text(f.tokens);
   for (int64_t i = 0; i < f.images.size(0); ++i)
     expect_close(clip.encode_image(f.images.narrow(0, i, 1)), img.narrow(0, i, 1), "image " + std::to_string(i));
@@ -118,18 +119,21 @@ TEST(ClipModel, Fp16WeightsUpcastMatchTheirReference) {
                "logits (fp16 weights)");
 }
 
-// The reduced-precision path (the one CUDA fp16/bf16 takes; bf16 also runs on the CPU): weights and
-// activations in bf16, LayerNorm in fp32. bf16 keeps ~3 significant digits, so only closeness.
-TEST(ClipModel, Bfloat16ComputeStaysCloseToFloat32) {
+// The reduced-precision path: weights and activations in bf16 (and fp16 on CUDA), LayerNorm in fp32.
+// bf16 keeps ~3 significant digits, so only closeness.
+TEST(ClipModel, ReducedPrecisionComputeStaysCloseToFloat32) {
   const Fixture f = load("tiny_quickgelu");
   const std::string dir = fixture_dir("tiny_quickgelu");
-  cls::clip::ClipOptions bf16;
-  bf16.dtype = at::kBFloat16;
-  const ClipModel clip(f.config, f.state, bf16);
-  const at::Tensor img = clip.encode_image(f.images), txt = clip.encode_text(f.tokens);
-  EXPECT_EQ(img.scalar_type(), at::kBFloat16);
-  expect_close(img, load_npy(dir + "/image_features.npy"), "bf16 image_features", 0.1);
-  expect_close(txt, load_npy(dir + "/text_features.npy"), "bf16 text_features", 0.1);
+  const c10::Device device = cls::testing::test_device();
+  std::vector<at::ScalarType> dtypes = {at::kBFloat16};
+  if (device.is_cuda()) dtypes.push_back(at::kHalf);
+  for (const at::ScalarType dtype : dtypes) {
+    const ClipModel clip(f.config, f.state, {device, dtype});
+    const at::Tensor img = clip.encode_image(f.images), txt = clip.encode_text(f.tokens);
+    EXPECT_EQ(img.scalar_type(), dtype);
+    expect_close(img, load_npy(dir + "/image_features.npy"), std::string(c10::toString(dtype)) + " image_features", 0.1);
+    expect_close(txt, load_npy(dir + "/text_features.npy"), std::string(c10::toString(dtype)) + " text_features", 0.1);
+  }
 }
 
 TEST(ClipModel, InferredConfigMatchesTheFixtureConfig) {

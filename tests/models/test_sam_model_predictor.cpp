@@ -70,7 +70,7 @@ TEST(SamPredictor, PreprocessedInputIsBitExact) {
   const auto [input_h, input_w] = hw_of("input_size_hw");
   ASSERT_EQ(rgb.rows, h);
   ASSERT_EQ(rgb.cols, w);
-  const auto input = predictor.transformed_input(rgb.data, rgb.rows, rgb.cols).contiguous();
+  const auto input = predictor.transformed_input(rgb.data, rgb.rows, rgb.cols).cpu().contiguous();
   const int64_t side = input.size(3);  // the encoder's square input
   ASSERT_EQ(input.sizes(), (std::vector<int64_t>{1, 3, side, side}));
   // The zero padding below and right of the resized image.
@@ -119,7 +119,7 @@ SamPrompt prompt_of(const nlohmann::json& set) {
 // `ours` is sampled the same way.
 void expect_logits(const std::string& file, const torch::Tensor& ours, const std::string& what) {
   const std::string full = sam_fixture(file);
-  torch::Tensor ref, mine = ours;
+  torch::Tensor ref, mine = ours.cpu();
   if (std::filesystem::exists(full)) {
     ref = load_npy_tensor(file);
     // Binary masks: no sign flip where the reference logit is clearly away from 0.
@@ -157,6 +157,8 @@ TEST(SamPredictor, DecoderMatchesReferenceForEveryPromptSet) {
       if (set.contains("box_transformed"))
         box = torch::tensor(set["box_transformed"][0].get<std::vector<double>>(), torch::kDouble).view({1, 4}).to(torch::kFloat);
       if (prompt.mask_input.defined()) mask = prompt.mask_input.unsqueeze(0);
+      for (torch::Tensor* t : {&coords, &labels, &box, &mask})
+        if (t->defined()) *t = t->to(predictor.device());
       torch::NoGradGuard no_grad;
       const auto emb = predictor.model()->prompt_encoder->forward(coords, labels, box, mask);
       const auto ref_sparse = load_npy_tensor(set["sparse_embeddings"].get<std::string>());
@@ -218,7 +220,7 @@ TEST(SamPredictor, BatchedFloat64PointsAsTheAmgPassesThem) {
   // Binary output = logits > mask_threshold.
   const auto bin = predictor.predict_batch(coords, labels, {}, {}, true, /*return_logits=*/false);
   EXPECT_EQ(bin.masks.scalar_type(), torch::kBool);
-  EXPECT_TRUE(torch::equal(bin.masks, out.masks > 0.0));
+  EXPECT_TRUE(torch::equal(bin.masks.cpu(), (out.masks > 0.0).cpu()));
 }
 
 TEST(SamPredictor, BadCallsAreErrors) {

@@ -71,7 +71,8 @@ void compare_gradients(bool use_sh, int channels, unsigned seed) {
   std::vector<torch::Tensor> m2d;
   for (const torch::Device dev : {torch::Device(torch::kCPU), torch::Device(torch::kCUDA)}) {
     std::vector<torch::Tensor> p;
-    for (const auto& x : params) p.push_back(x.to(dev).requires_grad_(true));
+    // detach: on the CPU, to() returns the tensor itself, which must not become a leaf of this pass.
+    for (const auto& x : params) p.push_back(x.to(dev).detach().requires_grad_(true));
     auto means2d = torch::zeros({n, 2}, torch::dtype(torch::kFloat32).device(dev)).requires_grad_(true);
     RasterizeSettings sd = settings;
     sd.background = t(s.background, {int64_t(s.background.size())}).to(dev);
