@@ -2,6 +2,7 @@
 // M masks at 1000x750, and the whole LangSplat AMG on a 1000x750 image with a randomly initialised
 // SAM (ViT-B by default), or the SAM fixture's tiny model on its own image (--fixture: the workload
 // of the slowest test). Usage: bench_amg [--threads N] [--masks 200,400,...] [--model vit_b|none] [--fixture DIR]
+// [--device cpu|cuda].
 // Figures go to docs/benchmarks.md.
 #include <omp.h>
 #include <torch/torch.h>
@@ -179,22 +180,24 @@ MaskLevels run_amg(sam::SamPredictor& predictor, const AmgImage& im, const AmgPa
 }
 
 // An official architecture with random weights on the synthetic photo, LangSplat's parameters.
-void bench_amg(const std::string& model_name, int points_per_side, int threads) {
+void bench_amg(const std::string& model_name, int points_per_side, int threads, const torch::Device& device) {
   torch::manual_seed(0);
   sam::Sam model(sam::sam_config_by_name(model_name));
   model->eval();
+  model->to(device);
   sam::SamPredictor predictor(model);
   AmgParams params;  // LangSplat's
   params.points_per_side = points_per_side;
-  run_amg(predictor, synthetic_photo(), params, "SAM " + model_name + " with random weights", threads);
+  run_amg(predictor, synthetic_photo(), params, "SAM " + model_name + " with random weights on " + device.str(), threads);
 }
 
 // The SAM fixture's tiny model on its test image with a reference run's parameters: the workload of
 // the test SamAmgRun.<Run>MatchesReference; the mask counts are checked against the run's records.
-void bench_fixture_amg(const std::string& dir, const std::string& run, int threads) {
+void bench_fixture_amg(const std::string& dir, const std::string& run, int threads, const torch::Device& device) {
   sam::Sam model(sam::sam_config_from_json_file(dir + "/config.json"));
   sam::load_sam_weights(*model, read_safetensors(dir + "/weights.safetensors"));
   model->eval();
+  model->to(device);
   sam::SamPredictor predictor(model);
   const NpyArray a = read_npy(dir + "/test_image.npy");
   if (a.shape.size() != 3 || a.shape[2] != 3) fail(dir + "/test_image.npy", "expected an H x W x 3 uint8 image");
@@ -203,7 +206,8 @@ void bench_fixture_amg(const std::string& dir, const std::string& run, int threa
   const std::string records_path = dir + "/amg/" + run + "_records.json";
   const auto records = nlohmann::json::parse(read_text_file(records_path));
   const MaskLevels got =
-      run_amg(predictor, im, params_from_json(records.at("params"), records_path), "fixture SAM, run " + run, threads);
+      run_amg(predictor, im, params_from_json(records.at("params"), records_path),
+              "fixture SAM, run " + run + " on " + device.str(), threads);
   const MaskLevels expected = levels_from_json(records.at("levels"), records_path);
   for (int l = 0; l < kNumLevels; ++l)
     if (got[l].size() != expected[l].size())
@@ -235,7 +239,8 @@ int main(int argc, char** argv) {
       .option("points-per-side", "32", "AMG grid (LangSplat: 32)")
       .option("fixture", "", "SAM fixture folder (config.json, weights.safetensors, test_image.npy, amg/): run its "
                              "tiny model on its image instead of --model")
-      .option("run", "strict", "with --fixture: the reference run whose parameters to use (strict, relaxed)");
+      .option("run", "strict", "with --fixture: the reference run whose parameters to use (strict, relaxed)")
+      .option("device", "cpu", "where SAM runs: cpu or cuda (needs a CUDA build); the NMS benchmark stays on the CPU");
   int threads = 0;
   try {
     if (!args.parse(argc, argv)) return 0;
@@ -250,9 +255,11 @@ int main(int argc, char** argv) {
   try {
     const auto sizes = cls::amg::parse_sizes(args.get("masks"));
     if (!sizes.empty()) cls::amg::bench_mask_nms(sizes, threads, args.get_int("reference-max"));
-    if (!args.get("fixture").empty()) cls::amg::bench_fixture_amg(args.get("fixture"), args.get("run"), threads);
+    const torch::Device device(args.get("device"));
+    if (!args.get("fixture").empty())
+      cls::amg::bench_fixture_amg(args.get("fixture"), args.get("run"), threads, device);
     else if (args.get("model") != "none")
-      cls::amg::bench_amg(args.get("model"), args.get_int("points-per-side"), threads);
+      cls::amg::bench_amg(args.get("model"), args.get_int("points-per-side"), threads, device);
   } catch (const cls::Error& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;

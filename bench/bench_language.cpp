@@ -4,10 +4,13 @@
 // 2. querying, relevance maps per second at 1080p: render 128 channels, decode every pixel with the
 //    shared autoencoder (128 -> 256 -> 512), cosine with one query feature.
 // Scenes are random (seeded) Gaussians spread over the view frustum, as bench_splat's.
-// Usage: bench_language [--threads N] [--train-scenes 200000@800x600,50000@480x360] [--repeats N] ...
+// Usage: bench_language [--threads N] [--device cpu|cuda] [--train-scenes 200000@800x600,50000@480x360] ...
+// On CUDA every timed body ends with a device synchronisation, so the wall times are the GPU's.
 #include <ATen/ATen.h>
 #include <ATen/CPUGeneratorImpl.h>
 #include <ATen/Parallel.h>
+#include <ATen/core/grad_mode.h>
+#include <torch/cuda.h>
 #include <omp.h>
 
 #include <algorithm>
@@ -37,7 +40,7 @@ struct Scene {
 
 // Gaussians between z = 3 and 15 inside the frustum, screen sigmas log-uniform in [0.5, 8] px,
 // opacities in [0.1, 0.9] (bench_splat's scene, as tensors).
-Scene make_scene(int64_t n, int width, int height, uint64_t seed) {
+Scene make_scene(int64_t n, int width, int height, uint64_t seed, const at::Device& device) {
   at::Generator gen = at::detail::createCPUGenerator(seed);
   const double f = 0.8 * width;
   Scene s;
@@ -52,6 +55,7 @@ Scene make_scene(int64_t n, int width, int height, uint64_t seed) {
   const at::Tensor q = at::rand({n, 4}, gen) - 0.5;
   s.quats = (q / q.norm(2, {1}, true)).contiguous();
   s.opacities = 0.1 + 0.8 * at::rand({n}, gen);
+  for (at::Tensor* t : {&s.means, &s.scales, &s.quats, &s.opacities}) *t = t->to(device);
   return s;
 }
 
@@ -66,13 +70,17 @@ struct Timing {
 };
 
 template <class F>
-Timing time_it(int repeats, const F& body) {
-  body();  // warm-up
+Timing time_it(int repeats, const at::Device& device, const F& body) {
+  const auto run = [&] {
+    body();
+    if (device.is_cuda()) torch::cuda::synchronize();
+  };
+  run();  // warm-up
   std::vector<double> wall, cpu;
   for (int r = 0; r < repeats; ++r) {
     const double c0 = bench::cpu_seconds();
     const auto t0 = Clock::now();
-    body();
+    run();
     wall.push_back(1e3 * bench::seconds_since(t0));
     cpu.push_back(1e3 * (bench::cpu_seconds() - c0));
   }
@@ -101,12 +109,12 @@ std::vector<SceneSpec> parse_scenes(const std::string& text) {
 }
 
 // One language-training iteration's rasterizer work: forward, L1 against the target, backward.
-Timing bench_training(const SceneSpec& spec, int channels, int repeats) {
-  const Scene s = make_scene(spec.gaussians, spec.width, spec.height, 42);
+Timing bench_training(const SceneSpec& spec, int channels, int repeats, const at::Device& device) {
+  const Scene s = make_scene(spec.gaussians, spec.width, spec.height, 42, device);
   at::Generator gen = at::detail::createCPUGenerator(7);
-  const at::Tensor latents = at::rand({spec.gaussians, channels}, gen).requires_grad_(true);
-  const at::Tensor target = at::rand({spec.height, spec.width, channels}, gen);
-  return time_it(repeats, [&] {
+  const at::Tensor latents = at::rand({spec.gaussians, channels}, gen).to(device).requires_grad_(true);
+  const at::Tensor target = at::rand({spec.height, spec.width, channels}, gen).to(device);
+  return time_it(repeats, device, [&] {
     const RasterizeOutput out =
         rasterize_features(s.means, s.scales, s.quats, s.opacities, latents, at::Tensor(), s.settings);
     const at::Tensor loss = (out.image - target).abs().mean();
@@ -116,23 +124,26 @@ Timing bench_training(const SceneSpec& spec, int channels, int repeats) {
 }
 
 int bench_main(int argc, char** argv) {
-  Args args("bench_language", "Language-field training ms/iteration and 1080p relevance-map FPS on the CPU", "");
+  Args args("bench_language", "Language-field training ms/iteration and 1080p relevance-map FPS (CPU or CUDA)", "");
   args.option("threads", "2", "OpenMP / ATen threads")
       .option("channels", "128", "latent channels")
       .option("train-scenes", "200000@800x600,50000@480x360", "training scenes, N@WxH comma-separated")
       .option("query-scene", "200000@1920x1080", "the relevance-map scene, N@WxH")
       .option("chunk", "65536", "pixels decoded per autoencoder call")
-      .option("repeats", "3", "timed repeats (after one warm-up); the median is reported");
+      .option("repeats", "3", "timed repeats (after one warm-up); the median is reported")
+      .option("device", "cpu", "cpu or cuda (needs a CUDA build)");
   if (!args.parse(argc, argv)) return 0;
+  const at::Device device(args.get("device"));
   const int threads = args.get_int("threads");
   omp_set_num_threads(threads);
   at::set_num_threads(threads);
   const int channels = args.get_int("channels");
   const int repeats = std::max(1, args.get_int("repeats"));
 
-  std::printf("threads %d, %d channels, median of %d repeats after one warm-up\n", threads, channels, repeats);
+  std::printf("device %s, threads %d, %d channels, median of %d repeats after one warm-up\n", device.str().c_str(),
+              threads, channels, repeats);
   for (const SceneSpec& spec : parse_scenes(args.get("train-scenes"))) {
-    const Timing t = bench_training(spec, channels, repeats);
+    const Timing t = bench_training(spec, channels, repeats, device);
     std::printf("training  %7lld Gaussians %4dx%-4d  %9.1f ms/iteration (wall)  CPU %9.1f ms  CPU/threads %9.1f ms\n",
                 static_cast<long long>(spec.gaussians), spec.width, spec.height, t.wall_ms, t.cpu_ms,
                 t.cpu_ms / threads);
@@ -141,24 +152,26 @@ int bench_main(int argc, char** argv) {
 
   // Relevance map: render, decode per pixel (chunks), cosine with a query feature.
   const SceneSpec q = parse_scenes(args.get("query-scene")).at(0);
-  const Scene s = make_scene(q.gaussians, q.width, q.height, 43);
+  const Scene s = make_scene(q.gaussians, q.width, q.height, 43, device);
   at::Generator gen = at::detail::createCPUGenerator(8);
   AutoencoderConfig config;
   config.encoder_dims.back() = channels;
-  const Autoencoder ae(config, 1);
+  Autoencoder ae(config, 1);
+  ae.to(device);
   at::Tensor latents = at::rand({q.gaussians, channels}, gen);
-  latents = latents / latents.norm(2, {1}, true);
+  latents = (latents / latents.norm(2, {1}, true)).to(device);
   at::Tensor query = at::randn({config.input_dim}, gen);
-  query = query / query.norm();
+  query = (query / query.norm()).to(device);
   const int64_t chunk = std::max(1, args.get_int("chunk"));
   at::Tensor rendered, relevance;
-  const Timing render = time_it(repeats, [&] {
+  const Timing render = time_it(repeats, device, [&] {
     at::NoGradGuard no_grad;
     rendered = rasterize_features(s.means, s.scales, s.quats, s.opacities, latents, at::Tensor(), s.settings).image;
   });
-  const Timing decode = time_it(repeats, [&] {
+  const Timing decode = time_it(repeats, device, [&] {
+    at::NoGradGuard no_grad;
     const at::Tensor pixels = rendered.reshape({-1, channels});
-    relevance = at::empty({pixels.size(0)}, at::kFloat);
+    relevance = at::empty({pixels.size(0)}, pixels.options());
     for (int64_t begin = 0; begin < pixels.size(0); begin += chunk) {
       const int64_t end = std::min(pixels.size(0), begin + chunk);
       const at::Tensor f = ae.decode(pixels.slice(0, begin, end));

@@ -1,8 +1,13 @@
-// CPU rasterizer speed: forward and forward+backward ms per iteration for a fixed random scene
+// Rasterizer speed: forward and forward+backward ms per iteration for a fixed random scene
 // (default 200k Gaussians, 800x600) with RGB from SH degree 3 and with 128 feature channels.
-// Usage: bench_splat [--threads N] [--gaussians N] [--width W] [--height H] [--iters N]
+// --device cpu calls the CPU kernels directly; --device cuda goes through the autograd functions
+// (rasterize.h) on CUDA tensors, synchronising after each pass, and adds a photometric training step
+// (forward, L1 + 0.2 D-SSIM against a target image, backward: 3DGS's loss).
+// Usage: bench_splat [--threads N] [--device cpu|cuda] [--gaussians N] [--width W] [--height H] [--iters N]
 // Figures go to docs/benchmarks.md.
 #include <omp.h>
+#include <torch/cuda.h>
+#include <torch/torch.h>
 #include <time.h>
 
 #include <chrono>
@@ -15,7 +20,9 @@
 #include "core/args.h"
 #include "core/error.h"
 #include "core/heap_reuse.h"
+#include "splat/rasterize.h"
 #include "splat/rasterize_cpu.h"
+#include "splat/ssim.h"
 
 namespace cls {
 namespace {
@@ -60,6 +67,7 @@ Scene make_scene(int n, int width, int height, int channels) {
 struct Timing {
   double forward_ms = 0, backward_ms = 0, cpu_ms = 0;
   double instances = 0;
+  double max_image_diff = -1;  // CUDA: max |image - the CPU kernels' image| of the last iteration
 };
 
 Timing run(const Scene& s, bool use_sh, int channels, int iters) {
@@ -98,26 +106,89 @@ Timing run(const Scene& s, bool use_sh, int channels, int iters) {
   return t;
 }
 
+// The same scene and passes through the autograd functions on `device`. `photometric`: the loss is
+// 0.8 L1 + 0.2 D-SSIM against a target image (RGB only); else sum(1e-3 * image), the CPU run's dL/dimage.
+Timing run_autograd(const Scene& s, bool use_sh, int channels, int iters, const at::Device& device, bool photometric) {
+  const int64_t n = s.n;
+  auto tensor = [&](const std::vector<float>& v, std::vector<int64_t> shape) {
+    return torch::from_blob(const_cast<float*>(v.data()), shape, torch::kFloat32).to(device).requires_grad_(true);
+  };
+  const at::Tensor means = tensor(s.means, {n, 3}), scales = tensor(s.scales, {n, 3}), quats = tensor(s.quats, {n, 4}),
+                   opacities = tensor(s.opacities, {n});
+  const at::Tensor values = use_sh ? tensor(s.sh, {n, 16, 3}) : tensor(s.features, {n, channels});
+  const at::Tensor means2d = torch::zeros({n, 2}, means.options()).requires_grad_(true);
+  RasterizeSettings settings;
+  settings.camera = PinholeCamera{s.cam.fx, s.cam.fy, s.cam.cx, s.cam.cy, s.cam.width, s.cam.height};
+  const at::Tensor target = torch::rand({s.cam.height, s.cam.width, 3}, means.options().requires_grad(false));
+  const auto sync = [&] {
+    if (device.is_cuda()) torch::cuda::synchronize();
+  };
+  Timing t;
+  for (int it = -1; it < iters; ++it) {  // iteration -1 warms up
+    const auto t0 = Clock::now();
+    const RasterizeOutput out = use_sh ? rasterize_sh(means, scales, quats, opacities, values, 3, means2d, settings)
+                                       : rasterize_features(means, scales, quats, opacities, values, means2d, settings);
+    const at::Tensor loss = photometric ? 0.8 * (out.image - target).abs().mean() + 0.2 * dssim_loss(out.image, target)
+                                        : (out.image * 1e-3).sum();
+    sync();
+    const auto t1 = Clock::now();
+    loss.backward();
+    sync();
+    const auto t2 = Clock::now();
+    for (const at::Tensor& p : {means, scales, quats, opacities, values, means2d}) p.mutable_grad().zero_();
+    if (it >= 0) {
+      t.forward_ms += std::chrono::duration<double, std::milli>(t1 - t0).count() / iters;
+      t.backward_ms += std::chrono::duration<double, std::milli>(t2 - t1).count() / iters;
+    }
+    if (it == iters - 1 && device.is_cuda()) {  // at this scale too, the same image as the CPU kernels
+      SplatInputs<float> in;
+      in.n = s.n;
+      in.means = s.means.data(), in.scales = s.scales.data(), in.quats = s.quats.data();
+      in.opacities = s.opacities.data();
+      if (use_sh) in.sh = s.sh.data(), in.sh_degree = 3;
+      else in.features = s.features.data(), in.channels = channels;
+      const int64_t C = use_sh ? 3 : channels, n_pix = int64_t(s.cam.width) * s.cam.height;
+      std::vector<float> image(static_cast<size_t>(n_pix * C)), alpha(static_cast<size_t>(n_pix)),
+          depth(static_cast<size_t>(n_pix));
+      SplatForwardState<float> st;
+      rasterize_forward_cpu(s.cam, in, image.data(), alpha.data(), depth.data(), st);
+      const at::Tensor cpu = torch::from_blob(image.data(), {s.cam.height, s.cam.width, C});
+      t.max_image_diff = (out.image.detach().cpu() - cpu).abs().max().item<double>();
+    }
+  }
+  return t;
+}
+
 int bench_main(int argc, char** argv) {
-  Args args("bench_splat", "CPU Gaussian rasterizer forward/backward time", "");
+  Args args("bench_splat", "Gaussian rasterizer forward/backward time (CPU kernels or CUDA)", "");
   args.option("threads", "2", "OpenMP threads")
       .option("gaussians", "200000", "number of Gaussians")
       .option("width", "800", "image width")
       .option("height", "600", "image height")
       .option("channels", "128", "feature channels of the second run")
-      .option("iters", "5", "timed iterations per configuration (after one warm-up)");
+      .option("iters", "5", "timed iterations per configuration (after one warm-up)")
+      .option("device", "cpu", "cpu (the kernels directly) or cuda (autograd functions; needs a CUDA build)");
   if (!args.parse(argc, argv)) return 0;
+  const at::Device device(args.get("device"));
   omp_set_num_threads(args.get_int("threads"));
   const int channels = args.get_int("channels");
   const Scene s = make_scene(args.get_int("gaussians"), args.get_int("width"), args.get_int("height"), channels);
-  std::printf("scene: %d Gaussians, %dx%d, %d threads\n", s.n, s.cam.width, s.cam.height, args.get_int("threads"));
+  std::printf("scene: %d Gaussians, %dx%d, %s, %d threads\n", s.n, s.cam.width, s.cam.height, device.str().c_str(),
+              args.get_int("threads"));
+  if (device.is_cuda()) {
+    const Timing t = run_autograd(s, true, 3, args.get_int("iters"), device, true);
+    std::printf("%-14s forward+loss %8.2f ms  backward %8.2f ms  iteration %8.2f ms  max |image - CPU| %.2e\n",
+                "RGB L1+D-SSIM", t.forward_ms, t.backward_ms, t.forward_ms + t.backward_ms, t.max_image_diff);
+  }
   for (int pass = 0; pass < 2; ++pass) {
     const bool use_sh = pass == 0;
-    const Timing t = run(s, use_sh, channels, args.get_int("iters"));
-    std::printf("%-14s forward %8.1f ms  backward %8.1f ms  forward+backward %8.1f ms  CPU %8.1f ms  "
+    const Timing t = device.is_cpu() ? run(s, use_sh, channels, args.get_int("iters"))
+                                     : run_autograd(s, use_sh, channels, args.get_int("iters"), device, false);
+    std::printf("%-14s forward %8.2f ms  backward %8.2f ms  forward+backward %8.2f ms  CPU %8.1f ms  "
                 "(%.0f tile instances)\n",
                 use_sh ? "RGB (SH deg 3)" : (std::to_string(channels) + " channels").c_str(), t.forward_ms,
                 t.backward_ms, t.forward_ms + t.backward_ms, t.cpu_ms, t.instances);
+    if (t.max_image_diff >= 0) std::printf("%-14s max |image - CPU kernels' image| %.2e\n", "", t.max_image_diff);
   }
   return 0;
 }
