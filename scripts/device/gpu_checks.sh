@@ -49,14 +49,18 @@ for s in "${steps[@]}"; do
       step "$s" 90 "$B/bench/bench_splat" --device cuda --threads 16 --gaussians 1000000 --width 1600 --height 1000 \
         --iters 10 ;;
     bench_splat_200k) step "$s" 45 "$B/bench/bench_splat" --device cuda --threads 16 --iters 10 ;;
-    bench_clip_bf16) step "$s" 45 "$B/bench/bench_clip" --device cuda --dtype bfloat16 --batch 256 --batches 5 --texts 512 ;;
+    bench_clip_bf16) step "$s" 45 "$B/bench/bench_clip" --device cuda --dtype bfloat16 --batch 256 --batches 5 --texts 512 \
+      --threads 16 ;;
     bench_clip_other)
       for dt in float16 float32; do
-        step "bench_clip_$dt" 45 "$B/bench/bench_clip" --device cuda --dtype $dt --batch 256 --batches 5 --texts 512
+        step "bench_clip_$dt" 45 "$B/bench/bench_clip" --device cuda --dtype $dt --batch 256 --batches 5 --texts 512 \
+          --threads 16
       done ;;
     bench_language)
       step "$s" 90 "$B/bench/bench_language" --device cuda --threads 16 --repeats 10 \
-        --train-scenes 50000@480x360,200000@800x600,1000000@1600x1000 --query-scene 200000@1920x1080 ;;
+        --train-scenes 50000@480x360,200000@800x600,1000000@1600x1000 --query-scene 200000@1920x1080
+      step bench_language_chunk256k 60 "$B/bench/bench_language" --device cuda --threads 16 --repeats 10 \
+        --train-scenes '' --query-scene 200000@1920x1080 --chunk 262144 ;;
     bench_amg) step "$s" 120 "$B/bench/bench_amg" --device cuda --masks '' --model vit_h --threads 16 ;;
     amg_fixture)
       step "$s" 90 "$B/bench/bench_amg" --device cuda --masks '' --fixture "$ROOT/tests/fixtures/sam" --threads 16 ;;

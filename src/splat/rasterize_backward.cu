@@ -1,6 +1,7 @@
 // CUDA backward rasterizer: per-tile blocks re-walk each pixel's list backwards from its last
 // contributor (the original 3DGS renderCUDA backward), with the per-pixel math of blend_pixel.h and
-// the per-Gaussian backward of project_gaussian.h / sh.h, shared with the CPU path.
+// the per-Gaussian backward of project_gaussian.h / sh.h, shared with the CPU path. Gradients of a
+// Gaussian are summed over each warp's pixels before the atomic add.
 #include <cuda_runtime.h>
 
 #include "splat/blend_pixel.h"
@@ -26,9 +27,19 @@ struct BackwardArgs {
   float* value_grad;  // N x channels
 };
 
+// Sum of v over the warp, in lane 0 (the other lanes' results are partial).
+__device__ __forceinline__ float warp_sum(float v) {
+  for (int offset = 16; offset > 0; offset >>= 1) v += __shfl_down_sync(0xffffffffu, v, offset);
+  return v;
+}
+
+// Each warp (two rows of a tile's pixels) walks the list in step, so its lanes meet each Gaussian
+// together: their gradients are summed over the warp with shuffles and added by one lane, instead of
+// one atomic add per pixel and value on the same address (which serialised 32 ways).
 __global__ void __launch_bounds__(kCudaBlock) render_backward_kernel(BackwardArgs r) {
   const int tile = blockIdx.y * r.tiles_x + blockIdx.x;
   const int tid = threadIdx.y * kTileSize + threadIdx.x;
+  const bool lane0 = (tid & 31) == 0;
   const int px = blockIdx.x * kTileSize + threadIdx.x, py = blockIdx.y * kTileSize + threadIdx.y;
   const bool inside = px < r.width && py < r.height;
   const float cx = px + 0.5f, cy = py + 0.5f;
@@ -64,40 +75,52 @@ __global__ void __launch_bounds__(kCudaBlock) render_backward_kernel(BackwardArg
     }
     __syncthreads();
     const int batch = min(kCudaBlock, total - start);
-    for (int j = 0; inside && j < batch; ++j) {
+    for (int j = 0; j < batch; ++j) {  // every lane of the warp, so that the sums below meet
       const int k = total - 1 - (start + j);  // index in the tile list
-      if (k >= last) continue;                // behind the pixel's last contributor
-      const float power = gaussian_power(s_mean[j], s_conic[j], cx, cy);
-      if (power < s_cut[j]) continue;
-      float G;
-      const float a = alpha_from_power(power, s_op[j], G);
-      if (a == 0.f) continue;
-      T = T / (1.f - a);
-      const float w = a * T;
+      bool contributes = inside && k < last;  // not behind the pixel's last contributor
+      float power = 0.f, G = 0.f, a = 0.f;
+      if (contributes) {
+        power = gaussian_power(s_mean[j], s_conic[j], cx, cy);
+        contributes = power >= s_cut[j];
+      }
+      if (contributes) {
+        a = alpha_from_power(power, s_op[j], G);
+        contributes = a != 0.f;
+      }
+      if (!__any_sync(0xffffffffu, contributes)) continue;
       const uint32_t id = s_id[j];
       const float* v = r.values + static_cast<size_t>(id) * C;
-      float* vg = r.value_grad + static_cast<size_t>(id) * C;
-      float v_dot = 0.f;
-      for (int c = 0; dpix && c < C; ++c) {
-        v_dot += v[c] * dpix[c];
-        atomicAdd(vg + c, w * dpix[c]);
-      }
-      // the same recurrences as rasterize_cpu.cpp backward_tile
-      rec_dot = last_alpha * last_v_dot + (1.f - last_alpha) * rec_dot;
-      last_v_dot = v_dot;
-      float dL_da = v_dot - rec_dot;
-      rec_d = last_alpha * last_d + (1.f - last_alpha) * rec_d;
-      last_d = s_depth[j];
-      dL_da += (s_depth[j] - rec_d) * dD;
-      dL_da *= T;
-      dL_da += (dA - bg_dot) * T_final / (1.f - a);
-      last_alpha = a;
+      float w = 0.f, d_op = 0.f;
       float g[7] = {0.f, 0.f, 0.f, 0.f, 0.f, 0.f, 0.f};
-      const float d_op = gaussian_alpha_backward(s_mean[j], s_conic[j], s_op[j], cx, cy, G, dL_da, g, g + 2, g + 4);
+      if (contributes) {
+        T = T / (1.f - a);
+        w = a * T;
+        float v_dot = 0.f;
+        for (int c = 0; dpix && c < C; ++c) v_dot += v[c] * dpix[c];
+        // the same recurrences as rasterize_cpu.cpp backward_tile
+        rec_dot = last_alpha * last_v_dot + (1.f - last_alpha) * rec_dot;
+        last_v_dot = v_dot;
+        float dL_da = v_dot - rec_dot;
+        rec_d = last_alpha * last_d + (1.f - last_alpha) * rec_d;
+        last_d = s_depth[j];
+        dL_da += (s_depth[j] - rec_d) * dD;
+        dL_da *= T;
+        dL_da += (dA - bg_dot) * T_final / (1.f - a);
+        last_alpha = a;
+        d_op = gaussian_alpha_backward(s_mean[j], s_conic[j], s_op[j], cx, cy, G, dL_da, g, g + 2, g + 4);
+      }
+      float* vg = r.value_grad + static_cast<size_t>(id) * C;
+      for (int c = 0; dpix && c < C; ++c) {
+        const float sum = warp_sum(contributes ? w * dpix[c] : 0.f);
+        if (lane0) atomicAdd(vg + c, sum);
+      }
       float* gg = r.geom_grad + static_cast<size_t>(id) * 9;
-      for (int q = 0; q < 7; ++q) atomicAdd(gg + q, g[q]);
-      atomicAdd(gg + 7, d_op);
-      atomicAdd(gg + 8, w * dD);
+      for (int q = 0; q < 7; ++q) {
+        const float sum = warp_sum(g[q]);
+        if (lane0) atomicAdd(gg + q, sum);
+      }
+      const float op_sum = warp_sum(d_op), depth_sum = warp_sum(w * dD);
+      if (lane0) atomicAdd(gg + 7, op_sum), atomicAdd(gg + 8, depth_sum);
     }
   }
 }
