@@ -4,7 +4,8 @@
 #   bash scripts/device/gpu_checks.sh [STEP...]     (default: every step but suite, in the order of ALL)
 # Steps: splat_tests (the CUDA rasterizer against the CPU path), models_tests (CLIP/SAM fixture parity
 # on CUDA), bench_* (rasterizer, CLIP, language field, SAM AMG on the GPU), run (`run --models tiny` on
-# the bundled example), suite (every test program carried, 16 at a time, one OpenMP thread each).
+# the bundled example), train_rgb (densification, the cap and resuming on the GPU), suite (every test
+# program carried, 16 at a time, one OpenMP thread each).
 set -uo pipefail
 ROOT=$PWD
 LOG=${OUT:-/tmp}/gpu.log
@@ -37,8 +38,19 @@ step() {  # step NAME LIMIT_S COMMAND...
 # by its time limit still brings back the rest's log.
 ALL=(splat_tests bench_splat models_tests bench_clip_bf16 bench_language run bench_amg amg_fixture bench_clip_other
      bench_splat_200k)
-steps=("$@")
-[ ${#steps[@]} -gt 0 ] || steps=("${ALL[@]}")
+# `gpu_checks.sh debug PROGRAM ARGS...`: PROGRAM of the build under cuda-gdb (the machine has no gdb),
+# its backtrace where it stops; after the steps named before `debug`, which takes the rest of the line.
+steps=() debug=()
+while [ $# -gt 0 ]; do
+  if [ "$1" = debug ]; then
+    shift
+    debug=("$@")
+    break
+  fi
+  steps+=("$1")
+  shift
+done
+[ ${#steps[@]} -gt 0 ] || [ ${#debug[@]} -gt 0 ] || steps=("${ALL[@]}")
 for s in "${steps[@]}"; do
   case $s in
     splat_tests) step "$s" 90 "$B/test_splat" --gtest_filter='*Cuda*:*CUDA*' ;;
@@ -68,12 +80,31 @@ for s in "${steps[@]}"; do
       step make_example 60 env CITYLANGSPLAT="$B/citylangsplat" bash scripts/make_example.sh /tmp/example
       step run_tiny 300 "$B/citylangsplat" run /tmp/example --models tiny
       cat /tmp/example/citylangsplat/run.json >> "$LOG" 2>&1 ;;
+    train_rgb)  # densification, the Gaussian cap and resuming on the GPU; the compare scene's PSNR
+      [ -d /tmp/example ] || step make_example 60 env CITYLANGSPLAT="$B/citylangsplat" bash scripts/make_example.sh /tmp/example
+      step train_rgb_3000 180 "$B/citylangsplat" train-rgb --scene /tmp/example --out /tmp/rgb --iterations 3000 --device cuda
+      step train_rgb_cap 120 "$B/citylangsplat" train-rgb --scene /tmp/example --out /tmp/rgb_cap --iterations 1500 \
+        --max-gaussians 12000 --device cuda
+      step train_rgb_1000 120 "$B/citylangsplat" train-rgb --scene /tmp/example --out /tmp/rgb_resume --iterations 1000 \
+        --device cuda
+      step train_rgb_resume 120 "$B/citylangsplat" train-rgb --scene /tmp/example --out /tmp/rgb_resume --iterations 1500 \
+        --resume --device cuda
+      step synth_compare 60 "$B/citylangsplat" -q synth --city data/citygml/fzk-haus/fzk_haus_lod3_v2.gml --lod 3 --seed 1 \
+        --views 28 --width 480 --height 360 --out /tmp/compare
+      step train_rgb_compare 120 "$B/citylangsplat" train-rgb --scene /tmp/compare --out /tmp/rgb_compare --iterations 600 \
+        -r 1 --densify-from 500 --densify-until 300 --checkpoint-every 0 --device cuda
+      for d in rgb rgb_cap rgb_resume rgb_compare; do echo "== $d"; cat /tmp/$d/summary.json; done >> "$LOG" 2>&1 ;;
     suite)
       export OMP_NUM_THREADS=1
       for t in "$B"/test_*; do echo "$t"; done | xargs -P 16 -I{} sh -c \
         '{} --gtest_brief=1 > /tmp/$(basename {}).log 2>&1; echo "$(basename {}) rc=$?"' >> "$LOG"
       cat /tmp/test_*.log >> "$LOG" ;;
-    *) echo "gpu_checks: unknown step $s (steps: ${ALL[*]} suite)" >&2; exit 2 ;;
+    *) echo "gpu_checks: unknown step $s (steps: ${ALL[*]} train_rgb suite)" >&2; exit 2 ;;
   esac
 done
+# GDB_SCRIPT: a cuda-gdb command file (breakpoints, run, bt, continue...) instead of `run` then `bt`.
+if [ ${#debug[@]} -gt 0 ]; then
+  if [ -n "${GDB_SCRIPT:-}" ]; then gdb_args=(-x "$GDB_SCRIPT"); else gdb_args=(-ex run -ex bt); fi
+  step debug 120 cuda-gdb -batch "${gdb_args[@]}" --args "$B/${debug[0]}" "${debug[@]:1}"
+fi
 echo; printf '%s\n' "${SUMMARY[@]}"
