@@ -2,10 +2,11 @@
 """The shared libraries that programs built here need on the device machine and that it lacks.
 
   runtime_bundle.py OUTDIR DEVICE_SONAMES ELF...
-Walks DT_NEEDED from the given programs and libraries (which travel themselves). A library is left out when the device has its soname
-(DEVICE_SONAMES: `ldconfig -p` of the device machine) or when it is the device's LibTorch or CUDA;
-codec and GIS libraries that only OpenCV's video and exotic image formats use become stubs
-(elf_stubs.py: no code, so a call traps); every other one is copied, and its own needs walked.
+Walks DT_NEEDED from the given programs and libraries (which travel themselves). A library is left
+out when the device has its soname (DEVICE_SONAMES: `ldconfig -p` of the device machine) or when it
+is the device's LibTorch or CUDA; codec and GIS libraries that only OpenCV's video and exotic image
+formats use become stubs (elf_stubs.py: functions return 0); every other one is copied, and its own
+needs walked.
 """
 import os
 import re
