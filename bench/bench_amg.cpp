@@ -32,6 +32,7 @@
 #include "models/sam_amg/records_json.h"
 #include "models/sam_amg/sam_amg_model.h"
 #include "models/weights/safetensors.h"
+#include "splat/compute_device.h"
 
 namespace cls::amg {
 namespace {
@@ -242,10 +243,12 @@ int main(int argc, char** argv) {
       .option("run", "strict", "with --fixture: the reference run whose parameters to use (strict, relaxed)")
       .option("device", "cpu", "where SAM runs: cpu or cuda (needs a CUDA build); the NMS benchmark stays on the CPU");
   int threads = 0;
+  torch::Device device(torch::kCPU);
   try {
     if (!args.parse(argc, argv)) return 0;
     threads = args.get_int("threads");
     if (threads < 1) throw cls::UsageError("bench_amg: --threads must be positive");
+    device = cls::compute_device(args.get("device"));
   } catch (const cls::UsageError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
@@ -255,7 +258,6 @@ int main(int argc, char** argv) {
   try {
     const auto sizes = cls::amg::parse_sizes(args.get("masks"));
     if (!sizes.empty()) cls::amg::bench_mask_nms(sizes, threads, args.get_int("reference-max"));
-    const torch::Device device(args.get("device"));
     if (!args.get("fixture").empty())
       cls::amg::bench_fixture_amg(args.get("fixture"), args.get("run"), threads, device);
     else if (args.get("model") != "none")

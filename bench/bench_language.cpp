@@ -26,6 +26,7 @@
 #include "core/error.h"
 #include "core/heap_reuse.h"
 #include "language/autoencoder.h"
+#include "splat/compute_device.h"
 #include "splat/rasterize.h"
 
 namespace cls {
@@ -133,7 +134,7 @@ int bench_main(int argc, char** argv) {
       .option("repeats", "3", "timed repeats (after one warm-up); the median is reported")
       .option("device", "cpu", "cpu or cuda (needs a CUDA build)");
   if (!args.parse(argc, argv)) return 0;
-  const at::Device device(args.get("device"));
+  const at::Device device = compute_device(args.get("device"));
   const int threads = args.get_int("threads");
   omp_set_num_threads(threads);
   at::set_num_threads(threads);

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The GPU checks, on a lent device machine, in a copy of this repository that carries .gpu/ (made by
 # scripts/device/prepare.sh). Appends every step's output to $OUT/gpu.log and prints one line per step.
-#   bash scripts/device/gpu_checks.sh [STEP...]     (default: every step but suite, in the order of ALL)
+#   bash scripts/device/gpu_checks.sh [STEP...] [debug PROGRAM ARGS...]   (default: the steps of ALL, in order)
 # Steps: splat_tests (the CUDA rasterizer against the CPU path), models_tests (CLIP/SAM fixture parity
 # on CUDA), bench_* (rasterizer, CLIP, language field, SAM AMG on the GPU), run (`run --models tiny` on
 # the bundled example), train_rgb (densification, the cap and resuming on the GPU), suite (every test
@@ -15,6 +15,7 @@ mkdir -p /tmp/gpu && tar -xJf .gpu/bundle.tar.xz -C /tmp/gpu || exit 1
 read -r SRC BLD < /tmp/gpu/paths.txt
 mkdir -p "$(dirname "$SRC")" "$(dirname "$BLD")"
 [ -e "$SRC" ] || ln -s "$ROOT" "$SRC"
+if [ -e "$BLD" ] && [ ! -L "$BLD" ]; then echo "gpu_checks: $BLD exists and is not a link: cannot place the build there" >&2; exit 1; fi
 ln -sfn /tmp/gpu/build "$BLD"
 TORCH=$(cd / && python3 -c 'import torch, os; print(os.path.dirname(torch.__file__))')
 export LD_LIBRARY_PATH=$BLD:/tmp/gpu/lib:$TORCH/lib:$TORCH/../nvidia/cu13/lib:/usr/local/cuda/lib64
@@ -51,6 +52,12 @@ while [ $# -gt 0 ]; do
   shift
 done
 [ ${#steps[@]} -gt 0 ] || [ ${#debug[@]} -gt 0 ] || steps=("${ALL[@]}")
+for s in "${steps[@]}"; do
+  case " ${ALL[*]} train_rgb suite " in
+    *" $s "*) ;;
+    *) echo "gpu_checks: unknown step $s (steps: ${ALL[*]} train_rgb suite)" >&2; exit 2 ;;
+  esac
+done
 for s in "${steps[@]}"; do
   case $s in
     splat_tests) step "$s" 90 "$B/test_splat" --gtest_filter='*Cuda*:*CUDA*' ;;
@@ -94,12 +101,10 @@ for s in "${steps[@]}"; do
       step train_rgb_compare 120 "$B/citylangsplat" train-rgb --scene /tmp/compare --out /tmp/rgb_compare --iterations 600 \
         -r 1 --densify-from 500 --densify-until 300 --checkpoint-every 0 --device cuda
       for d in rgb rgb_cap rgb_resume rgb_compare; do echo "== $d"; cat /tmp/$d/summary.json; done >> "$LOG" 2>&1 ;;
-    suite)
-      export OMP_NUM_THREADS=1
-      for t in "$B"/test_*; do echo "$t"; done | xargs -P 16 -I{} sh -c \
-        '{} --gtest_brief=1 > /tmp/$(basename {}).log 2>&1; echo "$(basename {}) rc=$?"' >> "$LOG"
+    suite)  # in the build folder, as ctest runs them; one row per test program in the log
+      step "$s" 500 sh -c 'cd "$1" && for t in ./test_*; do echo "$t"; done | OMP_NUM_THREADS=1 xargs -P 16 -I{} sh -c \
+        "{} --gtest_brief=1 > /tmp/\$(basename {}).log 2>&1; echo \"\$(basename {}) rc=\$?\""' suite "$B"
       cat /tmp/test_*.log >> "$LOG" ;;
-    *) echo "gpu_checks: unknown step $s (steps: ${ALL[*]} train_rgb suite)" >&2; exit 2 ;;
   esac
 done
 # GDB_SCRIPT: a cuda-gdb command file (breakpoints, run, bt, continue...) instead of `run` then `bt`.

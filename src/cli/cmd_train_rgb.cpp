@@ -1,4 +1,5 @@
 // citylangsplat train-rgb --scene DIR --out DIR [options]: photometric 3DGS training.
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -41,7 +42,9 @@ int cmd_train_rgb(int argc, char** argv) {
       .option("rotation-lr", num(d.rotation_lr), "rotation learning rate")
       .option("lambda-dssim", num(d.lambda_dssim), "weight of D-SSIM in the loss (L1 gets 1 - it)")
       .option("densify-from", std::to_string(d.densify_from), "first densification after this iteration")
-      .option("densify-until", std::to_string(d.densify_until), "no densification from this iteration on")
+      .option("densify-until", "auto",
+              "no densification from this iteration on (auto: " + std::to_string(d.densify_until) +
+                  ", at most half the iterations, as 3DGS's 15000 of 30000)")
       .option("densify-every", std::to_string(d.densify_every), "densification interval (iterations)")
       .option("densify-grad-threshold", num(d.densify_grad_threshold), "view-space gradient threshold (NDC units)")
       .option("percent-dense", num(d.percent_dense), "clone below / split above this fraction of the scene extent")
@@ -71,7 +74,10 @@ int cmd_train_rgb(int argc, char** argv) {
   o.rotation_lr = args.get_double("rotation-lr");
   o.lambda_dssim = args.get_double("lambda-dssim");
   o.densify_from = args.get_int("densify-from");
-  o.densify_until = args.get_int("densify-until");
+  // A densification or opacity reset late in a short run leaves too few iterations to train what it
+  // changed (3,000 iterations with the reset at 3,000 ended at 9.6 dB): auto keeps 3DGS's proportion.
+  o.densify_until = args.get("densify-until") == "auto" ? std::min(d.densify_until, o.iterations / 2)
+                                                         : args.get_int("densify-until");
   o.densify_every = args.get_int("densify-every");
   o.densify_grad_threshold = args.get_double("densify-grad-threshold");
   o.percent_dense = args.get_double("percent-dense");

@@ -119,7 +119,7 @@ __global__ void __launch_bounds__(kCudaBlock) render_backward_kernel(BackwardArg
         const float sum = warp_sum(g[q]);
         if (lane0) atomicAdd(gg + q, sum);
       }
-      const float op_sum = warp_sum(d_op), depth_sum = warp_sum(w * dD);
+      const float op_sum = warp_sum(d_op), depth_sum = warp_sum(contributes ? w * dD : 0.f);
       if (lane0) atomicAdd(gg + 7, op_sum), atomicAdd(gg + 8, depth_sum);
     }
   }

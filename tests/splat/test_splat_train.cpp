@@ -56,7 +56,7 @@ const fs::path& scene_dir() {
 // A short schedule that still densifies (clone, split, prune) and raises the SH degree.
 const std::string kSchedule =
     " --densify-from 30 --densify-until 120 --densify-every 20 --sh-increase-every 40 --opacity-reset-every 60"
-    " --random-background --seed 5";
+    " --random-background --seed 5 --device cpu";  // CPU: bit-exact (CUDA adds with atomics)
 
 nlohmann::json read_json(const fs::path& p) { return nlohmann::json::parse(cls::read_text_file(p)); }
 
