@@ -71,12 +71,18 @@ struct Timing {
   double max_image_diff = -1;  // CUDA: max |image - the CPU kernels' image| of the last iteration
 };
 
-Timing run(const Scene& s, bool use_sh, int channels, int iters) {
+// The CPU kernels' view of the scene: SH degree 3 or `channels` features.
+SplatInputs<float> inputs_of(const Scene& s, bool use_sh, int channels) {
   SplatInputs<float> in;
   in.n = s.n;
   in.means = s.means.data(), in.scales = s.scales.data(), in.quats = s.quats.data(), in.opacities = s.opacities.data();
   if (use_sh) in.sh = s.sh.data(), in.sh_degree = 3;
   else in.features = s.features.data(), in.channels = channels;
+  return in;
+}
+
+Timing run(const Scene& s, bool use_sh, int channels, int iters) {
+  const SplatInputs<float> in = inputs_of(s, use_sh, channels);
   const int C = use_sh ? 3 : channels;
   const size_t n_pix = static_cast<size_t>(s.cam.width) * s.cam.height;
   std::vector<float> image(n_pix * C), alpha(n_pix), depth(n_pix), dimage(n_pix * C, 1e-3f);
@@ -142,12 +148,7 @@ Timing run_autograd(const Scene& s, bool use_sh, int channels, int iters, const 
       t.backward_ms += std::chrono::duration<double, std::milli>(t2 - t1).count() / iters;
     }
     if (it == iters - 1 && device.is_cuda()) {  // at this scale too, the same image as the CPU kernels
-      SplatInputs<float> in;
-      in.n = s.n;
-      in.means = s.means.data(), in.scales = s.scales.data(), in.quats = s.quats.data();
-      in.opacities = s.opacities.data();
-      if (use_sh) in.sh = s.sh.data(), in.sh_degree = 3;
-      else in.features = s.features.data(), in.channels = channels;
+      const SplatInputs<float> in = inputs_of(s, use_sh, channels);
       const int64_t C = use_sh ? 3 : channels, n_pix = int64_t(s.cam.width) * s.cam.height;
       std::vector<float> image(static_cast<size_t>(n_pix * C)), alpha(static_cast<size_t>(n_pix)),
           depth(static_cast<size_t>(n_pix));

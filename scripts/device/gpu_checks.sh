@@ -21,6 +21,9 @@ TORCH=$(cd / && python3 -c 'import torch, os; print(os.path.dirname(torch.__file
 export LD_LIBRARY_PATH=$BLD:/tmp/gpu/lib:$TORCH/lib:$TORCH/../nvidia/cu13/lib:/usr/local/cuda/lib64
 B=$BLD
 SUMMARY=()
+make_example() {  # the bundled example scene in /tmp/example, once per call
+  [ -d /tmp/example ] || step make_example 60 env CITYLANGSPLAT="$B/citylangsplat" bash scripts/make_example.sh /tmp/example
+}
 step() {  # step NAME LIMIT_S COMMAND...
   local name=$1 limit=$2 t0 rc
   shift 2
@@ -84,11 +87,11 @@ for s in "${steps[@]}"; do
     amg_fixture)
       step "$s" 90 "$B/bench/bench_amg" --device cuda --masks '' --fixture "$ROOT/tests/fixtures/sam" --threads 16 ;;
     run)
-      step make_example 60 env CITYLANGSPLAT="$B/citylangsplat" bash scripts/make_example.sh /tmp/example
+      make_example
       step run_tiny 300 "$B/citylangsplat" run /tmp/example --models tiny
       cat /tmp/example/citylangsplat/run.json >> "$LOG" 2>&1 ;;
     train_rgb)  # densification, the Gaussian cap and resuming on the GPU; the compare scene's PSNR
-      [ -d /tmp/example ] || step make_example 60 env CITYLANGSPLAT="$B/citylangsplat" bash scripts/make_example.sh /tmp/example
+      make_example
       step train_rgb_3000 180 "$B/citylangsplat" train-rgb --scene /tmp/example --out /tmp/rgb --iterations 3000 --device cuda
       step train_rgb_cap 120 "$B/citylangsplat" train-rgb --scene /tmp/example --out /tmp/rgb_cap --iterations 1500 \
         --max-gaussians 12000 --device cuda
