@@ -3,32 +3,77 @@
 #include <torch/torch.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/error.h"
+#include "splat/ssim_cpu.h"
 
 namespace cls {
-namespace {
-constexpr int kWindow = 11;
-constexpr double kSigma = 1.5;
-}  // namespace
 
 at::Tensor ssim_window_1d(at::ScalarType dtype) {
-  std::vector<double> w(kWindow);
-  double sum = 0;
-  for (int i = 0; i < kWindow; ++i) {
-    const double x = i - kWindow / 2;
-    w[i] = std::exp(-x * x / (2 * kSigma * kSigma));
-    sum += w[i];
-  }
-  for (double& v : w) v /= sum;
-  return torch::tensor(w, torch::kFloat64).to(dtype);
+  const std::array<double, 11> taps = ssim_window_taps();
+  return torch::tensor(std::vector<double>(taps.begin(), taps.end()), torch::kFloat64).to(dtype);
 }
 
-at::Tensor ssim(const at::Tensor& a, const at::Tensor& b) {
+namespace {
+
+constexpr int kWindow = 11;
+
+void check_images(const at::Tensor& a, const at::Tensor& b) {
   if (a.dim() != 3 || a.sizes() != b.sizes())
     throw Error("ssim: expected two H x W x C images of the same shape, got " + c10::str(a.sizes()) + " and " +
                 c10::str(b.sizes()));
+}
+
+// ssim_cpu.h's forward; dm (C x 3 x H x W) receives the moment derivatives when defined.
+at::Tensor cpu_ssim_forward(const at::Tensor& a, const at::Tensor& b, const at::Tensor& dm) {
+  const int H = int(a.size(0)), W = int(a.size(1)), C = int(a.size(2));
+  const double value =
+      a.scalar_type() == torch::kDouble
+          ? ssim_forward_cpu(a.data_ptr<double>(), b.data_ptr<double>(), H, W, C, dm.defined() ? dm.data_ptr<double>() : nullptr)
+          : ssim_forward_cpu(a.data_ptr<float>(), b.data_ptr<float>(), H, W, C, dm.defined() ? dm.data_ptr<float>() : nullptr);
+  return torch::scalar_tensor(value, a.options());
+}
+
+// ssim_cpu.h's kernels as an autograd function of the first image (the second is the target).
+struct CpuSsim : torch::autograd::Function<CpuSsim> {
+  static at::Tensor forward(torch::autograd::AutogradContext* ctx, const at::Tensor& a_in, const at::Tensor& b_in) {
+    const at::Tensor a = a_in.contiguous(), b = b_in.contiguous();
+    const at::Tensor dm = torch::empty({a.size(2), 3, a.size(0), a.size(1)}, a.options());
+    ctx->save_for_backward({a, b, dm});
+    return cpu_ssim_forward(a, b, dm);
+  }
+  static torch::autograd::variable_list backward(torch::autograd::AutogradContext* ctx,
+                                                 torch::autograd::variable_list grad_out) {
+    const torch::autograd::variable_list saved = ctx->get_saved_variables();
+    const at::Tensor &a = saved[0], &b = saved[1], &dm = saved[2];
+    const int H = int(a.size(0)), W = int(a.size(1)), C = int(a.size(2));
+    at::Tensor grad = torch::empty_like(a);
+    if (a.scalar_type() == torch::kDouble)
+      ssim_backward_cpu(a.data_ptr<double>(), b.data_ptr<double>(), dm.data_ptr<double>(), H, W, C,
+                        grad_out[0].item<double>(), grad.data_ptr<double>());
+    else
+      ssim_backward_cpu(a.data_ptr<float>(), b.data_ptr<float>(), dm.data_ptr<float>(), H, W, C,
+                        grad_out[0].item<float>(), grad.data_ptr<float>());
+    return {grad, at::Tensor()};
+  }
+};
+
+}  // namespace
+
+at::Tensor ssim(const at::Tensor& a, const at::Tensor& b) {
+  check_images(a, b);
+  const bool cpu_kernel = a.device().is_cpu() && b.device().is_cpu() && a.numel() > 0 && !b.requires_grad() &&
+                          (a.scalar_type() == torch::kFloat || a.scalar_type() == torch::kDouble) &&
+                          b.scalar_type() == a.scalar_type();
+  if (!cpu_kernel) return ssim_ops(a, b);
+  if (a.requires_grad() && at::GradMode::is_enabled()) return CpuSsim::apply(a, b);
+  return cpu_ssim_forward(a.contiguous(), b.contiguous(), at::Tensor());
+}
+
+at::Tensor ssim_ops(const at::Tensor& a, const at::Tensor& b) {
+  check_images(a, b);
   const int64_t channels = a.size(2);
   const at::Tensor w1 = ssim_window_1d(a.scalar_type()).to(a.device());
   // The window is separable and the padding zero, so a 1 x 11 pass then an 11 x 1 pass equal the

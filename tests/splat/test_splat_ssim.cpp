@@ -1,11 +1,12 @@
 // SSIM against a slow double-precision per-pixel reference (zero padding, as conv2d), SSIM(x, x) = 1,
-// and its gradient against central finite differences.
+// and its gradient against central finite differences; the CPU kernels against the LibTorch-op form.
 #include <gtest/gtest.h>
 #include <torch/torch.h>
 
 #include <cmath>
 #include <vector>
 
+#include "splat/rasterize_cpu.h"
 #include "splat/ssim.h"
 
 namespace {
@@ -85,6 +86,43 @@ TEST(Ssim, GradientMatchesFiniteDifferences) {
     const double g = grad.view({-1})[idx].item<double>();
     EXPECT_NEAR(g, fd, 1e-7 + 1e-5 * std::abs(fd)) << idx;
   }
+}
+
+// The CPU kernels work in bands of rows with a halo: images taller than several bands, odd sizes, in
+// every instruction-set build, against the LibTorch-op form (value and gradient of the first image).
+TEST(Ssim, CpuKernelsEqualTheOpsAcrossBandsInEveryBuild) {
+  torch::manual_seed(4);
+  const cls::CpuKernels initial = cls::cpu_kernels();
+  for (const cls::CpuKernels k : cls::available_cpu_kernels()) {
+    cls::set_cpu_kernels(k);
+    for (const auto dtype : {torch::kFloat64, torch::kFloat32}) {
+      const bool dbl = dtype == torch::kFloat64;
+      const at::Tensor a0 = torch::rand({101, 67, 3}, dtype);
+      const at::Tensor b = (a0 + 0.3 * torch::randn_like(a0)).clamp(0, 1);
+      const at::Tensor a = a0.clone().requires_grad_(true), a_ops = a0.clone().requires_grad_(true);
+      const at::Tensor s = cls::ssim(a, b), s_ops = cls::ssim_ops(a_ops, b);
+      EXPECT_NEAR(s.item<double>(), s_ops.item<double>(), dbl ? 1e-13 : 2e-6) << cls::cpu_kernels_name(k);
+      (3.0 * s).backward();
+      (3.0 * s_ops).backward();
+      const double scale = a_ops.grad().abs().max().item<double>();
+      ASSERT_GT(scale, 0);
+      EXPECT_LT((a.grad() - a_ops.grad()).abs().max().item<double>() / scale, dbl ? 1e-12 : 1e-5)
+          << cls::cpu_kernels_name(k) << (dbl ? " double" : " float");
+      // without a gradient: the same value
+      EXPECT_EQ(cls::ssim(a0, b).item<double>(), s.item<double>());
+    }
+  }
+  cls::set_cpu_kernels(initial);
+}
+
+// A differentiable target takes the LibTorch-op form: both images get their gradient.
+TEST(Ssim, DifferentiableTargetGetsItsGradient) {
+  torch::manual_seed(5);
+  const at::Tensor a = torch::rand({12, 10, 3}, torch::kFloat64).requires_grad_(true);
+  const at::Tensor b = torch::rand({12, 10, 3}, torch::kFloat64).requires_grad_(true);
+  cls::ssim(a, b).backward();
+  ASSERT_TRUE(b.grad().defined());
+  EXPECT_GT(b.grad().abs().max().item<double>(), 0);
 }
 
 }  // namespace
