@@ -4,7 +4,9 @@
 # aside: a city transform off by growing errors (`synth --city-error`), and per variant a model that lacks
 # openings (`drop=F`: `synth --drop-openings F`) or is the building's LoD2 model (`lod2`, where the data
 # has one), and a scene whose photos show N extra trees just in front of the facades that the city model
-# lacks (`occl=N`: `synth --occluders N`; new photos, so its own photometric model and its own baseline).
+# lacks (`occl=N`: `synth --occluders N`; new photos, so its own photometric model and its own baseline);
+# `occl=N+drop=F` and `occl=N+lod2` give those photos a model that is also wrong (occl=N must be listed too:
+# its baseline is theirs).
 # Every run uses the image-segments provider (segments of the images, features from the exact ground
 # truth under them: nothing comes from the label maps, so a wrong model shows), one photometric model per
 # building and set of photos, and scores 2D on the held-out views and 3D on the ground-truth cloud, which
@@ -18,7 +20,7 @@
 # Also per building, on the exact scene: the mechanics benchmark (`--models synthetic`, docs/benchmarks.md
 # "Mechanics benchmark") in its own columns.
 #   bash bench/robustness.sh [--work DIR] [--buildings "fzk citygml4j texture4"] [--errors "0 t=0.25 ..."]
-#                            [--variants "exact drop=0.3 lod2 occl=8"] [--rgb-iterations N]
+#                            [--variants "exact drop=0.3 lod2 occl=8 occl=8+drop=0.3"] [--rgb-iterations N]
 #                            [--language-iterations N]
 #                            [--report-only]   (the table, JSON and plot of the runs WORK already holds)
 # A building's photometric model is trained once per set of photos into WORK/<building>/rgb (rgb-occl=N)
@@ -40,7 +42,7 @@ while [ $# -gt 0 ]; do
     --language-iterations) language_iterations=$2; shift 2 ;;
     --report-only) report_only=1; shift ;;
     *) echo "usage: $0 [--work DIR (/tmp/cls-bench-robustness)] [--buildings \"fzk citygml4j texture4\"]" \
-            "[--errors \"0 t=0.25 t=0.5,r=0.5 t=1,r=2\"] [--variants \"exact drop=0.3\" (also lod2, occl=N)]" \
+            "[--errors \"0 t=0.25 t=0.5,r=0.5 t=1,r=2\"] [--variants \"exact drop=0.3\" (also lod2, occl=N, occl=N+drop=F, occl=N+lod2)]" \
             "[--rgb-iterations 1500] [--language-iterations 300] [--report-only]" >&2
        exit 2 ;;
   esac
@@ -56,7 +58,9 @@ esac
 for v in $variants; do
   case $v in
     exact|lod2|drop=0.*|drop=1|occl=[1-9]|occl=[1-9][0-9]) ;;
-    *) echo "robustness.sh: unknown variant $v (exact, lod2, drop=FRACTION, occl=COUNT in 1..99)" >&2; exit 2 ;;
+    occl=*+lod2|occl=*+drop=0.*|occl=*+drop=1)
+      case " $variants " in *" ${v%%+*} "*) ;; *) echo "robustness.sh: $v needs ${v%%+*} in --variants (its baseline runs there)" >&2; exit 2 ;; esac ;;
+    *) echo "robustness.sh: unknown variant $v (exact, lod2, drop=FRACTION, occl=COUNT in 1..99, occl=COUNT+drop=FRACTION, occl=COUNT+lod2)" >&2; exit 2 ;;
   esac
 done
 [ -x "$bin" ] || { echo "robustness.sh: $bin not found: build first (cmake --build build)" >&2; exit 1; }
@@ -68,11 +72,14 @@ mkdir -p "$work"
 work=$(readlink -f "$work")
 synth() {  # synth OUT VARIANT ERROR
   local args=(-q synth --city "${city[$b]}" --lod 3 --views 32 --width 240 --height 180 --seed 1 --out "$1" --skip-if-same)
-  case $2 in
-    lod2) args+=(--given-city "${lod2[$b]}" --given-lod 2) ;;
-    drop=*) args+=(--drop-openings "${2#drop=}") ;;
-    occl=*) args+=(--occluders "${2#occl=}") ;;
-  esac
+  local part
+  for part in ${2//+/ }; do
+    case $part in
+      lod2) args+=(--given-city "${lod2[$b]}" --given-lod 2) ;;
+      drop=*) args+=(--drop-openings "${part#drop=}") ;;
+      occl=*) args+=(--occluders "${part#occl=}") ;;
+    esac
+  done
   [ "$3" = 0 ] || args+=(--city-error "$3")
   "$bin" "${args[@]}"
 }
@@ -88,10 +95,10 @@ for b in $buildings; do
   [ -n "${city[$b]:-}" ] || { echo "robustness.sh: unknown building $b (fzk, citygml4j, texture4)" >&2; exit 2; }
   mkdir -p "$work/$b"
   for v in $variants; do
-    if [ "$v" = lod2 ] && [ -z "${lod2[$b]:-}" ]; then echo "$b: no LoD2 model in the data: lod2 skipped" >&2; continue; fi
+    case +$v+ in *+lod2+*) [ -n "${lod2[$b]:-}" ] || { echo "$b: no LoD2 model in the data: $v skipped" >&2; continue; } ;; esac
     prefix=""; [ "$v" = exact ] || prefix="$v-"  # the exact model's folders keep their names
     # The photos: occluders change them, the other variants change only the city model they are given.
-    case $v in occl=*) photos=$v ;; *) photos=exact ;; esac
+    case $v in occl=*) photos=${v%%+*} ;; *) photos=exact ;; esac
     photos_scene=$work/$b/scene-0 rgb=$work/$b/rgb
     [ "$photos" = exact ] || photos_scene=$work/$b/scene-$photos-0 rgb=$work/$b/rgb-$photos
     synth "$photos_scene" "$photos" 0
@@ -109,7 +116,7 @@ for b in $buildings; do
         # autoencoder, and LangSplat as published (its 3-d autoencoder, normalised splatting).
         run "$scene" "$work/$b/run-0-off" --align off --baseline langsplat,langsplat-original
         MODELS=synthetic run "$scene" "$work/$b/run-0-synthetic" --align off  # the mechanics benchmark
-      elif [ "$photos" != exact ] && [ "$e" = 0 ]; then  # other photos: their own baseline
+      elif [ "$photos" = "$v" ] && [ "$e" = 0 ]; then  # other photos: their own baseline
         run "$scene" "$work/$b/run-$prefix$e-off" --align off --baseline langsplat
       else
         run "$scene" "$work/$b/run-$prefix$e-off" --align off --no-baseline
@@ -175,7 +182,8 @@ for b in buildings:
             lab = scores(f"{b}/{run}", "city-model-labels")
             lab_al = lab if e == "0" else scores(f"{b}/run-{prefix}{e}-align", "city-model-labels")
             gap = al[1] - zero[1] if al and zero and al[1] is not None and zero[1] is not None else None
-            base = scores(f"{b}/run-{v}-0-off" if v.startswith("occl=") else f"{b}/run-0-off", "langsplat")
+            photos = v.split("+")[0] if v.startswith("occl=") else None
+            base = scores(f"{b}/run-{photos}-0-off" if photos else f"{b}/run-0-off", "langsplat")
             rows_b.append([b, v, e] + pair(off) + pair(al) + [lab and lab[0], lab_al and lab_al[0], gap] + pair(base))
 rows_b = with_mean(rows_b, 3) if rows_b else []
 md = ["Per building (exact model, zero error):", ""] + table(head_a, rows_a, 1) + ["", "Given model x transform error:", ""] + table(head_b, rows_b, 3)
@@ -184,7 +192,8 @@ json.dump({"per_building": {"header": head_a, "rows": rows_a}, "matrix": {"heade
           open(os.path.join(work, "robustness.json"), "w"), indent=1)
 print("\n".join(md))
 # The plot: 3D mIoU against the error, a panel per building (and the mean): CityLangSplat without (red) and
-# with align (blue), solid for the exact model, dashed for the others; the LangSplat baseline in grey.
+# with align (blue), solid for the exact model, dashed for the others; the LangSplat baseline in grey (an
+# occl=N variant's own baseline, on its photos, dashed as that variant).
 W, H, pad = 300, 220, 40
 colours = {"LangSplat": "#888888", "ours": "#d62728", "ours+align": "#1f77b4"}
 dashes = ["", "6,4", "2,3", "8,3,2,3"]
@@ -194,7 +203,7 @@ X = lambda x0, k: x0 + pad + k * (W - 2 * pad) / max(1, len(errors) - 1)
 for i, b in enumerate(panels):
     mine = [r for r in rows_b if r[0] == b]
     base = next((r[2] for r in rows_a if r[0] == b), None)
-    vals = [v for r in mine for v in (r[4], r[6]) if v is not None] + ([base] if base is not None else [])
+    vals = [v for r in mine for v in (r[4], r[6], r[11]) if v is not None] + ([base] if base is not None else [])
     if not vals: continue
     lo, hi = min(vals) - 2, max(vals) + 2
     x0 = i * W
@@ -208,6 +217,11 @@ for i, b in enumerate(panels):
         svg.append(f'<text x="{x0 + pad - 4}" y="{Y(t) + 4}" text-anchor="end">{t:.0f}</text>')
     if base is not None:
         svg.append(f'<line x1="{X(x0, 0)}" y1="{Y(base):.1f}" x2="{X(x0, len(errors) - 1)}" y2="{Y(base):.1f}" stroke="{colours["LangSplat"]}" stroke-width="2"/>')
+    for j, v in enumerate(variants):  # the baseline of other photos (occl=N), in that variant's dashes
+        other = next((r[11] for r in mine if r[1] == v and v.startswith("occl=") and "+" not in v and r[11] is not None), None)
+        if other is None: continue
+        dash = f' stroke-dasharray="{dashes[j % len(dashes)]}"' if dashes[j % len(dashes)] else ""
+        svg.append(f'<line x1="{X(x0, 0)}" y1="{Y(other):.1f}" x2="{X(x0, len(errors) - 1)}" y2="{Y(other):.1f}" stroke="{colours["LangSplat"]}" stroke-width="2"{dash}/>')
     for j, v in enumerate(variants):
         for name, col in (("ours", 4), ("ours+align", 6)):
             pts = [(X(x0, errors.index(r[2])), Y(r[col])) for r in mine if r[1] == v and r[col] is not None]
