@@ -382,7 +382,8 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
         // The original's screen-space gradient is w.r.t. NDC: pixel gradient x (W/2, H/2).
         const double half_w = 0.5 * view.view->camera.width, half_h = 0.5 * view.view->camera.height;
         const at::Tensor grad_px = means2d.grad().defined() ? means2d.grad() : torch::zeros_like(means2d);
-        const at::Tensor grad_ndc = grad_px * torch::tensor({float(half_w), float(half_h)}).to(device);
+        // (columns scaled by scalars: no small tensor copied to the device every iteration)
+        const at::Tensor grad_ndc = torch::stack({grad_px.select(1, 0) * half_w, grad_px.select(1, 1) * half_h}, 1);
         add_densification_stats(stats, grad_ndc, radii);
         if (it > options.densify_from && it % options.densify_every == 0) {
           DensifyOptions d;
