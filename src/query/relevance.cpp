@@ -104,19 +104,27 @@ RenderedLatents render_latents(const GaussianModel& gaussians, const at::Tensor&
 
 namespace {
 
-// Calls `decode` on rows [begin, end) of `latents` (P x L) chunk by chunk and hands each decoded chunk
-// (B x D float32) to `sink(begin, decoded)`.
+// Calls `decode` on the rendered latents (P x L) of the pixels with alpha > 0, chunk by chunk, and hands
+// each chunk to `sink(rows, decoded)`: the pixel indices (int64) and their features (B x D float32). The
+// other pixels' latents are exactly zero (nothing was blended over the zero background, so alpha is 0
+// only there), so decode(0) is computed once and handed over as one row for all of them: decoded has one
+// row per index, or one row for every index. Views with sky or ground cost only their covered pixels.
 template <class Sink>
-void decode_chunks(const at::Tensor& latents, const LatentDecoder& decode, int64_t chunk, Sink&& sink) {
+void decode_covered(const at::Tensor& latents, const at::Tensor& alpha, const LatentDecoder& decode, int64_t chunk,
+                    Sink&& sink) {
   if (chunk <= 0) throw Error("render_decoded: chunk size must be positive");
-  const int64_t P = latents.size(0);
-  for (int64_t b = 0; b < P; b += chunk) {
-    const int64_t e = std::min(P, b + chunk);
-    at::Tensor d = decode(latents.slice(0, b, e));
-    if (!d.defined() || d.dim() != 2 || d.size(0) != e - b)
-      throw Error("render_decoded: the decoder returned " + shape_of(d) + " for " + std::to_string(e - b) + " latents");
-    sink(b, d.to(torch::kFloat32));
+  auto checked = [&](const at::Tensor& d, int64_t rows) {
+    if (!d.defined() || d.dim() != 2 || d.size(0) != rows)
+      throw Error("render_decoded: the decoder returned " + shape_of(d) + " for " + std::to_string(rows) + " latents");
+    return d.to(torch::kFloat32);
+  };
+  const at::Tensor covered = alpha.reshape({-1}) > 0;
+  const at::Tensor rows = covered.nonzero().squeeze(1), empty_rows = covered.logical_not().nonzero().squeeze(1);
+  for (int64_t b = 0; b < rows.size(0); b += chunk) {
+    const at::Tensor r = rows.slice(0, b, std::min(rows.size(0), b + chunk));
+    sink(r, checked(decode(latents.index_select(0, r)), r.size(0)));
   }
+  if (empty_rows.size(0) > 0) sink(empty_rows, checked(decode(torch::zeros({1, latents.size(1)}, latents.options())), 1));
 }
 
 }  // namespace
@@ -128,10 +136,10 @@ DecodedView render_decoded(const GaussianModel& gaussians, const at::Tensor& lat
   const int64_t H = r.latents.size(0), W = r.latents.size(1), L = r.latents.size(2);
   const at::Tensor flat = r.latents.reshape({H * W, L});
   at::Tensor features;
-  decode_chunks(flat, decode, chunk_pixels, [&](int64_t b, const at::Tensor& d) {
+  decode_covered(flat, r.alpha, decode, chunk_pixels, [&](const at::Tensor& rows, const at::Tensor& d) {
     if (!features.defined()) features = torch::empty({H * W, d.size(1)}, d.options());
     if (d.size(1) != features.size(1)) throw Error("render_decoded: the decoder's output size changed between chunks");
-    features.slice(0, b, b + d.size(0)).copy_(d);
+    features.index_copy_(0, rows, d.expand({rows.size(0), d.size(1)}));
   });
   if (!features.defined()) features = torch::empty({0, 0}, flat.options().dtype(torch::kFloat32));
   return {features.reshape({H, W, features.size(1)}), r.alpha.to(torch::kFloat32)};
@@ -151,11 +159,11 @@ RelevanceMaps relevance_maps(const GaussianModel& gaussians, const at::Tensor& l
   const at::Tensor flat = r.latents.reshape({H * W, L});
   const at::Tensor phrases = unit_rows(torch::cat({queries, canonical}, 0).to(flat.device(), torch::kFloat32));
   at::Tensor cos = torch::empty({H * W, phrases.size(0)}, flat.options().dtype(torch::kFloat32));
-  decode_chunks(flat, decode, chunk_pixels, [&](int64_t b, const at::Tensor& d) {
+  decode_covered(flat, r.alpha, decode, chunk_pixels, [&](const at::Tensor& rows, const at::Tensor& d) {
     if (d.size(1) != D)
       throw Error("relevance_maps: the decoder gives " + std::to_string(d.size(1)) + "-d features, the queries are " +
                   std::to_string(D) + "-d");
-    cos.slice(0, b, b + d.size(0)).copy_(unit_rows(d).matmul(phrases.t()));
+    cos.index_copy_(0, rows, unit_rows(d).matmul(phrases.t()).expand({rows.size(0), phrases.size(0)}));
   });
   const at::Tensor canonical_cos = cos.slice(1, K);  // P x M
   std::vector<at::Tensor> relevancy;

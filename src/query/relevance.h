@@ -52,7 +52,9 @@ struct RenderedLatents {
 RenderedLatents render_latents(const GaussianModel& gaussians, const at::Tensor& latents,
                                const PinholeCamera& camera, const Pose& pose);
 
-// render_latents followed by `decode` per chunk of pixels: features H x W x D (float32), alpha.
+// render_latents followed by `decode` per chunk of the pixels with alpha > 0; the others hold exactly zero
+// latents (nothing blended over the zero background) and get decode(0), computed once. Features H x W x D
+// (float32), alpha.
 DecodedView render_decoded(const GaussianModel& gaussians, const at::Tensor& latents, const LatentDecoder& decode,
                            const PinholeCamera& camera, const Pose& pose, int64_t chunk_pixels = kDecodeChunkPixels);
 

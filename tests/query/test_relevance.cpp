@@ -84,8 +84,10 @@ TEST(CanonicalPhrases, AreLangSplats) {
 }
 
 TEST(RenderDecoded, MatchesPerPixelReference) {
-  const int W = 37, H = 29, L = 8, D = 12;
-  test::LatentScene t = test::latent_scene(80, W, H, L, 7);
+  // The view is 24 columns wider than the scene's frustum, so that some pixels stay uncovered.
+  const int W0 = 37, W = W0 + 24, H = 29, L = 8, D = 12;
+  test::LatentScene t = test::latent_scene(80, W0, H, L, 7);
+  t.camera.width = t.s.cam.width = W;
   // The decoder: a fixed affine map followed by tanh (stands in for the autoencoder's MLP).
   torch::manual_seed(5);
   const at::Tensor A = torch::randn({L, D}, torch::kFloat64), bias = torch::randn({D}, torch::kFloat64);
@@ -97,7 +99,9 @@ TEST(RenderDecoded, MatchesPerPixelReference) {
   const DecodedView v = render_decoded(t.g, t.latents, decode, t.camera, t.pose, /*chunk_pixels=*/100);
   ASSERT_EQ(v.features.sizes(), at::IntArrayRef({H, W, D}));
   ASSERT_EQ(v.alpha.sizes(), at::IntArrayRef({H, W}));
-  EXPECT_EQ(calls, (W * H + 99) / 100);  // chunked, last chunk partial
+  // chunked over the covered pixels, last chunk partial; one more call decodes the uncovered pixels' zero latent
+  const int64_t covered_pixels = (v.alpha > 0).sum().item<int64_t>();
+  EXPECT_EQ(calls, (covered_pixels + 99) / 100 + 1);
 
   // Reference: double-precision renderer for the latents (zero background), then the decoder per pixel.
   const auto ad = test::scene_arrays<double>(t.s);
@@ -120,7 +124,8 @@ TEST(RenderDecoded, MatchesPerPixelReference) {
     }
   EXPECT_LT(max_diff, 1e-4);
   EXPECT_LT(max_alpha_diff, 1e-5);
-  EXPECT_GT(covered / (W * H), 0.5);  // the scene is not empty
+  EXPECT_GT(covered / (W0 * H), 0.5);  // the scene is not empty
+  EXPECT_LT(covered_pixels, W * H);   // and has uncovered pixels: they too match the reference above
 }
 
 TEST(RenderDecoded, LanguageModelLevelMatchesReferenceThenAutoencoderPerPixel) {
@@ -158,8 +163,9 @@ TEST(RenderDecoded, LanguageModelLevelMatchesReferenceThenAutoencoderPerPixel) {
 }
 
 TEST(RelevanceMaps, EqualMapsOfTheWholeDecodedField) {
-  const int W = 31, H = 23, L = 6, D = 10;
-  test::LatentScene t = test::latent_scene(60, W, H, L, 11);
+  const int W = 31 + 20, H = 23, L = 6, D = 10;
+  test::LatentScene t = test::latent_scene(60, 31, H, L, 11);
+  t.camera.width = W;  // wider than the scene: uncovered pixels too
   torch::manual_seed(9);
   const at::Tensor A = torch::randn({L, D});
   const LatentDecoder decode = [&](const at::Tensor& z) { return z.matmul(A); };
@@ -172,6 +178,7 @@ TEST(RelevanceMaps, EqualMapsOfTheWholeDecodedField) {
   for (int k = 0; k < 3; ++k)
     EXPECT_LT((m.relevancy[k] - langsplat_relevancy(v.features, queries[k], canonical)).abs().max().item<float>(), 1e-5);
   EXPECT_TRUE(torch::equal(m.alpha, v.alpha));
+  EXPECT_GT((m.alpha == 0).sum().item<int64_t>(), 0);
   EXPECT_THROW(relevance_maps(t.g, t.latents, decode, t.camera, t.pose, queries, torch::zeros({0, D})), Error);
   EXPECT_THROW(relevance_maps(t.g, t.latents, decode, t.camera, t.pose, torch::zeros({1, D + 1}), canonical), Error);
   EXPECT_THROW(render_latents(t.g, t.latents.slice(0, 1), t.camera, t.pose), Error);
