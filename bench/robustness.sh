@@ -58,7 +58,8 @@ esac
 for v in $variants; do
   case $v in
     exact|lod2|drop=0.*|drop=1|occl=[1-9]|occl=[1-9][0-9]) ;;
-    occl=*+lod2|occl=*+drop=0.*|occl=*+drop=1)
+    occl=[1-9]+lod2|occl=[1-9][0-9]+lod2|occl=[1-9]+drop=0.*|occl=[1-9][0-9]+drop=0.*|occl=[1-9]+drop=1|occl=[1-9][0-9]+drop=1)
+      [[ $v != *+*+* ]] || { echo "robustness.sh: $v: one occl=N and one model change at most" >&2; exit 2; }
       case " $variants " in *" ${v%%+*} "*) ;; *) echo "robustness.sh: $v needs ${v%%+*} in --variants (its baseline runs there)" >&2; exit 2 ;; esac ;;
     *) echo "robustness.sh: unknown variant $v (exact, lod2, drop=FRACTION, occl=COUNT in 1..99, occl=COUNT+drop=FRACTION, occl=COUNT+lod2)" >&2; exit 2 ;;
   esac
@@ -72,8 +73,9 @@ mkdir -p "$work"
 work=$(readlink -f "$work")
 synth() {  # synth OUT VARIANT ERROR
   local args=(-q synth --city "${city[$b]}" --lod 3 --views 32 --width 240 --height 180 --seed 1 --out "$1" --skip-if-same)
-  local part
-  for part in ${2//+/ }; do
+  local part parts
+  IFS=+ read -r -a parts <<< "$2"
+  for part in "${parts[@]}"; do
     case $part in
       lod2) args+=(--given-city "${lod2[$b]}" --given-lod 2) ;;
       drop=*) args+=(--drop-openings "${part#drop=}") ;;

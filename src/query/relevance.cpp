@@ -116,7 +116,7 @@ void decode_covered(const at::Tensor& latents, const at::Tensor& alpha, const La
   auto checked = [&](const at::Tensor& d, int64_t rows) {
     if (!d.defined() || d.dim() != 2 || d.size(0) != rows)
       throw Error("render_decoded: the decoder returned " + shape_of(d) + " for " + std::to_string(rows) + " latents");
-    return d.to(torch::kFloat32);
+    return d.to(latents.device(), torch::kFloat32);
   };
   const at::Tensor covered = alpha.reshape({-1}) > 0;
   const at::Tensor rows = covered.nonzero().squeeze(1), empty_rows = covered.logical_not().nonzero().squeeze(1);

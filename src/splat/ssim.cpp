@@ -12,13 +12,13 @@
 namespace cls {
 
 at::Tensor ssim_window_1d(at::ScalarType dtype) {
-  const std::array<double, 11> taps = ssim_window_taps();
+  const std::array<double, kSsimWindow> taps = ssim_window_taps();
   return torch::tensor(std::vector<double>(taps.begin(), taps.end()), torch::kFloat64).to(dtype);
 }
 
 namespace {
 
-constexpr int kWindow = 11;
+constexpr int kWindow = kSsimWindow;
 
 void check_images(const at::Tensor& a, const at::Tensor& b) {
   if (a.dim() != 3 || a.sizes() != b.sizes())
@@ -46,6 +46,9 @@ struct CpuSsim : torch::autograd::Function<CpuSsim> {
   }
   static torch::autograd::variable_list backward(torch::autograd::AutogradContext* ctx,
                                                  torch::autograd::variable_list grad_out) {
+    // The gradient is computed by the kernel, not by differentiable ops: no second derivative.
+    if (at::GradMode::is_enabled())
+      throw Error("ssim: the CPU kernels give no second derivative (create_graph); use ssim_ops for that");
     const torch::autograd::variable_list saved = ctx->get_saved_variables();
     const at::Tensor &a = saved[0], &b = saved[1], &dm = saved[2];
     const int H = int(a.size(0)), W = int(a.size(1)), C = int(a.size(2));
@@ -60,20 +63,8 @@ struct CpuSsim : torch::autograd::Function<CpuSsim> {
   }
 };
 
-}  // namespace
-
-at::Tensor ssim(const at::Tensor& a, const at::Tensor& b) {
-  check_images(a, b);
-  const bool cpu_kernel = a.device().is_cpu() && b.device().is_cpu() && a.numel() > 0 && !b.requires_grad() &&
-                          (a.scalar_type() == torch::kFloat || a.scalar_type() == torch::kDouble) &&
-                          b.scalar_type() == a.scalar_type();
-  if (!cpu_kernel) return ssim_ops(a, b);
-  if (a.requires_grad() && at::GradMode::is_enabled()) return CpuSsim::apply(a, b);
-  return cpu_ssim_forward(a.contiguous(), b.contiguous(), at::Tensor());
-}
-
-at::Tensor ssim_ops(const at::Tensor& a, const at::Tensor& b) {
-  check_images(a, b);
+// ssim_ops after its shape check.
+at::Tensor ssim_from_ops(const at::Tensor& a, const at::Tensor& b) {
   const int64_t channels = a.size(2);
   const at::Tensor w1 = ssim_window_1d(a.scalar_type()).to(a.device());
   // The window is separable and the padding zero, so a 1 x 11 pass then an 11 x 1 pass equal the
@@ -95,9 +86,26 @@ at::Tensor ssim_ops(const at::Tensor& a, const at::Tensor& b) {
   const at::Tensor sigma_x2 = m[2] - mu_x2;
   const at::Tensor sigma_y2 = m[3] - mu_y2;
   const at::Tensor sigma_xy = m[4] - mu_xy;
-  constexpr double C1 = 0.01 * 0.01, C2 = 0.03 * 0.03;
+  constexpr double C1 = kSsimC1, C2 = kSsimC2;
   const at::Tensor map = ((2 * mu_xy + C1) * (2 * sigma_xy + C2)) / ((mu_x2 + mu_y2 + C1) * (sigma_x2 + sigma_y2 + C2));
   return map.mean();
+}
+
+}  // namespace
+
+at::Tensor ssim(const at::Tensor& a, const at::Tensor& b) {
+  check_images(a, b);
+  const bool cpu_kernel = a.device().is_cpu() && b.device().is_cpu() && a.numel() > 0 && !b.requires_grad() &&
+                          (a.scalar_type() == torch::kFloat || a.scalar_type() == torch::kDouble) &&
+                          b.scalar_type() == a.scalar_type();
+  if (!cpu_kernel) return ssim_from_ops(a, b);
+  if (a.requires_grad() && at::GradMode::is_enabled()) return CpuSsim::apply(a, b);
+  return cpu_ssim_forward(a.contiguous(), b.contiguous(), at::Tensor());
+}
+
+at::Tensor ssim_ops(const at::Tensor& a, const at::Tensor& b) {
+  check_images(a, b);
+  return ssim_from_ops(a, b);
 }
 
 at::Tensor dssim_loss(const at::Tensor& a, const at::Tensor& b) { return 1 - ssim(a, b); }

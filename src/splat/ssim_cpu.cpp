@@ -15,9 +15,8 @@
 namespace cls {
 namespace {
 
-constexpr int kTaps = 11, kRadius = kTaps / 2;
+constexpr int kTaps = kSsimWindow, kRadius = kTaps / 2;
 constexpr int kBand = 32;  // output rows per task: 5 maps x (32 + 10) rows x W stay in L2 at W = 1000
-constexpr double kC1 = 0.01 * 0.01, kC2 = 0.03 * 0.03;
 
 template <class T>
 struct Window {
@@ -61,41 +60,62 @@ struct Band {
 
 int task_count(int H, int C) { return C * ((H + kBand - 1) / kBand); }
 
+// The Q maps of one band blurred by the window: horizontal(fill) blurs the halo rows, fill(r, rows) writing
+// row r of each map into rows[q] (W values; the 5 zeros on each side stay), then vertical(y, m) gives the
+// blurred maps at output row y (Q x W into m).
+template <class T>
+class BandBlur {
+ public:
+  static constexpr int kMaxMaps = 5;
+  BandBlur(const Band& band, int H, int W, int Q, const T* w)
+      : band_(band), H_(H), W_(W), Q_(Q), rows_(band.r1 - band.r0), w_(w),
+        hbuf_(static_cast<size_t>(Q) * rows_ * W), pad_(static_cast<size_t>(Q) * (W + 2 * kRadius), T(0)) {}
+  template <class Fill>
+  [[gnu::always_inline]] void horizontal(Fill&& fill) {
+    T* p[kMaxMaps];
+    for (int q = 0; q < Q_; ++q) p[q] = pad_.data() + q * (W_ + 2 * kRadius) + kRadius;
+    for (int r = band_.r0; r < band_.r1; ++r) {
+      fill(r, p);
+      for (int q = 0; q < Q_; ++q) blur_row(p[q] - kRadius, hrow(q, r), W_, w_);
+    }
+  }
+  [[gnu::always_inline]] void vertical(int y, T* m) {
+    for (int q = 0; q < Q_; ++q) blur_column<T>([&](int r) { return hrow(q, r); }, y, H_, m + q * W_, W_, w_);
+  }
+
+ private:
+  T* hrow(int q, int r) { return hbuf_.data() + (static_cast<size_t>(q) * rows_ + (r - band_.r0)) * W_; }
+  Band band_;
+  int H_, W_, Q_, rows_;
+  const T* w_;
+  std::vector<T> hbuf_, pad_;
+};
+
 template <class T>
 [[gnu::always_inline]] inline double forward_band(const T* a, const T* b, int H, int W, int C, T* dm, int task,
                                                   const Window<T>& win) {
   const Band band(task, H);
-  const int rows = band.r1 - band.r0;
-  // horizontal blurs of a, b, a^2, b^2, ab for the halo rows: 5 x rows x W
-  std::vector<T> hbuf(static_cast<size_t>(5) * rows * W), pad(static_cast<size_t>(5) * (W + 2 * kRadius), T(0));
-  for (int r = band.r0; r < band.r1; ++r) {
-    T* p[5];
-    for (int q = 0; q < 5; ++q) p[q] = pad.data() + q * (W + 2 * kRadius) + kRadius;
+  BandBlur<T> blur(band, H, W, 5, win.w);  // a, b, a^2, b^2, ab
+  blur.horizontal([&](int r, T* const* p) {
     const T* ar = a + static_cast<size_t>(r) * W * C + band.c;
     const T* br = b + static_cast<size_t>(r) * W * C + band.c;
     for (int x = 0; x < W; ++x) {
       const T va = ar[static_cast<size_t>(x) * C], vb = br[static_cast<size_t>(x) * C];
       p[0][x] = va, p[1][x] = vb, p[2][x] = va * va, p[3][x] = vb * vb, p[4][x] = va * vb;
     }
-    for (int q = 0; q < 5; ++q)
-      blur_row(p[q] - kRadius, hbuf.data() + (static_cast<size_t>(q) * rows + (r - band.r0)) * W, W, win.w);
-  }
+  });
   std::vector<T> m(static_cast<size_t>(5) * W);
   double sum = 0;
   const size_t plane = static_cast<size_t>(H) * W;
   for (int y = band.y0; y < band.y1; ++y) {
-    for (int q = 0; q < 5; ++q) {
-      const T* hq = hbuf.data() + static_cast<size_t>(q) * rows * W;
-      blur_column<T>([&](int r) { return hq + static_cast<size_t>(r - band.r0) * W; }, y, H, m.data() + q * W, W,
-                     win.w);
-    }
+    blur.vertical(y, m.data());
     const T *mu_a = m.data(), *mu_b = mu_a + W, *e_aa = mu_b + W, *e_bb = e_aa + W, *e_ab = e_bb + W;
     T* d_mu = dm ? dm + (static_cast<size_t>(band.c) * 3) * plane + static_cast<size_t>(y) * W : nullptr;
     T row_sum = 0;
     for (int x = 0; x < W; ++x) {
       const T ma = mu_a[x], mb = mu_b[x], mab = ma * mb;
-      const T A1 = 2 * mab + T(kC1), A2 = 2 * (e_ab[x] - mab) + T(kC2);
-      const T B1 = ma * ma + mb * mb + T(kC1), B2 = (e_aa[x] - ma * ma) + (e_bb[x] - mb * mb) + T(kC2);
+      const T A1 = 2 * mab + T(kSsimC1), A2 = 2 * (e_ab[x] - mab) + T(kSsimC2);
+      const T B1 = ma * ma + mb * mb + T(kSsimC1), B2 = (e_aa[x] - ma * ma) + (e_bb[x] - mb * mb) + T(kSsimC2);
       const T D = B1 * B2, s = (A1 * A2) / D;
       row_sum += s;
       if (d_mu) {  // ds/dmu_a, ds/dE[a^2], ds/dE[ab] (dividing by D only, as the map itself)
@@ -113,22 +133,17 @@ template <class T>
 [[gnu::always_inline]] inline void backward_band(const T* a, const T* b, const T* dm, int H, int W, int C, T g,
                                                  T* grad, int task, const Window<T>& win) {
   const Band band(task, H);
-  const int rows = band.r1 - band.r0;
   const size_t plane = static_cast<size_t>(H) * W;
-  std::vector<T> hbuf(static_cast<size_t>(3) * rows * W), pad(W + 2 * kRadius, T(0));
-  for (int k = 0; k < 3; ++k)
-    for (int r = band.r0; r < band.r1; ++r) {
+  BandBlur<T> blur(band, H, W, 3, win.w);  // the three derivative planes of this channel
+  blur.horizontal([&](int r, T* const* p) {
+    for (int k = 0; k < 3; ++k) {
       const T* src = dm + (static_cast<size_t>(band.c) * 3 + k) * plane + static_cast<size_t>(r) * W;
-      std::copy(src, src + W, pad.begin() + kRadius);
-      blur_row(pad.data(), hbuf.data() + (static_cast<size_t>(k) * rows + (r - band.r0)) * W, W, win.w);
+      std::copy(src, src + W, p[k]);
     }
+  });
   std::vector<T> m(static_cast<size_t>(3) * W);
   for (int y = band.y0; y < band.y1; ++y) {
-    for (int k = 0; k < 3; ++k) {
-      const T* hk = hbuf.data() + static_cast<size_t>(k) * rows * W;
-      blur_column<T>([&](int r) { return hk + static_cast<size_t>(r - band.r0) * W; }, y, H, m.data() + k * W, W,
-                     win.w);
-    }
+    blur.vertical(y, m.data());
     const size_t row = static_cast<size_t>(y) * W * C + band.c;
     for (int x = 0; x < W; ++x) {
       const size_t i = row + static_cast<size_t>(x) * C;
@@ -173,7 +188,7 @@ std::pair<ForwardFn<T>, BackwardFn<T>> band_kernels() {
 
 }  // namespace
 
-std::array<double, 11> ssim_window_taps() {
+std::array<double, kSsimWindow> ssim_window_taps() {
   constexpr double kSigma = 1.5;
   std::array<double, kTaps> w{};
   double sum = 0;

@@ -7,8 +7,11 @@
 
 namespace cls {
 
+constexpr int kSsimWindow = 11;                                   // taps of the 1-D window
+constexpr double kSsimC1 = 0.01 * 0.01, kSsimC2 = 0.03 * 0.03;  // for a dynamic range of 1
+
 // The normalised 1-D window: w[i] = exp(-(i - 5)^2 / (2 sigma^2)) / sum, i = 0..10.
-std::array<double, 11> ssim_window_taps();
+std::array<double, kSsimWindow> ssim_window_taps();
 
 // Mean SSIM of a and b (H x W x C, channel-last, contiguous). When dmoments is not null it receives, per
 // channel c and pixel p, the derivatives of SSIM(p) with respect to the local moments mu_a, E[a^2] and

@@ -90,9 +90,15 @@ TEST(Ssim, GradientMatchesFiniteDifferences) {
 
 // The CPU kernels work in bands of rows with a halo: images taller than several bands, odd sizes, in
 // every instruction-set build, against the LibTorch-op form (value and gradient of the first image).
+// Restores the kernels in use when a test that forces a build ends, also on a failed assertion.
+struct RestoreCpuKernels {
+  cls::CpuKernels initial = cls::cpu_kernels();
+  ~RestoreCpuKernels() { cls::set_cpu_kernels(initial); }
+};
+
 TEST(Ssim, CpuKernelsEqualTheOpsAcrossBandsInEveryBuild) {
   torch::manual_seed(4);
-  const cls::CpuKernels initial = cls::cpu_kernels();
+  const RestoreCpuKernels restore;
   for (const cls::CpuKernels k : cls::available_cpu_kernels()) {
     cls::set_cpu_kernels(k);
     for (const auto dtype : {torch::kFloat64, torch::kFloat32}) {
@@ -101,6 +107,7 @@ TEST(Ssim, CpuKernelsEqualTheOpsAcrossBandsInEveryBuild) {
       const at::Tensor b = (a0 + 0.3 * torch::randn_like(a0)).clamp(0, 1);
       const at::Tensor a = a0.clone().requires_grad_(true), a_ops = a0.clone().requires_grad_(true);
       const at::Tensor s = cls::ssim(a, b), s_ops = cls::ssim_ops(a_ops, b);
+      ASSERT_NE(s.grad_fn()->name().find("CpuSsim"), std::string::npos) << s.grad_fn()->name();  // the kernels ran
       EXPECT_NEAR(s.item<double>(), s_ops.item<double>(), dbl ? 1e-13 : 2e-6) << cls::cpu_kernels_name(k);
       (3.0 * s).backward();
       (3.0 * s_ops).backward();
@@ -112,7 +119,26 @@ TEST(Ssim, CpuKernelsEqualTheOpsAcrossBandsInEveryBuild) {
       EXPECT_EQ(cls::ssim(a0, b).item<double>(), s.item<double>());
     }
   }
-  cls::set_cpu_kernels(initial);
+}
+
+// Narrower than the window, four channels, the first image a non-contiguous view.
+TEST(Ssim, CpuKernelsTakeSmallNonContiguousImages) {
+  torch::manual_seed(6);
+  const at::Tensor planar = torch::rand({4, 7, 5}, torch::kFloat64);
+  const at::Tensor b = torch::rand({7, 5, 4}, torch::kFloat64);
+  const at::Tensor a = planar.permute({1, 2, 0}).requires_grad_(true);
+  ASSERT_FALSE(a.is_contiguous());
+  const at::Tensor a_ops = a.detach().clone().requires_grad_(true);
+  const at::Tensor s = cls::ssim(a, b);
+  ASSERT_NE(s.grad_fn()->name().find("CpuSsim"), std::string::npos);
+  EXPECT_NEAR(s.item<double>(), reference_ssim(a.detach(), b), 1e-12);
+  s.backward();
+  cls::ssim_ops(a_ops, b).backward();
+  EXPECT_LT((a.grad() - a_ops.grad()).abs().max().item<double>(), 1e-12);
+  // no second derivative from the kernels: an error, not a silent zero
+  const at::Tensor a2 = torch::rand({9, 8, 3}, torch::kFloat64).requires_grad_(true);
+  const at::Tensor s2 = cls::ssim(a2, torch::rand({9, 8, 3}, torch::kFloat64));
+  EXPECT_THROW(torch::autograd::grad({s2}, {a2}, {}, /*retain_graph=*/true, /*create_graph=*/true), std::exception);
 }
 
 // A differentiable target takes the LibTorch-op form: both images get their gradient.
