@@ -199,7 +199,7 @@ print("\n".join(md))
 W, H, pad = 300, 220, 40
 colours = {"LangSplat": "#888888", "ours": "#d62728", "ours+align": "#1f77b4"}
 dashes = ["", "6,4", "2,3", "8,3,2,3"]
-panels = [r[0] for r in rows_a] or sorted({r[0] for r in rows_b})
+panels = [r[0] for r in rows_a] or list(dict.fromkeys(r[0] for r in rows_b))  # the buildings' order, then the mean
 svg = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{W * len(panels)}" height="{H + 40}" font-family="sans-serif" font-size="11">']
 X = lambda x0, k: x0 + pad + k * (W - 2 * pad) / max(1, len(errors) - 1)
 for i, b in enumerate(panels):
