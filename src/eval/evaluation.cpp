@@ -391,8 +391,11 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
     const Scores3d s3 = score_matched(matching, centre_labels, K);
     // What these Gaussians allow: the labelling that gets the most matched GT points right.
     const Scores3d best = score_matched(matching, best_centre_labels(matching, K), K);
-    nlohmann::json per_class = nlohmann::json::object();
-    for (int k = 0; k < K; ++k) per_class[ec.names[k].get<std::string>()] = scores_json(s3.scores.per_class[size_t(k)]);
+    auto per_class_of = [&](const Scores3d& s) {
+      nlohmann::json per_class = nlohmann::json::object();
+      for (int k = 0; k < K; ++k) per_class[ec.names[k].get<std::string>()] = scores_json(s.scores.per_class[size_t(k)]);
+      return per_class;
+    };
     return nlohmann::json{{"coverage", s3.coverage},
                           {"mean_distance", s3.mean_distance},
                           {"miou", s3.scores.miou},
@@ -403,10 +406,13 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
                           {"matched", s3.matched},
                           {"gaussians", N},
                           {"levels", levels_3d},
-                          {"per_class", per_class},
+                          {"per_class", per_class_of(s3)},
                           {"confusion", confusion_json(s3.confusion)},
                           {"best_labelling",
-                           {{"miou", best.scores.miou}, {"wiou", best.scores.wiou}, {"accuracy", best.scores.accuracy}}}};
+                           {{"miou", best.scores.miou},
+                            {"wiou", best.scores.wiou},
+                            {"accuracy", best.scores.accuracy},
+                            {"per_class", per_class_of(best)}}}};
   };
   // The paper's 3D scores use every GT point; a synthetic cloud also samples surfaces no view sees
   // (e.g. a building's ground surface), whose Gaussians no loss reaches: "3d_visible" keeps the GT

@@ -210,6 +210,13 @@ TEST(Evaluation, SwappedClassesScoreLow) {
     EXPECT_DOUBLE_EQ(bad[group]["best_labelling"]["miou"].get<double>(), best["miou"].get<double>()) << group;
     EXPECT_GE(best["accuracy"].get<double>(), good[group]["accuracy"].get<double>()) << group;
     EXPECT_GE(best["accuracy"].get<double>(), bad[group]["accuracy"].get<double>()) << group;
+    // per class too (what separates a class the Gaussians lose from one the field loses)
+    ASSERT_EQ(best["per_class"].size(), good[group]["per_class"].size()) << group;
+    for (const auto& [name, scores] : best["per_class"].items())
+      EXPECT_DOUBLE_EQ(bad[group]["best_labelling"]["per_class"][name]["iou"].get<double>(), scores["iou"].get<double>())
+          << group << " " << name;
+    EXPECT_LT(bad[group]["per_class"]["roof"]["iou"].get<double>(), best["per_class"]["roof"]["iou"].get<double>() - 0.3)
+        << group;
   }
 }
 
