@@ -1,7 +1,8 @@
-// CPU SSIM: see ssim_cpu.h. Hand-written because LibTorch's CPU grouped convolutions were a sixth of a
-// training iteration (forward and backward of the five moment maps, each a full-image tensor; a profile
-// is in docs/benchmarks.md). Here each task takes one channel and a band of rows with its 5-row halo, so
-// the blurred rows stay in cache, and the forward leaves only three derivative planes for the backward.
+// CPU SSIM: see ssim_cpu.h. Hand-written because LibTorch's CPU grouped convolutions were about a third
+// of a training iteration (30 of 93 ms on the compare scene: forward and backward of the five moment maps,
+// each a full-image tensor; docs/benchmarks.md). Here each task takes one channel and a band of rows with
+// its 5-row halo, so the blurred rows stay in cache, and the forward leaves only three derivative planes
+// for the backward.
 #include "splat/ssim_cpu.h"
 
 #include <omp.h>
