@@ -5,7 +5,11 @@
 # Steps: splat_tests (the CUDA rasterizer against the CPU path), models_tests (CLIP/SAM fixture parity
 # on CUDA), bench_* (rasterizer, CLIP, language field, SAM AMG on the GPU), run (`run --models tiny` on
 # the bundled example), train_rgb (densification, the cap and resuming on the GPU), suite (every test
-# program carried, 16 at a time, one OpenMP thread each).
+# program carried, 16 at a time, one OpenMP thread each), profile_splat / profile_language (every
+# kernel's duration under Nsight Compute: one photometric and 128-channel iteration at 1M Gaussians,
+# 1600x1000; one language iteration at 200k, 800x600 and a 1080p relevance map; $OUT/ncu_*.csv).
+# GPU_LIB_OVERRIDE=DIR: libraries in DIR (e.g. an earlier commit's libcls.so) load before the build's,
+# so one call can time before and after on the same machine.
 set -uo pipefail
 ROOT=$PWD
 LOG=${OUT:-/tmp}/gpu.log
@@ -18,7 +22,8 @@ mkdir -p "$(dirname "$SRC")" "$(dirname "$BLD")"
 if [ -e "$BLD" ] && [ ! -L "$BLD" ]; then echo "gpu_checks: $BLD exists and is not a link: cannot place the build there" >&2; exit 1; fi
 ln -sfn /tmp/gpu/build "$BLD"
 TORCH=$(cd / && python3 -c 'import torch, os; print(os.path.dirname(torch.__file__))')
-export LD_LIBRARY_PATH=$BLD:/tmp/gpu/lib:$TORCH/lib:$TORCH/../nvidia/cu13/lib:/usr/local/cuda/lib64
+export LD_LIBRARY_PATH=${GPU_LIB_OVERRIDE:+$GPU_LIB_OVERRIDE:}$BLD:/tmp/gpu/lib:$TORCH/lib:$TORCH/../nvidia/cu13/lib:/usr/local/cuda/lib64
+[ -z "${GPU_LIB_OVERRIDE:-}" ] || { echo; echo "=== GPU_LIB_OVERRIDE=$GPU_LIB_OVERRIDE: $(cd "$GPU_LIB_OVERRIDE" && ls)"; } >> "$LOG"
 B=$BLD
 SUMMARY=()
 make_example() {  # the bundled example scene in /tmp/example, once per call
@@ -56,9 +61,9 @@ while [ $# -gt 0 ]; do
 done
 [ ${#steps[@]} -gt 0 ] || [ ${#debug[@]} -gt 0 ] || steps=("${ALL[@]}")
 for s in "${steps[@]}"; do
-  case " ${ALL[*]} train_rgb suite " in
+  case " ${ALL[*]} train_rgb suite profile_splat profile_language " in
     *" $s "*) ;;
-    *) echo "gpu_checks: unknown step $s (steps: ${ALL[*]} train_rgb suite)" >&2; exit 2 ;;
+    *) echo "gpu_checks: unknown step $s (steps: ${ALL[*]} train_rgb suite profile_splat profile_language)" >&2; exit 2 ;;
   esac
 done
 for s in "${steps[@]}"; do
@@ -104,6 +109,15 @@ for s in "${steps[@]}"; do
       step train_rgb_compare 120 "$B/citylangsplat" train-rgb --scene /tmp/compare --out /tmp/rgb_compare --iterations 600 \
         -r 1 --densify-from 500 --densify-until 300 --checkpoint-every 0 --device cuda
       for d in rgb rgb_cap rgb_resume rgb_compare; do echo "== $d"; cat /tmp/$d/summary.json; done >> "$LOG" 2>&1 ;;
+    profile_splat | profile_language)  # each kernel's duration (Nsight Compute), one CSV row per launch
+      NCU=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+      if [ "$s" = profile_splat ]; then
+        args=(bench/bench_splat --device cuda --threads 16 --gaussians 1000000 --width 1600 --height 1000 --iters 1)
+      else
+        args=(bench/bench_language --device cuda --threads 16 --repeats 1 --train-scenes 200000@800x600 --query-scene 200000@1920x1080)
+      fi
+      step "$s" 240 "$NCU" --clock-control none --metrics gpu__time_duration.sum --csv --log-file "${OUT:-/tmp}/ncu_$s.csv" \
+        "$B/${args[0]}" "${args[@]:1}" ;;
     suite)  # in the build folder, as ctest runs them; one row per test program in the log
       step "$s" 500 sh -c 'cd "$1" && for t in ./test_*; do echo "$t"; done | OMP_NUM_THREADS=1 xargs -P 16 -I{} sh -c \
         "{} --gtest_brief=1 > /tmp/\$(basename {}).log 2>&1; echo \"\$(basename {}) rc=\$?\""' suite "$B"

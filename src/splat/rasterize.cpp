@@ -6,6 +6,7 @@
 #include "splat/rasterize_cpu.h"
 
 #ifdef CLS_WITH_CUDA
+#include <c10/cuda/CUDACachingAllocator.h>
 #include <c10/cuda/CUDAStream.h>
 
 #include "splat/rasterize_cuda.h"
@@ -46,6 +47,17 @@ struct CudaSavedState {
   SplatCamera<float> cam;
 };
 
+// LibTorch's caching allocator for the rasterizer's buffers (rasterize_cuda.h, CudaAllocator).
+void* torch_cuda_alloc(size_t bytes, void* stream) {
+  try {
+    return c10::cuda::CUDACachingAllocator::raw_alloc_with_stream(bytes, static_cast<cudaStream_t>(stream));
+  } catch (const c10::Error&) {
+    return nullptr;  // out of memory: the rasterizer reports cudaErrorMemoryAllocation
+  }
+}
+
+void torch_cuda_free(void* p) { c10::cuda::CUDACachingAllocator::raw_delete(p); }
+
 CudaSplatArgs cuda_args(const SplatCamera<float>& cam, const at::Tensor& means, const at::Tensor& scales,
                         const at::Tensor& quats, const at::Tensor& opacities, const at::Tensor& values, int sh_degree,
                         const at::Tensor& background) {
@@ -60,6 +72,8 @@ CudaSplatArgs cuda_args(const SplatCamera<float>& cam, const at::Tensor& means, 
     a.features = values.data_ptr<float>(), a.channels = static_cast<int>(values.size(1));
   }
   a.background = background.defined() ? background.data_ptr<float>() : nullptr;
+  a.allocator.alloc = torch_cuda_alloc;
+  a.allocator.free = torch_cuda_free;
   return a;
 }
 
@@ -138,11 +152,15 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
 #ifdef CLS_WITH_CUDA
       const auto& saved_state = *static_cast<const CudaSavedState*>(state_ptr);
       const CudaSplatArgs a = cuda_args(saved_state.cam, means, scales, quats, opacities, values, sh_degree, bg);
+      // Only what is asked for: without geometry gradients (a language field on frozen Gaussians) the
+      // kernels skip the per-pixel alpha gradient.
+      auto wanted = [&](size_t input, at::Tensor& t) { return ctx->needs_input_grad(input) ? t.data_ptr<float>() : nullptr; };
       CudaSplatGrads g;
-      g.means = d_means.data_ptr<float>(), g.scales = d_scales.data_ptr<float>(), g.quats = d_quats.data_ptr<float>();
-      g.opacities = d_opac.data_ptr<float>();
-      (sh_degree >= 0 ? g.sh : g.features) = d_values.data_ptr<float>();
-      g.mean2d = d_mean2d.data_ptr<float>(), g.mean2d_abs = d_abs.data_ptr<float>();
+      g.means = wanted(0, d_means), g.scales = wanted(1, d_scales), g.quats = wanted(2, d_quats);
+      g.opacities = wanted(3, d_opac);
+      (sh_degree >= 0 ? g.sh : g.features) = wanted(4, d_values);
+      g.mean2d = ctx->saved_data["has_means2d"].toBool() ? wanted(5, d_mean2d) : nullptr;
+      g.mean2d_abs = abs_grad.defined() ? d_abs.data_ptr<float>() : nullptr;
       auto ptr = [](const at::Tensor& t) -> const float* { return t.defined() ? t.data_ptr<float>() : nullptr; };
       check_cuda(rasterize_backward_cuda(a, *saved_state.state, ptr(g_image), ptr(g_alpha), ptr(g_depth), g,
                                          c10::cuda::getCurrentCUDAStream().stream()),

@@ -3,12 +3,21 @@
 // The kernels (rasterize_forward.cu) use the same per-Gaussian and per-pixel math as the CPU path
 // (project_gaussian.h, blend_pixel.h, sh.h) and the same order of blending (per tile, by depth, ties
 // by Gaussian index), so CPU and GPU agree up to float rounding of exp.
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 
 #include "splat/project_gaussian.h"
 
 namespace cls {
+
+// Device memory for the rasterizer's own buffers. A torch build passes LibTorch's caching allocator
+// (rasterize.cpp), so that an iteration reuses the last one's memory in stream order instead of paying
+// cudaMalloc and cudaFree, which waits for the device; null functions fall back to those two.
+struct CudaAllocator {
+  void* (*alloc)(size_t bytes, void* stream) = nullptr;  // null when out of memory
+  void (*free)(void* p) = nullptr;
+};
 
 // Every pointer is device memory, layouts as SplatInputs (rasterize_cpu.h); outputs H x W x C image,
 // H x W alpha and depth.
@@ -27,6 +36,7 @@ struct CudaSplatArgs {
   float* image = nullptr;
   float* alpha = nullptr;
   float* depth = nullptr;
+  CudaAllocator allocator;
 };
 
 // Device buffers of one forward pass (projections, sorted tile lists, per-pixel final T and
@@ -42,7 +52,9 @@ using CudaForwardStatePtr = std::unique_ptr<CudaForwardState, CudaForwardStateDe
 int rasterize_forward_cuda(const CudaSplatArgs& args, CudaForwardStatePtr& state, void* stream = nullptr);
 
 // Gradients of the backward pass, device memory, zero-initialised by the caller; shapes as the inputs
-// (sh or features by the path of the forward), mean2d and mean2d_abs N x 2. Null entries are skipped.
+// (sh or features by the path of the forward), mean2d and mean2d_abs N x 2. Null entries are skipped;
+// when every entry but sh/features is null (a language field on frozen geometry), the per-pixel alpha
+// gradient is not computed at all.
 struct CudaSplatGrads {
   float* means = nullptr;
   float* scales = nullptr;
@@ -56,8 +68,8 @@ struct CudaSplatGrads {
 
 // Backward of the forward that produced `state` with the same `args` (its output pointers are not
 // read). dL_dimage H x W x C; dL_dalpha, dL_ddepth H x W or null. The math is the CPU path's (shared
-// headers); the scheduling is the original's (per-pixel backward walk, atomic accumulation), written
-// for correctness first: not yet optimised for many channels.
+// headers); the scheduling is the original's (per-pixel backward walk, sums over each warp, atomic
+// accumulation).
 int rasterize_backward_cuda(const CudaSplatArgs& args, const CudaForwardState& state, const float* dL_dimage,
                             const float* dL_dalpha, const float* dL_ddepth, const CudaSplatGrads& grads,
                             void* stream = nullptr);

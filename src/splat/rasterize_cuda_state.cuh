@@ -5,10 +5,12 @@
 #include <cstdint>
 
 #include "splat/project_gaussian.h"
+#include "splat/rasterize_cuda.h"
 
 namespace cls {
 
 struct CudaForwardState {
+  CudaAllocator allocator;  // what the buffers below came from
   int n = 0, width = 0, height = 0, channels = 0;
   int64_t instances = 0;
   ProjectedGaussian<float>* proj = nullptr;  // N
@@ -23,5 +25,26 @@ struct CudaForwardState {
 };
 
 constexpr int kCudaBlock = kTileSize * kTileSize;
+
+// count elements of T (at least one) from the caller's allocator, or cudaMalloc without one.
+template <class T>
+cudaError_t device_alloc(const CudaAllocator& al, T** p, size_t count, cudaStream_t stream) {
+  const size_t bytes = sizeof(T) * (count > 0 ? count : 1);
+  if (!al.alloc) return cudaMalloc(reinterpret_cast<void**>(p), bytes);
+  *p = static_cast<T*>(al.alloc(bytes, stream));
+  return *p ? cudaSuccess : cudaErrorMemoryAllocation;
+}
+
+// Frees what device_alloc gave: the caching allocator reuses it in stream order; without one the
+// device is drained first, since work queued on any stream may still read it.
+inline void device_free(const CudaAllocator& al, void* p) {
+  if (!p) return;
+  if (al.free) {
+    al.free(p);
+  } else {
+    cudaDeviceSynchronize();
+    cudaFree(p);
+  }
+}
 
 }  // namespace cls

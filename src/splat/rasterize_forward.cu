@@ -17,7 +17,7 @@ void CudaForwardStateDeleter::operator()(CudaForwardState* s) const {
   if (!s) return;
   for (void* p : {(void*)s->proj, (void*)s->colors, (void*)s->clamped, (void*)s->tiles_touched, (void*)s->keys,
                   (void*)s->ids, (void*)s->ranges, (void*)s->final_T, (void*)s->n_contrib})
-    if (p) cudaFree(p);
+    device_free(s->allocator, p);
   delete s;
 }
 
@@ -98,10 +98,12 @@ __global__ void __launch_bounds__(kBlock) render_kernel(RenderArgs r) {
   const bool inside = px < r.width && py < r.height;
   const float cx = px + 0.5f, cy = py + 0.5f;  // pixel centre (docs/conventions.md)
   const uint2 range = r.ranges[tile];
+  // each Gaussian's values as 16-byte loads where every row starts 16-byte aligned
+  const bool vector_values = r.channels % 4 == 0 && reinterpret_cast<uintptr_t>(r.values) % 16 == 0;
   __shared__ float s_mean[kBlock][2];
   __shared__ float s_conic[kBlock][3];
   __shared__ float s_op[kBlock], s_cut[kBlock], s_depth[kBlock];
-  __shared__ float s_val[kBlock * CHUNK];
+  __shared__ __align__(16) float s_val[kBlock * CHUNK];
   bool done = !inside;
   float T = 1.f, d = 0.f, acc[CHUNK];
   for (int c = 0; c < CHUNK; ++c) acc[c] = 0.f;
@@ -118,8 +120,13 @@ __global__ void __launch_bounds__(kBlock) render_kernel(RenderArgs r) {
       s_op[tid] = r.opacities[id];
       s_cut[tid] = alpha_cutoff_power(s_op[tid]);
       s_depth[tid] = p.depth;
-      for (int c = 0; c < CHUNK; ++c)
-        s_val[tid * CHUNK + c] = c0 + c < r.channels ? r.values[static_cast<size_t>(id) * r.channels + c0 + c] : 0.f;
+      const float* v = r.values + static_cast<size_t>(id) * r.channels + c0;
+      if (CHUNK % 4 == 0 && vector_values && c0 + CHUNK <= r.channels) {
+        for (int q = 0; q < CHUNK / 4; ++q)
+          reinterpret_cast<float4*>(s_val + tid * CHUNK)[q] = __ldg(reinterpret_cast<const float4*>(v) + q);
+      } else {
+        for (int c = 0; c < CHUNK; ++c) s_val[tid * CHUNK + c] = c0 + c < r.channels ? v[c] : 0.f;
+      }
     }
     __syncthreads();
     const int batch = min(kBlock, total - start);
@@ -136,7 +143,16 @@ __global__ void __launch_bounds__(kBlock) render_kernel(RenderArgs r) {
         continue;
       }
       const float w = a * T;
-      for (int c = 0; c < CHUNK; ++c) acc[c] += w * s_val[j * CHUNK + c];
+      if constexpr (CHUNK % 4 == 0) {  // one 16-byte shared load per four channels
+        const float4* v4 = reinterpret_cast<const float4*>(s_val + j * CHUNK);
+#pragma unroll
+        for (int q = 0; q < CHUNK / 4; ++q) {
+          const float4 v = v4[q];
+          acc[4 * q] += w * v.x, acc[4 * q + 1] += w * v.y, acc[4 * q + 2] += w * v.z, acc[4 * q + 3] += w * v.w;
+        }
+      } else {
+        for (int c = 0; c < CHUNK; ++c) acc[c] += w * s_val[j * CHUNK + c];
+      }
       d += w * s_depth[j];
       T = test_T;
       last = contributor;
@@ -160,11 +176,6 @@ void launch_render(const RenderArgs& r, int tiles_y, cudaStream_t stream) {
   render_kernel<CHUNK><<<grid, block, 0, stream>>>(r);
 }
 
-template <class T>
-cudaError_t alloc(T** p, size_t count) {
-  return cudaMalloc(reinterpret_cast<void**>(p), sizeof(T) * (count > 0 ? count : 1));
-}
-
 #define CLS_CUDA_TRY(expr)             \
   do {                                 \
     const cudaError_t e_ = (expr);     \
@@ -177,19 +188,21 @@ int rasterize_forward_cuda(const CudaSplatArgs& a, CudaForwardStatePtr& state, v
   const cudaStream_t stream = static_cast<cudaStream_t>(stream_ptr);
   state.reset(new CudaForwardState());
   CudaForwardState& s = *state;
+  const CudaAllocator& al = a.allocator;
+  s.allocator = al;
   const int C = a.sh ? 3 : a.channels;
   s.n = a.n, s.width = a.cam.width, s.height = a.cam.height, s.channels = C;
   const int tiles_x = a.cam.tiles_x(), tiles_y = a.cam.tiles_y(), n_tiles = tiles_x * tiles_y;
   const size_t n_pix = static_cast<size_t>(a.cam.width) * a.cam.height;
-  CLS_CUDA_TRY(alloc(&s.proj, a.n));
-  CLS_CUDA_TRY(alloc(&s.tiles_touched, a.n));
+  CLS_CUDA_TRY(device_alloc(al, &s.proj, a.n, stream));
+  CLS_CUDA_TRY(device_alloc(al, &s.tiles_touched, a.n, stream));
   if (a.sh) {
-    CLS_CUDA_TRY(alloc(&s.colors, 3 * static_cast<size_t>(a.n)));
-    CLS_CUDA_TRY(alloc(&s.clamped, 3 * static_cast<size_t>(a.n)));
+    CLS_CUDA_TRY(device_alloc(al, &s.colors, 3 * static_cast<size_t>(a.n), stream));
+    CLS_CUDA_TRY(device_alloc(al, &s.clamped, 3 * static_cast<size_t>(a.n), stream));
   }
-  CLS_CUDA_TRY(alloc(&s.ranges, n_tiles));
-  CLS_CUDA_TRY(alloc(&s.final_T, n_pix));
-  CLS_CUDA_TRY(alloc(&s.n_contrib, n_pix));
+  CLS_CUDA_TRY(device_alloc(al, &s.ranges, n_tiles, stream));
+  CLS_CUDA_TRY(device_alloc(al, &s.final_T, n_pix, stream));
+  CLS_CUDA_TRY(device_alloc(al, &s.n_contrib, n_pix, stream));
   const int threads = 256;
   const int blocks_n = (a.n + threads - 1) / threads;
   if (a.n > 0) {
@@ -198,12 +211,12 @@ int rasterize_forward_cuda(const CudaSplatArgs& a, CudaForwardStatePtr& state, v
     // inclusive prefix sum of the tile counts, in place
     size_t temp_bytes = 0;
     CLS_CUDA_TRY(cub::DeviceScan::InclusiveSum(nullptr, temp_bytes, s.tiles_touched, s.tiles_touched, a.n, stream));
-    void* temp = nullptr;
-    CLS_CUDA_TRY(cudaMalloc(&temp, temp_bytes));
+    uint8_t* temp = nullptr;
+    CLS_CUDA_TRY(device_alloc(al, &temp, temp_bytes, stream));
     const cudaError_t scan = cub::DeviceScan::InclusiveSum(temp, temp_bytes, s.tiles_touched, s.tiles_touched, a.n, stream);
-    cudaFree(temp);
+    device_free(al, temp);
     CLS_CUDA_TRY(scan);
-    uint32_t m = 0;
+    uint32_t m = 0;  // the one wait of the pass: the host sizes the sort by it
     CLS_CUDA_TRY(cudaMemcpyAsync(&m, s.tiles_touched + a.n - 1, sizeof(m), cudaMemcpyDeviceToHost, stream));
     CLS_CUDA_TRY(cudaStreamSynchronize(stream));
     s.instances = m;
@@ -213,26 +226,30 @@ int rasterize_forward_cuda(const CudaSplatArgs& a, CudaForwardStatePtr& state, v
     const int m = static_cast<int>(s.instances);
     uint64_t* keys_unsorted = nullptr;
     uint32_t* ids_unsorted = nullptr;
-    CLS_CUDA_TRY(alloc(&keys_unsorted, m));
-    CLS_CUDA_TRY(alloc(&ids_unsorted, m));
-    CLS_CUDA_TRY(alloc(&s.keys, m));
-    CLS_CUDA_TRY(alloc(&s.ids, m));
-    duplicate_kernel<<<blocks_n, threads, 0, stream>>>(a.n, s.proj, s.tiles_touched, tiles_x, keys_unsorted, ids_unsorted);
-    CLS_CUDA_TRY(cudaGetLastError());
+    CLS_CUDA_TRY(device_alloc(al, &s.keys, m, stream));
+    CLS_CUDA_TRY(device_alloc(al, &s.ids, m, stream));
+    cudaError_t err = device_alloc(al, &keys_unsorted, m, stream);
+    if (err == cudaSuccess) err = device_alloc(al, &ids_unsorted, m, stream);
+    if (err == cudaSuccess) {
+      duplicate_kernel<<<blocks_n, threads, 0, stream>>>(a.n, s.proj, s.tiles_touched, tiles_x, keys_unsorted,
+                                                         ids_unsorted);
+      err = cudaGetLastError();
+    }
     int tile_bits = 1;
     while ((1 << tile_bits) < n_tiles) ++tile_bits;
     size_t temp_bytes = 0;
-    CLS_CUDA_TRY(cub::DeviceRadixSort::SortPairs(nullptr, temp_bytes, keys_unsorted, s.keys, ids_unsorted, s.ids, m, 0,
-                                                 32 + tile_bits, stream));
-    void* temp = nullptr;
-    CLS_CUDA_TRY(cudaMalloc(&temp, temp_bytes));
-    const cudaError_t sorted = cub::DeviceRadixSort::SortPairs(temp, temp_bytes, keys_unsorted, s.keys, ids_unsorted,
-                                                               s.ids, m, 0, 32 + tile_bits, stream);
-    CLS_CUDA_TRY(cudaStreamSynchronize(stream));
-    cudaFree(temp);
-    cudaFree(keys_unsorted);
-    cudaFree(ids_unsorted);
-    CLS_CUDA_TRY(sorted);
+    if (err == cudaSuccess)
+      err = cub::DeviceRadixSort::SortPairs(nullptr, temp_bytes, keys_unsorted, s.keys, ids_unsorted, s.ids, m, 0,
+                                            32 + tile_bits, stream);
+    uint8_t* temp = nullptr;
+    if (err == cudaSuccess) err = device_alloc(al, &temp, temp_bytes, stream);
+    if (err == cudaSuccess)
+      err = cub::DeviceRadixSort::SortPairs(temp, temp_bytes, keys_unsorted, s.keys, ids_unsorted, s.ids, m, 0,
+                                            32 + tile_bits, stream);
+    device_free(al, temp);
+    device_free(al, keys_unsorted);
+    device_free(al, ids_unsorted);
+    CLS_CUDA_TRY(err);
     tile_ranges_kernel<<<(m + threads - 1) / threads, threads, 0, stream>>>(m, s.keys, s.ranges);
     CLS_CUDA_TRY(cudaGetLastError());
   }

@@ -41,7 +41,7 @@ CLS_HD void sh_basis(int degree, T x, T y, T z, T* b) {
 // Partial derivatives of the basis with respect to x, y and z (the direction treated as free).
 template <class T>
 CLS_HD void sh_basis_grad(int degree, T x, T y, T z, T* bx, T* by, T* bz) {
-  for (int k = 0; k < sh_coeff_count(degree); ++k) bx[k] = by[k] = bz[k] = T(0);
+  for (int k = 0; k < kMaxShCoeffs; ++k) bx[k] = by[k] = bz[k] = T(0);
   const T C1 = T(0.4886025119029199);
   if (degree < 1) return;
   by[1] = -C1;
@@ -75,11 +75,14 @@ CLS_HD void sh_basis_grad(int degree, T x, T y, T z, T* bx, T* by, T* bz) {
 template <class T>
 CLS_HD void sh_to_rgb(int degree, const T* coeffs, Vec3<T> v, T* rgb, bool* clamped) {
   const Vec3<T> d = normalized(v);
-  T b[kMaxShCoeffs];
+  T b[kMaxShCoeffs] = {};
   sh_basis(degree, d.x, d.y, d.z, b);
+  const int count = sh_coeff_count(degree);
   for (int c = 0; c < 3; ++c) {
     T s = T(0.5);
-    for (int k = 0; k < sh_coeff_count(degree); ++k) s += b[k] * coeffs[3 * k + c];
+    CLS_UNROLL
+    for (int k = 0; k < kMaxShCoeffs; ++k)  // a constant bound: on the GPU b stays in registers
+      if (k < count) s += b[k] * coeffs[3 * k + c];
     clamped[c] = s < T(0);
     rgb[c] = clamped[c] ? T(0) : s;
   }
@@ -97,7 +100,10 @@ CLS_HD Vec3<T> sh_to_rgb_backward(int degree, const T* coeffs, Vec3<T> v, const 
   T g[3];
   for (int c = 0; c < 3; ++c) g[c] = clamped[c] ? T(0) : dL_drgb[c];
   Vec3<T> dL_dd{};
-  for (int k = 0; k < sh_coeff_count(degree); ++k) {
+  const int count = sh_coeff_count(degree);
+  CLS_UNROLL
+  for (int k = 0; k < kMaxShCoeffs; ++k) {  // a constant bound: on the GPU the bases stay in registers
+    if (k >= count) break;
     T s = T(0);
     for (int c = 0; c < 3; ++c) {
       dL_dcoeffs[3 * k + c] += b[k] * g[c];

@@ -9,6 +9,12 @@
 #include "core/error.h"
 #include "splat/ssim_cpu.h"
 
+#ifdef CLS_WITH_CUDA
+#include <c10/cuda/CUDAStream.h>
+
+#include "splat/ssim_cuda.h"
+#endif
+
 namespace cls {
 
 at::Tensor ssim_window_1d(at::ScalarType dtype) {
@@ -26,9 +32,33 @@ void check_images(const at::Tensor& a, const at::Tensor& b) {
                 c10::str(b.sizes()));
 }
 
-// ssim_cpu.h's forward; dm (C x 3 x H x W) receives the moment derivatives when defined.
-at::Tensor cpu_ssim_forward(const at::Tensor& a, const at::Tensor& b, const at::Tensor& dm) {
+#ifdef CLS_WITH_CUDA
+void check_cuda(int rc, const char* what) {
+  if (rc != 0) throw Error(std::string("ssim: CUDA error ") + std::to_string(rc) + " in " + what);
+}
+
+std::array<float, kSsimWindow> float_taps() {
+  const std::array<double, kSsimWindow> t = ssim_window_taps();
+  std::array<float, kSsimWindow> f{};
+  for (int i = 0; i < kSsimWindow; ++i) f[i] = static_cast<float>(t[i]);
+  return f;
+}
+#endif
+
+// The kernels' forward (ssim_cpu.h, or ssim_cuda.h for CUDA tensors) of contiguous images; dm
+// (C x 3 x H x W) receives the moment derivatives when defined. A 0-d tensor on a's device.
+at::Tensor kernel_ssim_forward(const at::Tensor& a, const at::Tensor& b, const at::Tensor& dm) {
   const int H = int(a.size(0)), W = int(a.size(1)), C = int(a.size(2));
+  if (a.is_cuda()) {
+#ifdef CLS_WITH_CUDA
+    at::Tensor map = torch::empty({C, H, W}, a.options()), work = torch::empty({5, C, H, W}, a.options());
+    check_cuda(ssim_forward_cuda(float_taps().data(), a.data_ptr<float>(), b.data_ptr<float>(), H, W, C,
+                                 map.data_ptr<float>(), dm.defined() ? dm.data_ptr<float>() : nullptr,
+                                 work.data_ptr<float>(), c10::cuda::getCurrentCUDAStream().stream()),
+               "forward");
+    return map.mean();
+#endif
+  }
   const double value =
       a.scalar_type() == torch::kDouble
           ? ssim_forward_cpu(a.data_ptr<double>(), b.data_ptr<double>(), H, W, C, dm.defined() ? dm.data_ptr<double>() : nullptr)
@@ -36,29 +66,40 @@ at::Tensor cpu_ssim_forward(const at::Tensor& a, const at::Tensor& b, const at::
   return torch::scalar_tensor(value, a.options());
 }
 
-// ssim_cpu.h's kernels as an autograd function of the first image (the second is the target).
-struct CpuSsim : torch::autograd::Function<CpuSsim> {
+// The kernels as an autograd function of the first image (the second is the target).
+struct SsimKernels : torch::autograd::Function<SsimKernels> {
   static at::Tensor forward(torch::autograd::AutogradContext* ctx, const at::Tensor& a_in, const at::Tensor& b_in) {
     const at::Tensor a = a_in.contiguous(), b = b_in.contiguous();
     const at::Tensor dm = torch::empty({a.size(2), 3, a.size(0), a.size(1)}, a.options());
     ctx->save_for_backward({a, b, dm});
-    return cpu_ssim_forward(a, b, dm);
+    return kernel_ssim_forward(a, b, dm);
   }
   static torch::autograd::variable_list backward(torch::autograd::AutogradContext* ctx,
                                                  torch::autograd::variable_list grad_out) {
     // The gradient is computed by the kernel, not by differentiable ops: no second derivative.
     if (at::GradMode::is_enabled())
-      throw Error("ssim: the CPU kernels give no second derivative (create_graph); use ssim_ops for that");
+      throw Error("ssim: the SSIM kernels give no second derivative (create_graph); use ssim_ops for that");
     const torch::autograd::variable_list saved = ctx->get_saved_variables();
     const at::Tensor &a = saved[0], &b = saved[1], &dm = saved[2];
     const int H = int(a.size(0)), W = int(a.size(1)), C = int(a.size(2));
     at::Tensor grad = torch::empty_like(a);
-    if (a.scalar_type() == torch::kDouble)
+    if (a.is_cuda()) {
+#ifdef CLS_WITH_CUDA
+      // the incoming gradient stays on the device: no wait for it
+      const at::Tensor scale = grad_out[0].to(a.options()).contiguous();
+      at::Tensor work = torch::empty({3, C, H, W}, a.options());
+      check_cuda(ssim_backward_cuda(float_taps().data(), a.data_ptr<float>(), b.data_ptr<float>(), dm.data_ptr<float>(),
+                                    H, W, C, scale.data_ptr<float>(), grad.data_ptr<float>(), work.data_ptr<float>(),
+                                    c10::cuda::getCurrentCUDAStream().stream()),
+                 "backward");
+#endif
+    } else if (a.scalar_type() == torch::kDouble) {
       ssim_backward_cpu(a.data_ptr<double>(), b.data_ptr<double>(), dm.data_ptr<double>(), H, W, C,
                         grad_out[0].item<double>(), grad.data_ptr<double>());
-    else
+    } else {
       ssim_backward_cpu(a.data_ptr<float>(), b.data_ptr<float>(), dm.data_ptr<float>(), H, W, C,
                         grad_out[0].item<float>(), grad.data_ptr<float>());
+    }
     return {grad, at::Tensor()};
   }
 };
@@ -95,12 +136,17 @@ at::Tensor ssim_from_ops(const at::Tensor& a, const at::Tensor& b) {
 
 at::Tensor ssim(const at::Tensor& a, const at::Tensor& b) {
   check_images(a, b);
-  const bool cpu_kernel = a.device().is_cpu() && b.device().is_cpu() && a.numel() > 0 && !b.requires_grad() &&
-                          (a.scalar_type() == torch::kFloat || a.scalar_type() == torch::kDouble) &&
-                          b.scalar_type() == a.scalar_type();
-  if (!cpu_kernel) return ssim_from_ops(a, b);
-  if (a.requires_grad() && at::GradMode::is_enabled()) return CpuSsim::apply(a, b);
-  return cpu_ssim_forward(a.contiguous(), b.contiguous(), at::Tensor());
+  const bool cpu = a.device().is_cpu() && b.device().is_cpu() &&
+                   (a.scalar_type() == torch::kFloat || a.scalar_type() == torch::kDouble);
+#ifdef CLS_WITH_CUDA
+  const bool cuda = a.is_cuda() && b.device() == a.device() && a.scalar_type() == torch::kFloat;
+#else
+  const bool cuda = false;
+#endif
+  const bool kernels = (cpu || cuda) && a.numel() > 0 && !b.requires_grad() && b.scalar_type() == a.scalar_type();
+  if (!kernels) return ssim_from_ops(a, b);
+  if (a.requires_grad() && at::GradMode::is_enabled()) return SsimKernels::apply(a, b);
+  return kernel_ssim_forward(a.contiguous(), b.contiguous(), at::Tensor());
 }
 
 at::Tensor ssim_ops(const at::Tensor& a, const at::Tensor& b) {

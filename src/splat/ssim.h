@@ -11,12 +11,13 @@ namespace cls {
 at::Tensor ssim_window_1d(at::ScalarType dtype);
 
 // Mean SSIM of two H x W x C images (channel-last, the rasterizer's layout) of the same shape and
-// dtype; values are expected in [0, 1] (the constants assume a dynamic range of 1). On the CPU, with b
-// not requiring a gradient, ssim_cpu.h's kernels compute it and its gradient; otherwise ssim_ops.
+// dtype; values are expected in [0, 1] (the constants assume a dynamic range of 1). With b not
+// requiring a gradient, kernels compute it and its gradient: ssim_cpu.h's on the CPU (float, double),
+// ssim_cuda.h's for float32 CUDA tensors in a CUDA build; otherwise ssim_ops.
 at::Tensor ssim(const at::Tensor& a, const at::Tensor& b);
 
 // The same from LibTorch ops (a separable grouped convolution of the five moment maps): any device,
-// both images differentiable; the reference the CPU kernels are tested against.
+// both images differentiable; the reference the kernels are tested against.
 at::Tensor ssim_ops(const at::Tensor& a, const at::Tensor& b);
 
 // D-SSIM term of the 3DGS loss: 1 - ssim(a, b).

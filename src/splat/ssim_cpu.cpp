@@ -113,17 +113,14 @@ template <class T>
     const T *mu_a = m.data(), *mu_b = mu_a + W, *e_aa = mu_b + W, *e_bb = e_aa + W, *e_ab = e_bb + W;
     T* d_mu = dm ? dm + (static_cast<size_t>(band.c) * 3) * plane + static_cast<size_t>(y) * W : nullptr;
     T row_sum = 0;
-    for (int x = 0; x < W; ++x) {
-      const T ma = mu_a[x], mb = mu_b[x], mab = ma * mb;
-      const T A1 = 2 * mab + T(kSsimC1), A2 = 2 * (e_ab[x] - mab) + T(kSsimC2);
-      const T B1 = ma * ma + mb * mb + T(kSsimC1), B2 = (e_aa[x] - ma * ma) + (e_bb[x] - mb * mb) + T(kSsimC2);
-      const T D = B1 * B2, s = (A1 * A2) / D;
-      row_sum += s;
-      if (d_mu) {  // ds/dmu_a, ds/dE[a^2], ds/dE[ab] (dividing by D only, as the map itself)
-        d_mu[x] = (2 * mb * (A2 - A1) - s * 2 * ma * (B2 - B1)) / D;
-        d_mu[plane + x] = -s * B1 / D;
-        d_mu[2 * plane + x] = 2 * A1 / D;
+    if (d_mu) {
+      for (int x = 0; x < W; ++x) {
+        T d[3];
+        row_sum += ssim_pixel(mu_a[x], mu_b[x], e_aa[x], e_bb[x], e_ab[x], d);
+        d_mu[x] = d[0], d_mu[plane + x] = d[1], d_mu[2 * plane + x] = d[2];
       }
+    } else {
+      for (int x = 0; x < W; ++x) row_sum += ssim_pixel(mu_a[x], mu_b[x], e_aa[x], e_bb[x], e_ab[x], static_cast<T*>(nullptr));
     }
     sum += double(row_sum);
   }

@@ -5,10 +5,11 @@
 // Same definition as ssim.h: 11-tap Gaussian window (sigma 1.5), zero padding, C1 = 0.01^2, C2 = 0.03^2.
 #include <array>
 
+#include "splat/ssim_pixel.h"
+
 namespace cls {
 
-constexpr int kSsimWindow = 11;                                   // taps of the 1-D window
-constexpr double kSsimC1 = 0.01 * 0.01, kSsimC2 = 0.03 * 0.03;  // for a dynamic range of 1
+constexpr int kSsimWindow = 11;  // taps of the 1-D window
 
 // The normalised 1-D window: w[i] = exp(-(i - 5)^2 / (2 sigma^2)) / sum, i = 0..10.
 std::array<double, kSsimWindow> ssim_window_taps();

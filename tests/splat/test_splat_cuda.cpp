@@ -9,6 +9,7 @@
 
 #include "splat/rasterize.h"
 #include "splat/rasterize_cuda.h"
+#include "splat/ssim.h"
 #include "splat_scene.h"
 
 namespace cls {
@@ -51,8 +52,10 @@ void compare_cuda_cpu(const test::RandomScene& s) {
   EXPECT_LT((g_depth.cpu() - cpu_depth).abs().max().item<float>(), 1e-4f);
 }
 
-// Gradients through the autograd function on CUDA against the CPU function (float32 both).
-void compare_gradients(bool use_sh, int channels, unsigned seed) {
+// Gradients through the autograd function on CUDA against the CPU function (float32 both). With
+// `geometry` false only the colours/features require a gradient (a language field on frozen
+// Gaussians), which takes the CUDA backward's path without the alpha gradient.
+void compare_gradients(bool use_sh, int channels, unsigned seed, bool geometry = true) {
   const auto s = test::random_scene(200, 53, 37, channels, use_sh, seed, 0.9);
   RasterizeSettings settings;
   settings.camera = PinholeCamera{s.cam.fx, s.cam.fy, s.cam.cx, s.cam.cy, s.cam.width, s.cam.height};
@@ -67,35 +70,70 @@ void compare_gradients(bool use_sh, int channels, unsigned seed) {
   torch::manual_seed(seed);
   const auto w = torch::randn({s.cam.height, s.cam.width, s.channels});
   const auto wa = torch::randn({s.cam.height, s.cam.width});
+  const auto wd = torch::randn({s.cam.height, s.cam.width});
   std::vector<std::vector<torch::Tensor>> grads;
   std::vector<torch::Tensor> m2d;
   for (const torch::Device dev : {torch::Device(torch::kCPU), torch::Device(torch::kCUDA)}) {
     std::vector<torch::Tensor> p;
     // detach: on the CPU, to() returns the tensor itself, which must not become a leaf of this pass.
-    for (const auto& x : params) p.push_back(x.to(dev).detach().requires_grad_(true));
-    auto means2d = torch::zeros({n, 2}, torch::dtype(torch::kFloat32).device(dev)).requires_grad_(true);
+    for (size_t k = 0; k < params.size(); ++k)
+      p.push_back(params[k].to(dev).detach().requires_grad_(geometry || k + 1 == params.size()));
+    auto means2d = torch::zeros({n, 2}, torch::dtype(torch::kFloat32).device(dev)).requires_grad_(geometry);
     RasterizeSettings sd = settings;
     sd.background = t(s.background, {int64_t(s.background.size())}).to(dev);
     const auto o = use_sh ? rasterize_sh(p[0], p[1], p[2], p[3], p[4], 3, means2d, sd)
                           : rasterize_features(p[0], p[1], p[2], p[3], p[4], means2d, sd);
-    ((o.image * w.to(dev)).sum() + (o.alpha * wa.to(dev)).sum()).backward();
+    ((o.image * w.to(dev)).sum() + (o.alpha * wa.to(dev)).sum() + (o.depth * wd.to(dev)).sum()).backward();
     std::vector<torch::Tensor> g;
-    for (auto& x : p) g.push_back(x.grad().cpu());
+    for (auto& x : p)
+      if (x.grad().defined()) g.push_back(x.grad().cpu());
     grads.push_back(g);
-    m2d.push_back(means2d.grad().cpu());
+    if (geometry) m2d.push_back(means2d.grad().cpu());
   }
-  for (size_t k = 0; k < params.size(); ++k) {
+  ASSERT_EQ(grads[0].size(), geometry ? params.size() : 1u);
+  ASSERT_EQ(grads[1].size(), grads[0].size());
+  for (size_t k = 0; k < grads[0].size(); ++k) {
     const double scale = grads[0][k].abs().max().item<double>();
-    EXPECT_LT((grads[1][k] - grads[0][k]).abs().max().item<double>(), 1e-3 * scale) << "param " << k;
+    ASSERT_GT(scale, 0.0) << "param " << k << ": the scene gives it no gradient to compare";
+    EXPECT_LT((grads[1][k] - grads[0][k]).abs().max().item<double>(), 1e-3 * scale)
+        << "param " << k << ", " << channels << " channels, geometry " << geometry;
   }
-  EXPECT_LT((m2d[1] - m2d[0]).abs().max().item<double>(), 1e-3 * m2d[0].abs().max().item<double>());
+  if (geometry) EXPECT_LT((m2d[1] - m2d[0]).abs().max().item<double>(), 1e-3 * m2d[0].abs().max().item<double>());
 }
 
 TEST(SplatCuda, GradientsMatchCpu) {
   if (!torch::cuda::is_available()) GTEST_SKIP() << "no CUDA device: the CUDA backward is not compared with the CPU path";
   compare_gradients(true, 3, 51);
-  compare_gradients(false, 32, 52);
-  compare_gradients(false, 128, 53);
+  // every register width of the backward (4 ... 128 channels), and channels beyond the registers
+  for (int C : {1, 5, 16, 32, 48, 128, 200}) compare_gradients(false, C, 52 + C);
+}
+
+TEST(SplatCuda, FeatureGradientsWithoutGeometryMatchCpu) {
+  if (!torch::cuda::is_available()) GTEST_SKIP() << "no CUDA device: the CUDA backward is not compared with the CPU path";
+  compare_gradients(true, 3, 61, false);
+  for (int C : {3, 12, 32, 100, 128}) compare_gradients(false, C, 62 + C, false);
+}
+
+// The CUDA SSIM kernels against ssim_ops on the same device (LibTorch's convolutions), value and
+// gradient: an image of several thread blocks, and one narrower than the window with four channels.
+TEST(SplatCuda, SsimKernelsMatchTheOps) {
+  if (!torch::cuda::is_available()) GTEST_SKIP() << "no CUDA device: the CUDA SSIM kernels are not compared with the ops";
+  torch::manual_seed(5);
+  for (const std::vector<int64_t> shape : {std::vector<int64_t>{101, 67, 3}, std::vector<int64_t>{7, 5, 4}}) {
+    const auto opts = torch::dtype(torch::kFloat32).device(torch::kCUDA);
+    const at::Tensor a0 = torch::rand(shape, opts);
+    const at::Tensor b = (a0 + 0.3 * torch::randn_like(a0)).clamp(0, 1);
+    const at::Tensor a = a0.clone().requires_grad_(true), a_ops = a0.clone().requires_grad_(true);
+    const at::Tensor s = ssim(a, b), s_ops = ssim_ops(a_ops, b);
+    ASSERT_NE(s.grad_fn()->name().find("SsimKernels"), std::string::npos) << s.grad_fn()->name();  // the kernels ran
+    EXPECT_NEAR(s.item<double>(), s_ops.item<double>(), 2e-6) << at::IntArrayRef(shape);
+    (3.0 * s).backward();
+    (3.0 * s_ops).backward();
+    const double scale = a_ops.grad().abs().max().item<double>();
+    ASSERT_GT(scale, 0);
+    EXPECT_LT((a.grad() - a_ops.grad()).abs().max().item<double>() / scale, 1e-5) << at::IntArrayRef(shape);
+    EXPECT_NEAR(ssim(a0, b).item<double>(), s.item<double>(), 1e-7);  // without a gradient
+  }
 }
 
 TEST(SplatCuda, ForwardMatchesCpu) {
@@ -114,6 +152,12 @@ TEST(SplatCuda, ForwardMatchesCpu) {
 }
 TEST(SplatCuda, GradientsMatchCpu) {
   GTEST_SKIP() << "built without the CUDA backend (CLS_WITH_CUDA): the CUDA backward is not compared with the CPU path";
+}
+TEST(SplatCuda, FeatureGradientsWithoutGeometryMatchCpu) {
+  GTEST_SKIP() << "built without the CUDA backend (CLS_WITH_CUDA): the CUDA backward is not compared with the CPU path";
+}
+TEST(SplatCuda, SsimKernelsMatchTheOps) {
+  GTEST_SKIP() << "built without the CUDA backend (CLS_WITH_CUDA): the CUDA SSIM kernels are not compared with the ops";
 }
 
 #endif
