@@ -1,7 +1,8 @@
 // CUDA forward rasterizer (the 3DGS pipeline: preprocess, duplicate per tile, radix sort by
 // (tile, depth), tile ranges, per-tile blending with shared-memory batches). Channel count is
 // processed in compile-time chunks (CHUNK channels per block, gridDim.z chunks), so RGB runs one
-// chunk of 3 and 128 latent channels run four chunks of 32.
+// chunk of 3 and 128 latent channels run two chunks of 64 (on an H100, 64 with the backward's 64 took
+// a language iteration at 200k Gaussians from 8.9 to 8.4 ms; docs/benchmarks.md).
 #include <cuda_runtime.h>
 
 #include <cub/cub.cuh>
@@ -103,7 +104,7 @@ __global__ void __launch_bounds__(kBlock) render_kernel(RenderArgs r) {
   __shared__ float s_mean[kBlock][2];
   __shared__ float s_conic[kBlock][3];
   __shared__ float s_op[kBlock], s_cut[kBlock], s_depth[kBlock];
-  __shared__ __align__(16) float s_val[kBlock * CHUNK];
+  extern __shared__ __align__(16) float s_val[];  // kBlock x CHUNK values (dynamic: 64 KB at 64 channels)
   bool done = !inside;
   float T = 1.f, d = 0.f, acc[CHUNK];
   for (int c = 0; c < CHUNK; ++c) acc[c] = 0.f;
@@ -173,7 +174,9 @@ __global__ void __launch_bounds__(kBlock) render_kernel(RenderArgs r) {
 template <int CHUNK>
 void launch_render(const RenderArgs& r, int tiles_y, cudaStream_t stream) {
   const dim3 grid(r.tiles_x, tiles_y, (r.channels + CHUNK - 1) / CHUNK), block(kTileSize, kTileSize);
-  render_kernel<CHUNK><<<grid, block, 0, stream>>>(r);
+  const size_t shared = sizeof(float) * kBlock * CHUNK;
+  if (shared > 48 * 1024) cudaFuncSetAttribute(render_kernel<CHUNK>, cudaFuncAttributeMaxDynamicSharedMemorySize, int(shared));
+  render_kernel<CHUNK><<<grid, block, shared, stream>>>(r);
 }
 
 #define CLS_CUDA_TRY(expr)             \
@@ -261,7 +264,8 @@ int rasterize_forward_cuda(const CudaSplatArgs& a, CudaForwardStatePtr& state, v
   else if (C == 4) launch_render<4>(r, tiles_y, stream);
   else if (C <= 8) launch_render<8>(r, tiles_y, stream);
   else if (C <= 16) launch_render<16>(r, tiles_y, stream);
-  else launch_render<32>(r, tiles_y, stream);
+  else if (C <= 32) launch_render<32>(r, tiles_y, stream);
+  else launch_render<64>(r, tiles_y, stream);
   return int(cudaGetLastError());
 }
 
