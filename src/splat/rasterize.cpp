@@ -148,19 +148,24 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
                d_quats = torch::zeros_like(quats), d_opac = torch::zeros_like(opacities),
                d_values = torch::zeros_like(values), d_mean2d = torch::zeros({means.size(0), 2}, means.options()),
                d_abs = torch::zeros({means.size(0), 2}, means.options());
+    const bool has_means2d = ctx->saved_data["has_means2d"].toBool();
+    // Only the gradients autograd asks for: without geometry gradients (a language field on frozen
+    // Gaussians) the backward skips the per-pixel alpha gradient. g: SplatGradients<T> or CudaSplatGrads.
+    auto fill = [&](auto& g, auto scalar) {
+      using T = decltype(scalar);
+      auto wanted = [&](size_t input, at::Tensor& t) { return ctx->needs_input_grad(input) ? t.data_ptr<T>() : nullptr; };
+      g.means = wanted(0, d_means), g.scales = wanted(1, d_scales), g.quats = wanted(2, d_quats);
+      g.opacities = wanted(3, d_opac);
+      (sh_degree >= 0 ? g.sh : g.features) = wanted(4, d_values);
+      g.mean2d = has_means2d ? wanted(5, d_mean2d) : nullptr;
+      g.mean2d_abs = abs_grad.defined() ? d_abs.data_ptr<T>() : nullptr;
+    };
     if (means.is_cuda()) {
 #ifdef CLS_WITH_CUDA
       const auto& saved_state = *static_cast<const CudaSavedState*>(state_ptr);
       const CudaSplatArgs a = cuda_args(saved_state.cam, means, scales, quats, opacities, values, sh_degree, bg);
-      // Only what is asked for: without geometry gradients (a language field on frozen Gaussians) the
-      // kernels skip the per-pixel alpha gradient.
-      auto wanted = [&](size_t input, at::Tensor& t) { return ctx->needs_input_grad(input) ? t.data_ptr<float>() : nullptr; };
       CudaSplatGrads g;
-      g.means = wanted(0, d_means), g.scales = wanted(1, d_scales), g.quats = wanted(2, d_quats);
-      g.opacities = wanted(3, d_opac);
-      (sh_degree >= 0 ? g.sh : g.features) = wanted(4, d_values);
-      g.mean2d = ctx->saved_data["has_means2d"].toBool() ? wanted(5, d_mean2d) : nullptr;
-      g.mean2d_abs = abs_grad.defined() ? d_abs.data_ptr<float>() : nullptr;
+      fill(g, float{});
       auto ptr = [](const at::Tensor& t) -> const float* { return t.defined() ? t.data_ptr<float>() : nullptr; };
       check_cuda(rasterize_backward_cuda(a, *saved_state.state, ptr(g_image), ptr(g_alpha), ptr(g_depth), g,
                                          c10::cuda::getCurrentCUDAStream().stream()),
@@ -172,16 +177,13 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
       const auto& state = *static_cast<const SplatForwardState<T>*>(state_ptr);
       const SplatInputs<T> in = make_inputs<T>(means, scales, quats, opacities, values, sh_degree, bg);
       SplatGradients<T> g;
-      g.means = d_means.data_ptr<T>(), g.scales = d_scales.data_ptr<T>(), g.quats = d_quats.data_ptr<T>();
-      g.opacities = d_opac.data_ptr<T>();
-      (sh_degree >= 0 ? g.sh : g.features) = d_values.data_ptr<T>();
-      g.mean2d = d_mean2d.data_ptr<T>(), g.mean2d_abs = d_abs.data_ptr<T>();
+      fill(g, T{});
       auto ptr = [](const at::Tensor& t) -> const T* { return t.defined() ? t.data_ptr<T>() : nullptr; };
       rasterize_backward_cpu(in, state, ptr(g_image), ptr(g_alpha), ptr(g_depth), g);
     });
     }
     if (abs_grad.defined()) abs_grad.add_(d_abs.to(abs_grad.scalar_type()));
-    if (!ctx->saved_data["has_means2d"].toBool()) d_mean2d = at::Tensor();
+    if (!has_means2d) d_mean2d = at::Tensor();
     return {d_means, d_scales, d_quats, d_opac, d_values, d_mean2d, at::Tensor(), at::Tensor()};
   }
 };

@@ -154,7 +154,7 @@ struct ForwardTileJob : TileInputs<T> {
 template <class T>
 struct BackwardTileJob : TileInputs<T> {
   const T *dL_dimage, *dL_dalpha, *dL_ddepth;
-  T *geom_grad, *value_grad;
+  T *geom_grad, *value_grad;  // geom_grad null: only the values' gradients (no alpha gradient)
   StripedLocks& locks;
 };
 
@@ -328,6 +328,7 @@ template <class T, int kC>
   const T* const values = j.values;
   const T* const dL_dimage = j.dL_dimage;
   const T* const bg = j.bg;
+  const bool geometry = j.geom_grad != nullptr;
   std::vector<T>& buf = s.buf;
   std::vector<uint8_t>& touched = s.touched;
   std::vector<TileGaussian<T>>& list = s.list;
@@ -391,38 +392,42 @@ template <class T, int kC>
       const V w = a * Tr;
       T* e = buf.data() + static_cast<size_t>(k) * S;
       touched[k] = 1;
-      const T* v = values + static_cast<size_t>(g.id) * nc;
-      // dC/dalpha_i . dL/dC = T_i (v_i - rec_i) . dpix, where rec_i = sum over later contributors j of
-      // v_j alpha_j prod_{i<l<j} (1 - alpha_l). rec is linear in the values, so only its dot product
-      // with dpix is carried: rec_dot_i = a_{i+1} (v_{i+1} . dpix) + (1 - a_{i+1}) rec_dot_{i+1}.
-      V v_dot = V{};
-      if (kC > 0) {
-        for (int c = 0; c < nc; ++c) v_dot += v[c] * dpix[c];
-      } else {  // four partial sums: one would wait on the previous multiply-add every channel
-        V part[4] = {};
-        int c = 0;
-        for (; c + 4 <= nc; c += 4)
-          for (int q = 0; q < 4; ++q) part[q] += v[c + q] * dpix[c + q];
-        for (; c < nc; ++c) part[0] += v[c] * dpix[c];
-        v_dot = (part[0] + part[1]) + (part[2] + part[3]);
+      V q[kLanes] = {};  // this entry's gradients per lane in buf's order (a few channels included)
+      if (geometry) {
+        const T* v = values + static_cast<size_t>(g.id) * nc;
+        // dC/dalpha_i . dL/dC = T_i (v_i - rec_i) . dpix, where rec_i = sum over later contributors j of
+        // v_j alpha_j prod_{i<l<j} (1 - alpha_l). rec is linear in the values, so only its dot product
+        // with dpix is carried: rec_dot_i = a_{i+1} (v_{i+1} . dpix) + (1 - a_{i+1}) rec_dot_{i+1}.
+        V v_dot = V{};
+        if (kC > 0) {
+          for (int c = 0; c < nc; ++c) v_dot += v[c] * dpix[c];
+        } else {  // four partial sums: one would wait on the previous multiply-add every channel
+          V part[4] = {};
+          int c = 0;
+          for (; c + 4 <= nc; c += 4)
+            for (int q = 0; q < 4; ++q) part[q] += v[c + q] * dpix[c + q];
+          for (; c < nc; ++c) part[0] += v[c] * dpix[c];
+          v_dot = (part[0] + part[1]) + (part[2] + part[3]);
+        }
+        rec_dot = pass ? last_alpha * last_v_dot + (T(1) - last_alpha) * rec_dot : rec_dot;
+        last_v_dot = pass ? v_dot : last_v_dot;
+        V dL_da = v_dot - rec_dot;
+        rec_d = pass ? last_alpha * last_d + (T(1) - last_alpha) * rec_d : rec_d;
+        last_d = pass ? V{} + g.depth : last_d;
+        dL_da += (g.depth - rec_d) * dD;
+        dL_da *= Tr;
+        // alpha = 1 - T_final and the background term T_final * bg: dT_final/dalpha = -T_final/(1-alpha)
+        dL_da += (dA - bg_dot) * T_final * inv_one_minus_a;
+        last_alpha = pass ? a : last_alpha;
+        lane_alpha_backward(g.mean2d, g.conic, g.opacity, cx, cy, G, dL_da, pass, q);
+        q[8] = w * dD;  // w = 0 where the lane does not contribute
       }
-      rec_dot = pass ? last_alpha * last_v_dot + (T(1) - last_alpha) * rec_dot : rec_dot;
-      last_v_dot = pass ? v_dot : last_v_dot;
-      V dL_da = v_dot - rec_dot;
-      rec_d = pass ? last_alpha * last_d + (T(1) - last_alpha) * rec_d : rec_d;
-      last_d = pass ? V{} + g.depth : last_d;
-      dL_da += (g.depth - rec_d) * dD;
-      dL_da *= Tr;
-      // alpha = 1 - T_final and the background term T_final * bg: dT_final/dalpha = -T_final/(1-alpha)
-      dL_da += (dA - bg_dot) * T_final * inv_one_minus_a;
-      last_alpha = pass ? a : last_alpha;
-      // this entry's gradients per lane in buf's order (a few channels included), summed over the lanes
-      V q[kLanes] = {};
-      lane_alpha_backward(g.mean2d, g.conic, g.opacity, cx, cy, G, dL_da, pass, q);
-      q[8] = w * dD;  // w = 0 where the lane does not contribute
+      // summed over the lanes
       for (int c = 0; c < kC; ++c) q[9 + c] = w * dpix[c];
-      const V sums = lane_sums(q);
-      for (int i = 0; i < 9 + kC; ++i) e[i] += sums[i];
+      if (geometry || kC > 0) {
+        const V sums = lane_sums(q);
+        for (int i = 0; i < 9 + kC; ++i) e[i] += sums[i];
+      }
       if (kC == 0) add_lane_rows(w, pass, dL_dimage, pixel, nc, e + 9);
     }
   }
@@ -431,8 +436,10 @@ template <class T, int kC>
     const int id = list[k].id;
     const T* e = buf.data() + static_cast<size_t>(k) * S;
     j.locks.lock(id);
-    T* gg = j.geom_grad + static_cast<size_t>(id) * 9;
-    for (int c = 0; c < 9; ++c) gg[c] += e[c];
+    if (geometry) {
+      T* gg = j.geom_grad + static_cast<size_t>(id) * 9;
+      for (int c = 0; c < 9; ++c) gg[c] += e[c];
+    }
     T* vg = j.value_grad + static_cast<size_t>(id) * nc;
 #pragma omp simd
     for (int c = 0; c < nc; ++c) vg[c] += e[9 + c];
@@ -632,8 +639,12 @@ void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>
     zero_image.assign(n_pix * C, T(0));
     dL_dimage = zero_image.data();
   }
+  // Without any geometry gradient (a language field on frozen Gaussians) only w = alpha T is needed per
+  // pixel and Gaussian, not the alpha gradient.
+  const bool geometry = grads.means || grads.scales || grads.quats || grads.opacities || grads.mean2d ||
+                        grads.mean2d_abs;
   // per Gaussian: mean2d 2, |mean2d| 2, conic 3, opacity, depth; and values C
-  std::vector<T> geom(static_cast<size_t>(N) * 9, T(0));
+  std::vector<T> geom(geometry ? static_cast<size_t>(N) * 9 : 0, T(0));
   std::vector<T> color_grad;
   T* value_grad = grads.features;
   if (sh || !value_grad) {
@@ -644,7 +655,7 @@ void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>
   StripedLocks locks;
   const std::vector<TileGaussian<T>> gaussians = tile_gaussians(st, in.opacities);
   const BackwardTileJob<T> job{{cam, st, gaussians.data(), values, C, in.background}, dL_dimage, dL_dalpha, dL_ddepth,
-                               geom.data(), value_grad, locks};
+                               geometry ? geom.data() : nullptr, value_grad, locks};
   const BackwardTileFn<T> backward_tile_fn = tile_kernels<T>(C).second;
 #pragma omp parallel
   {
@@ -656,22 +667,24 @@ void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>
   const Vec3<T> campos = cam.center();
 #pragma omp parallel for schedule(static)
   for (int i = 0; i < N; ++i) {
-    if (!st.proj[i].visible) continue;
-    const T* g = geom.data() + static_cast<size_t>(i) * 9;
-    if (grads.mean2d) grads.mean2d[2 * i] += g[0], grads.mean2d[2 * i + 1] += g[1];
-    if (grads.mean2d_abs) grads.mean2d_abs[2 * i] += g[2], grads.mean2d_abs[2 * i + 1] += g[3];
-    if (grads.opacities) grads.opacities[i] += g[7];
+    if (!st.proj[i].visible || !(geometry || (sh && grads.sh))) continue;
     const Vec3<T> mean = vec3_at(in.means, i);
-    const Mat3<T> Sigma = covariance_3d(in.scales + 3 * i, in.quats + 4 * i);
-    Mat3<T> dSigma;
-    Vec3<T> dmean = project_gaussian_backward(cam, mean, Sigma, g, g + 4, g[8], dSigma);
+    Vec3<T> dmean{};
     if (sh) {
       bool cl[3] = {st.clamped[3 * i] != 0, st.clamped[3 * i + 1] != 0, st.clamped[3 * i + 2] != 0};
       T* dsh = grads.sh ? grads.sh + static_cast<size_t>(i) * K * 3 : nullptr;
       T scratch[3 * kMaxShCoeffs] = {};
-      dmean = dmean + sh_to_rgb_backward(in.sh_degree, in.sh + static_cast<size_t>(i) * K * 3, mean - campos, cl,
-                                         value_grad + 3 * static_cast<size_t>(i), dsh ? dsh : scratch);
+      dmean = sh_to_rgb_backward(in.sh_degree, in.sh + static_cast<size_t>(i) * K * 3, mean - campos, cl,
+                                 value_grad + 3 * static_cast<size_t>(i), dsh ? dsh : scratch);
     }
+    if (!geometry) continue;
+    const T* g = geom.data() + static_cast<size_t>(i) * 9;
+    if (grads.mean2d) grads.mean2d[2 * i] += g[0], grads.mean2d[2 * i + 1] += g[1];
+    if (grads.mean2d_abs) grads.mean2d_abs[2 * i] += g[2], grads.mean2d_abs[2 * i + 1] += g[3];
+    if (grads.opacities) grads.opacities[i] += g[7];
+    const Mat3<T> Sigma = covariance_3d(in.scales + 3 * i, in.quats + 4 * i);
+    Mat3<T> dSigma;
+    dmean = dmean + project_gaussian_backward(cam, mean, Sigma, g, g + 4, g[8], dSigma);
     if (grads.means)
       for (int k = 0; k < 3; ++k) grads.means[3 * i + k] += dmean[k];
     T dscale[3] = {}, dq[4] = {};
