@@ -31,10 +31,6 @@ struct BackwardArgs {
 
 constexpr unsigned kFullWarp = 0xffffffffu;
 
-// Sums K entries (K a power of two, at most 32) over the warp so that lane l receives the total of
-// entry l % K: the warp's halves are first added for every entry down to K lanes, then each step keeps
-// half of a lane's entries and swaps the other half with its partner (31 shuffles for 32 entries,
-// where 32 separate sums take 160). Every lane of the warp calls it.
 // One step of warp_transpose_sum: entries [0, 2H) become H, exchanged with the lane H apart. The
 // steps are template recursion rather than a loop, which nvcc left partly rolled (the array then went
 // to local memory).
@@ -52,6 +48,10 @@ __device__ __forceinline__ void transpose_sum_step(float (&v)[K], int lane) {
   }
 }
 
+// Sums K entries (K a power of two, at most 32) over the warp so that lane l receives the total of
+// entry l % K: the warp's halves are first added for every entry down to K lanes, then each step keeps
+// half of a lane's entries and swaps the other half with its partner (31 shuffles for 32 entries,
+// where 32 separate sums take 160). Every lane of the warp calls it.
 template <int K>
 __device__ __forceinline__ float warp_transpose_sum(float (&v)[K], int lane) {
 #pragma unroll
