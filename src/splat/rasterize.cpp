@@ -7,6 +7,7 @@
 
 #ifdef CLS_WITH_CUDA
 #include <c10/cuda/CUDACachingAllocator.h>
+#include <c10/cuda/CUDAGuard.h>
 #include <c10/cuda/CUDAStream.h>
 
 #include "splat/rasterize_cuda.h"
@@ -100,6 +101,7 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
     at::Tensor holder;
     if (means.is_cuda()) {
 #ifdef CLS_WITH_CUDA
+      const c10::cuda::CUDAGuard guard(means.device());  // the stream and the buffers of the tensors' GPU
       auto* saved = new CudaSavedState();
       holder = torch::from_blob(saved, {1}, [](void* p) { delete static_cast<CudaSavedState*>(p); },
                                 torch::TensorOptions().dtype(torch::kUInt8));
@@ -162,6 +164,7 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
     };
     if (means.is_cuda()) {
 #ifdef CLS_WITH_CUDA
+      const c10::cuda::CUDAGuard guard(means.device());
       const auto& saved_state = *static_cast<const CudaSavedState*>(state_ptr);
       const CudaSplatArgs a = cuda_args(saved_state.cam, means, scales, quats, opacities, values, sh_degree, bg);
       CudaSplatGrads g;

@@ -69,7 +69,8 @@ struct CudaSplatGrads {
 // Backward of the forward that produced `state` with the same `args` (its output pointers are not
 // read). dL_dimage H x W x C; dL_dalpha, dL_ddepth H x W or null. The math is the CPU path's (shared
 // headers); the scheduling is the original's (per-pixel backward walk, sums over each warp, atomic
-// accumulation).
+// accumulation). It does not wait for its kernels: a fault inside them surfaces at the stream's next
+// synchronisation, as with LibTorch's own operations.
 int rasterize_backward_cuda(const CudaSplatArgs& args, const CudaForwardState& state, const float* dL_dimage,
                             const float* dL_dalpha, const float* dL_ddepth, const CudaSplatGrads& grads,
                             void* stream = nullptr);

@@ -171,12 +171,19 @@ __global__ void __launch_bounds__(kBlock) render_kernel(RenderArgs r) {
   }
 }
 
+// False, launching nothing, where the GPU cannot give a block the CHUNK's shared memory (64 channels
+// take 72 KB: beyond sm_75's 64 KB).
 template <int CHUNK>
-void launch_render(const RenderArgs& r, int tiles_y, cudaStream_t stream) {
+bool launch_render(const RenderArgs& r, int tiles_y, cudaStream_t stream) {
   const dim3 grid(r.tiles_x, tiles_y, (r.channels + CHUNK - 1) / CHUNK), block(kTileSize, kTileSize);
   const size_t shared = sizeof(float) * kBlock * CHUNK;
-  if (shared > 48 * 1024) cudaFuncSetAttribute(render_kernel<CHUNK>, cudaFuncAttributeMaxDynamicSharedMemorySize, int(shared));
+  if (shared > 48 * 1024 &&
+      cudaFuncSetAttribute(render_kernel<CHUNK>, cudaFuncAttributeMaxDynamicSharedMemorySize, int(shared)) != cudaSuccess) {
+    cudaGetLastError();  // clear it: the caller takes a smaller chunk
+    return false;
+  }
   render_kernel<CHUNK><<<grid, block, shared, stream>>>(r);
+  return true;
 }
 
 #define CLS_CUDA_TRY(expr)             \
@@ -264,8 +271,7 @@ int rasterize_forward_cuda(const CudaSplatArgs& a, CudaForwardStatePtr& state, v
   else if (C == 4) launch_render<4>(r, tiles_y, stream);
   else if (C <= 8) launch_render<8>(r, tiles_y, stream);
   else if (C <= 16) launch_render<16>(r, tiles_y, stream);
-  else if (C <= 32) launch_render<32>(r, tiles_y, stream);
-  else launch_render<64>(r, tiles_y, stream);
+  else if (C <= 32 || !launch_render<64>(r, tiles_y, stream)) launch_render<32>(r, tiles_y, stream);
   return int(cudaGetLastError());
 }
 

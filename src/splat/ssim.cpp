@@ -10,6 +10,7 @@
 #include "splat/ssim_cpu.h"
 
 #ifdef CLS_WITH_CUDA
+#include <c10/cuda/CUDAGuard.h>
 #include <c10/cuda/CUDAStream.h>
 
 #include "splat/ssim_cuda.h"
@@ -51,6 +52,7 @@ at::Tensor kernel_ssim_forward(const at::Tensor& a, const at::Tensor& b, const a
   const int H = int(a.size(0)), W = int(a.size(1)), C = int(a.size(2));
   if (a.is_cuda()) {
 #ifdef CLS_WITH_CUDA
+    const c10::cuda::CUDAGuard guard(a.device());  // the stream of the images' GPU
     at::Tensor map = torch::empty({C, H, W}, a.options()), work = torch::empty({5, C, H, W}, a.options());
     check_cuda(ssim_forward_cuda(float_taps().data(), a.data_ptr<float>(), b.data_ptr<float>(), H, W, C,
                                  map.data_ptr<float>(), dm.defined() ? dm.data_ptr<float>() : nullptr,
@@ -85,6 +87,7 @@ struct SsimKernels : torch::autograd::Function<SsimKernels> {
     at::Tensor grad = torch::empty_like(a);
     if (a.is_cuda()) {
 #ifdef CLS_WITH_CUDA
+      const c10::cuda::CUDAGuard guard(a.device());
       // the incoming gradient stays on the device: no wait for it
       const at::Tensor scale = grad_out[0].to(a.options()).contiguous();
       at::Tensor work = torch::empty({3, C, H, W}, a.options());

@@ -2,8 +2,9 @@
 // SSIM on CUDA (ssim_cuda.cu): the passes of the CPU kernels (ssim_cpu.h), one thread per pixel and
 // channel. The forward blurs the five moment maps along rows, then along columns, where each pixel gets
 // its SSIM and the three moment derivatives (ssim_pixel.h); the backward blurs those back the same way.
-// Replaces LibTorch's grouped convolutions for float32 CUDA images (2.6 of 12.9 ms of a photometric
-// iteration at 1600x1000 on an H100, docs/benchmarks.md). No CUDA headers here; device pointers;
+// Replaces LibTorch's grouped convolutions and elementwise ops for float32 CUDA images (about 2.6 ms of a
+// photometric iteration at 1600x1000 on an H100, 0.42 ms with these; docs/benchmarks.md, "GPU, second
+// round"). No CUDA headers here; device pointers;
 // images H x W x C, channel-last, contiguous; `taps`: the kSsimWindow window taps (host memory,
 // ssim_window_taps); `stream` is a cudaStream_t. Both return the first cudaError_t met (0 = success).
 namespace cls {

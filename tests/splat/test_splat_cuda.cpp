@@ -111,7 +111,7 @@ TEST(SplatCuda, GradientsMatchCpu) {
 TEST(SplatCuda, FeatureGradientsWithoutGeometryMatchCpu) {
   if (!torch::cuda::is_available()) GTEST_SKIP() << "no CUDA device: the CUDA backward is not compared with the CPU path";
   compare_gradients(true, 3, 61, false);
-  for (int C : {3, 12, 32, 100, 128}) compare_gradients(false, C, 62 + C, false);
+  for (int C : {3, 5, 12, 32, 100, 128, 200}) compare_gradients(false, C, 62 + C, false);
 }
 
 // The CUDA SSIM kernels against ssim_ops on the same device (LibTorch's convolutions), value and
