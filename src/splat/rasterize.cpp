@@ -10,6 +10,7 @@
 #include <c10/cuda/CUDAGuard.h>
 #include <c10/cuda/CUDAStream.h>
 
+#include "splat/cuda_check.h"
 #include "splat/rasterize_cuda.h"
 #endif
 
@@ -78,9 +79,6 @@ CudaSplatArgs cuda_args(const SplatCamera<float>& cam, const at::Tensor& means, 
   return a;
 }
 
-void check_cuda(int rc, const char* what) {
-  if (rc != 0) throw Error(std::string("rasterize: CUDA error ") + std::to_string(rc) + " in " + what);
-}
 #endif
 
 class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
@@ -109,8 +107,8 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
       CudaSplatArgs a = cuda_args(saved->cam, means, scales, quats, opacities, values, int(sh_degree), bg);
       a.image = image.data_ptr<float>(), a.alpha = alpha.data_ptr<float>(), a.depth = depth.data_ptr<float>();
       void* stream = c10::cuda::getCurrentCUDAStream().stream();
-      check_cuda(rasterize_forward_cuda(a, saved->state, stream), "forward");
-      check_cuda(cuda_forward_radii(*saved->state, radii.data_ptr<int32_t>(), stream), "radii");
+      check_cuda(rasterize_forward_cuda(a, saved->state, stream), "rasterize: forward");
+      check_cuda(cuda_forward_radii(*saved->state, radii.data_ptr<int32_t>(), stream), "rasterize: radii");
 #endif
     } else {
     AT_DISPATCH_FLOATING_TYPES(means.scalar_type(), "rasterize_forward", [&] {
@@ -172,7 +170,7 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
       auto ptr = [](const at::Tensor& t) -> const float* { return t.defined() ? t.data_ptr<float>() : nullptr; };
       check_cuda(rasterize_backward_cuda(a, *saved_state.state, ptr(g_image), ptr(g_alpha), ptr(g_depth), g,
                                          c10::cuda::getCurrentCUDAStream().stream()),
-                 "backward");
+                 "rasterize: backward");
 #endif
     } else {
     AT_DISPATCH_FLOATING_TYPES(means.scalar_type(), "rasterize_backward", [&] {

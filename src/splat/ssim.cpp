@@ -13,6 +13,7 @@
 #include <c10/cuda/CUDAGuard.h>
 #include <c10/cuda/CUDAStream.h>
 
+#include "splat/cuda_check.h"
 #include "splat/ssim_cuda.h"
 #endif
 
@@ -34,15 +35,15 @@ void check_images(const at::Tensor& a, const at::Tensor& b) {
 }
 
 #ifdef CLS_WITH_CUDA
-void check_cuda(int rc, const char* what) {
-  if (rc != 0) throw Error(std::string("ssim: CUDA error ") + std::to_string(rc) + " in " + what);
-}
-
-std::array<float, kSsimWindow> float_taps() {
-  const std::array<double, kSsimWindow> t = ssim_window_taps();
-  std::array<float, kSsimWindow> f{};
-  for (int i = 0; i < kSsimWindow; ++i) f[i] = static_cast<float>(t[i]);
-  return f;
+// The window's taps in float, computed once (every training iteration asks twice).
+const float* float_taps() {
+  static const std::array<float, kSsimWindow> taps = [] {
+    const std::array<double, kSsimWindow> t = ssim_window_taps();
+    std::array<float, kSsimWindow> f{};
+    for (int i = 0; i < kSsimWindow; ++i) f[i] = static_cast<float>(t[i]);
+    return f;
+  }();
+  return taps.data();
 }
 #endif
 
@@ -54,10 +55,10 @@ at::Tensor kernel_ssim_forward(const at::Tensor& a, const at::Tensor& b, const a
 #ifdef CLS_WITH_CUDA
     const c10::cuda::CUDAGuard guard(a.device());  // the stream of the images' GPU
     at::Tensor map = torch::empty({C, H, W}, a.options()), work = torch::empty({5, C, H, W}, a.options());
-    check_cuda(ssim_forward_cuda(float_taps().data(), a.data_ptr<float>(), b.data_ptr<float>(), H, W, C,
+    check_cuda(ssim_forward_cuda(float_taps(), a.data_ptr<float>(), b.data_ptr<float>(), H, W, C,
                                  map.data_ptr<float>(), dm.defined() ? dm.data_ptr<float>() : nullptr,
                                  work.data_ptr<float>(), c10::cuda::getCurrentCUDAStream().stream()),
-               "forward");
+               "ssim: forward");
     return map.mean();
 #endif
   }
@@ -91,10 +92,10 @@ struct SsimKernels : torch::autograd::Function<SsimKernels> {
       // the incoming gradient stays on the device: no wait for it
       const at::Tensor scale = grad_out[0].to(a.options()).contiguous();
       at::Tensor work = torch::empty({3, C, H, W}, a.options());
-      check_cuda(ssim_backward_cuda(float_taps().data(), a.data_ptr<float>(), b.data_ptr<float>(), dm.data_ptr<float>(),
+      check_cuda(ssim_backward_cuda(float_taps(), a.data_ptr<float>(), b.data_ptr<float>(), dm.data_ptr<float>(),
                                     H, W, C, scale.data_ptr<float>(), grad.data_ptr<float>(), work.data_ptr<float>(),
                                     c10::cuda::getCurrentCUDAStream().stream()),
-                 "backward");
+                 "ssim: backward");
 #endif
     } else if (a.scalar_type() == torch::kDouble) {
       ssim_backward_cpu(a.data_ptr<double>(), b.data_ptr<double>(), dm.data_ptr<double>(), H, W, C,
