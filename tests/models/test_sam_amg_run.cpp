@@ -116,51 +116,61 @@ TEST(SamAmgRun, FirstBatchMatchesDebugDump) {
     EXPECT_EQ(pts[i][0], expected_pts[i][0].get<double>());
     EXPECT_EQ(pts[i][1], expected_pts[i][1].get<double>());
   }
-  SamPredictorAmgModel model(tiny_predictor());
-  model.set_image(im.rgb.data(), im.height, im.width);
-  std::vector<float> logits, ious;
-  model.predict_points(pts, ious);
-  const size_t per_point = static_cast<size_t>(cls::sam::testing::num_multimask_outputs());
-  ASSERT_EQ(dump["iou_predictions"].at(0).size(), per_point);
-  std::vector<int64_t> all(pts.size() * per_point);
-  for (size_t m = 0; m < all.size(); ++m) all[m] = static_cast<int64_t>(m);
-  model.upsample_masks(all, logits);
-  ASSERT_EQ(logits.size(), all.size() * static_cast<size_t>(im.height) * im.width);
-  {  // The generator upsamples only some masks: a subset, in any order, gives the same planes.
-    const int64_t n = static_cast<int64_t>(all.size());
-    const std::vector<int64_t> some = {17 % n, 0, 5 % n, n - 1};
-    std::vector<float> sub;
-    model.upsample_masks(some, sub);
-    const size_t plane = static_cast<size_t>(im.height) * im.width;
-    ASSERT_EQ(sub.size(), some.size() * plane);
-    for (size_t i = 0; i < some.size(); ++i)
-      EXPECT_TRUE(std::equal(sub.begin() + i * plane, sub.begin() + (i + 1) * plane, logits.begin() + some[i] * plane))
-          << some[i];
-    EXPECT_THROW(model.upsample_masks({static_cast<int64_t>(all.size())}, sub), cls::Error);
-  }
-  {  // An empty batch: no predictions, and nothing of the previous batch left to upsample.
-    SamPredictorAmgModel empty(tiny_predictor());
-    empty.set_image(im.rgb.data(), im.height, im.width);
-    std::vector<float> none = {1.0f}, sub;
-    empty.predict_points(pts, none);
-    empty.predict_points({}, none);
-    EXPECT_TRUE(none.empty());
-    EXPECT_THROW(empty.upsample_masks({0}, sub), cls::Error);
-  }
-  const size_t plane = static_cast<size_t>(im.height) * im.width;
-  for (size_t p = 0; p < pts.size(); ++p)
-    for (size_t k = 0; k < per_point; ++k) {
-      const float* m = logits.data() + (p * per_point + k) * plane;
-      EXPECT_NEAR(ious[p * per_point + k], dump["iou_predictions"][p][k].get<double>(), 1e-5);
-      const auto& s = dump["stability_score"][p][k];
-      const float stab = stability_score(m, im.height, im.width, params.mask_threshold,
-                                         static_cast<float>(params.stability_score_offset));
-      if (s.is_number()) EXPECT_NEAR(stab, s.get<double>(), 2e-3) << p << " " << k;
-      else EXPECT_TRUE(std::isnan(stab)) << p << " " << k;  // 0/0
-      int64_t area = 0;
-      for (size_t i = 0; i < plane; ++i) area += m[i] > 0.0f;
-      EXPECT_NEAR(area, dump["mask_area"][p][k].get<int64_t>(), 3) << p << " " << k;
+  // One thread, and two: on the CPU the slices of a batch decode side by side (sam_amg_model.cpp), each
+  // writing its own part of the outputs.
+  struct RestoreThreads {
+    int threads = at::get_num_threads();
+    ~RestoreThreads() { at::set_num_threads(threads); }
+  } restore;
+  for (const int threads : {1, 2}) {
+    SCOPED_TRACE(std::to_string(threads) + " threads");
+    at::set_num_threads(threads);
+    SamPredictorAmgModel model(tiny_predictor());
+    model.set_image(im.rgb.data(), im.height, im.width);
+    std::vector<float> logits, ious;
+    model.predict_points(pts, ious);
+    const size_t per_point = static_cast<size_t>(cls::sam::testing::num_multimask_outputs());
+    ASSERT_EQ(dump["iou_predictions"].at(0).size(), per_point);
+    std::vector<int64_t> all(pts.size() * per_point);
+    for (size_t m = 0; m < all.size(); ++m) all[m] = static_cast<int64_t>(m);
+    model.upsample_masks(all, logits);
+    ASSERT_EQ(logits.size(), all.size() * static_cast<size_t>(im.height) * im.width);
+    {  // The generator upsamples only some masks: a subset, in any order, gives the same planes.
+      const int64_t n = static_cast<int64_t>(all.size());
+      const std::vector<int64_t> some = {17 % n, 0, 5 % n, n - 1};
+      std::vector<float> sub;
+      model.upsample_masks(some, sub);
+      const size_t plane = static_cast<size_t>(im.height) * im.width;
+      ASSERT_EQ(sub.size(), some.size() * plane);
+      for (size_t i = 0; i < some.size(); ++i)
+        EXPECT_TRUE(std::equal(sub.begin() + i * plane, sub.begin() + (i + 1) * plane, logits.begin() + some[i] * plane))
+            << some[i];
+      EXPECT_THROW(model.upsample_masks({static_cast<int64_t>(all.size())}, sub), cls::Error);
     }
+    {  // An empty batch: no predictions, and nothing of the previous batch left to upsample.
+      SamPredictorAmgModel empty(tiny_predictor());
+      empty.set_image(im.rgb.data(), im.height, im.width);
+      std::vector<float> none = {1.0f}, sub;
+      empty.predict_points(pts, none);
+      empty.predict_points({}, none);
+      EXPECT_TRUE(none.empty());
+      EXPECT_THROW(empty.upsample_masks({0}, sub), cls::Error);
+    }
+    const size_t plane = static_cast<size_t>(im.height) * im.width;
+    for (size_t p = 0; p < pts.size(); ++p)
+      for (size_t k = 0; k < per_point; ++k) {
+        const float* m = logits.data() + (p * per_point + k) * plane;
+        EXPECT_NEAR(ious[p * per_point + k], dump["iou_predictions"][p][k].get<double>(), 1e-5);
+        const auto& s = dump["stability_score"][p][k];
+        const float stab = stability_score(m, im.height, im.width, params.mask_threshold,
+                                           static_cast<float>(params.stability_score_offset));
+        if (s.is_number()) EXPECT_NEAR(stab, s.get<double>(), 2e-3) << p << " " << k;
+        else EXPECT_TRUE(std::isnan(stab)) << p << " " << k;  // 0/0
+        int64_t area = 0;
+        for (size_t i = 0; i < plane; ++i) area += m[i] > 0.0f;
+        EXPECT_NEAR(area, dump["mask_area"][p][k].get<int64_t>(), 3) << p << " " << k;
+      }
+  }
 }
 
 TEST(SamAmgRun, RelaxedMatchesReference) { check_run("relaxed"); }

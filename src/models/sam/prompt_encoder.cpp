@@ -109,8 +109,12 @@ PromptEmbeddings PromptEncoderImpl::forward(const torch::Tensor& point_coords, c
   if (masks.defined())
     out.dense = embed_masks(masks);
   else
-    out.dense = no_mask_embed->weight.reshape({1, -1, 1, 1}).expand({bs, -1, image_embedding_size.first, image_embedding_size.second});
+    out.dense = dense_without_mask(bs);
   return out;
+}
+
+torch::Tensor PromptEncoderImpl::dense_without_mask(int64_t bs) const {
+  return no_mask_embed->weight.reshape({1, -1, 1, 1}).expand({bs, -1, image_embedding_size.first, image_embedding_size.second});
 }
 
 }  // namespace cls::sam

@@ -40,6 +40,8 @@ struct PromptEncoderImpl : torch::nn::Module {
   torch::Tensor embed_boxes(const torch::Tensor& boxes) const;
   torch::Tensor embed_masks(const torch::Tensor& masks);
   torch::Tensor get_dense_pe() const;  // [1, C, 64, 64]
+  // The dense embedding of prompts without mask input: no_mask_embed broadcast to [bs, C, 64, 64].
+  torch::Tensor dense_without_mask(int64_t bs) const;
   torch::Tensor point_embedding(size_t i) const;  // point_embeddings.i.weight [1, C]
 
   int64_t embed_dim;

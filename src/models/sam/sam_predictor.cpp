@@ -45,6 +45,14 @@ void SamPredictor::reset_image() {
   original_hw_ = input_hw_ = {0, 0};
 }
 
+void SamPredictor::share_image() {
+  if (!is_image_set()) throw Error("SAM: set_image must be called before predict");
+  if (shared_image_.defined()) return;
+  torch::NoGradGuard no_grad;
+  shared_image_ = model_->mask_decoder->share_image(features_, model_->prompt_encoder->get_dense_pe(),
+                                                    model_->prompt_encoder->dense_without_mask(1));
+}
+
 SamPrediction SamPredictor::predict(const SamPrompt& prompt, bool multimask_output, bool return_logits) {
   if (!is_image_set()) throw Error("SAM: set_image must be called before predict");
   if (prompt.points.size() != prompt.labels.size()) throw Error("SAM: every prompt point needs a label");
@@ -86,8 +94,7 @@ SamPrediction SamPredictor::predict_batch(const torch::Tensor& point_coords, con
                                                    on_device(mask_input));
   // Without mask input, the image side (with its positional encoding) is made once per image.
   const bool no_mask = !mask_input.defined();
-  if (no_mask && !shared_image_.defined())
-    shared_image_ = model_->mask_decoder->share_image(features_, model_->prompt_encoder->get_dense_pe(), emb.dense);
+  if (no_mask) share_image();
   const auto dec = no_mask ? model_->mask_decoder->forward(features_, torch::Tensor(), emb.sparse, emb.dense,
                                                            multimask_output, &shared_image_)
                            : model_->mask_decoder->forward(features_, model_->prompt_encoder->get_dense_pe(),

@@ -55,6 +55,11 @@ class SamPredictor {
                               const torch::Tensor& boxes, const torch::Tensor& mask_input, bool multimask_output = true,
                               bool return_logits = false, bool upsample = true);
 
+  // Makes the decoder's image side for prompts without mask input now (predict_batch makes it at the
+  // first such prompt). After it, predict_batch without mask input only reads the predictor, so
+  // several threads may call it at once.
+  void share_image();
+
   bool is_image_set() const { return features_.defined(); }
   const torch::Tensor& features() const { return features_; }
   std::pair<int, int> original_size() const { return original_hw_; }
@@ -68,8 +73,7 @@ class SamPredictor {
   ResizeLongestSide transform_;
   torch::Tensor features_;
   std::pair<int, int> original_hw_{0, 0}, input_hw_{0, 0};
-  // The decoder's image side for prompts without mask input, made at the first such prediction for
-  // the image (MaskDecoderImpl::share_image).
+  // The decoder's image side for prompts without mask input, made by share_image (MaskDecoderImpl::share_image).
   SharedImageSide shared_image_;
 };
 

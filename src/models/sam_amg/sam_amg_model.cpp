@@ -15,8 +15,11 @@ namespace cls::amg {
 namespace {
 
 // The reference decodes a whole points_per_batch (64) at once and upsamples every mask of it
-// through a 1024 x 1024 plane: tensors of 64-600 MB per step. Slices of at most sam::kCpuBlockBytes.
-int64_t slice_count(int64_t bytes_per_item) { return std::max<int64_t>(1, sam::kCpuBlockBytes / std::max<int64_t>(1, bytes_per_item)); }
+// through a 1024 x 1024 plane: tensors of 64-600 MB per step. Slices whose largest tensor stays within
+// budget (at most sam::kCpuBlockBytes in flight: below glibc's mmap ceiling, so freed blocks are reused).
+int64_t slice_count(int64_t bytes_per_item, int64_t budget = sam::kCpuBlockBytes) {
+  return std::max<int64_t>(1, budget / std::max<int64_t>(1, bytes_per_item));
+}
 
 }  // namespace
 
@@ -40,29 +43,51 @@ void SamPredictorAmgModel::predict_points(const std::vector<Point2d>& points_102
   // embedding side, i.e. 2 * C * side^2 floats.
   const auto& cfg = predictor_.model()->config;
   const int64_t side = cfg.image_embedding_size();
-  const int64_t step = device.is_cpu() ? slice_count(2 * cfg.prompt_embed_dim * side * side * 4) : b;
+  // On the CPU the threads decode slices side by side: each within its share of kCpuBlockBytes (a
+  // thread's blocks then stay in one glibc heap, whose release and refill cost page faults), and at
+  // least one slice per thread (a small model fits a whole batch in one).
+  const int64_t threads = at::get_num_threads();
+  const int64_t step =
+      device.is_cpu()
+          ? std::min(slice_count(2 * cfg.prompt_embed_dim * side * side * 4, sam::kCpuBlockBytes / threads),
+                     (b + threads - 1) / threads)
+          : b;
   iou_predictions.clear();
   if (b == 0) {  // nothing to upsample from this batch
     low_res_logits_ = torch::empty({0, 1, 0, 0}, torch::TensorOptions().device(device));
     return;
   }
-  const ScopedBlasThreads blas(1);  // see core/blas_threads.h
-  for (int64_t s = 0; s < b; s += step) {
-    const int64_t e = std::min(b, s + step);
+  const int64_t per = cfg.num_multimask_outputs;  // masks per prompt
+  const int64_t low_side = 4 * side;
+  const std::vector<int64_t> shape = {b * per, 1, low_side, low_side};
+  const auto options = predictor_.features().options();  // the decoder's dtype and device
+  if (!low_res_logits_.defined() || low_res_logits_.sizes() != shape || low_res_logits_.dtype() != options.dtype() ||
+      low_res_logits_.device() != options.device())
+    low_res_logits_ = torch::empty(shape, options);
+  iou_predictions.assign(static_cast<size_t>(b * per), 0.f);
+  const auto decode = [&](int64_t s, int64_t e) {
     const sam::SamPrediction pred =
         predictor_.predict_batch(coords.slice(0, s, e), labels.slice(0, s, e), torch::Tensor(), torch::Tensor(),
                                  /*multimask_output=*/true, /*return_logits=*/true, /*upsample=*/false);
     // One channel per mask: bilinear interpolation works plane by plane, so upsampling a subset gives
     // the same values as upsampling the whole [B, 3] batch. The buffer is kept across batches.
     const auto low = pred.low_res_logits.flatten(0, 1).unsqueeze(1);
-    const int64_t per = low.size(0) / (e - s);  // masks per prompt
-    const std::vector<int64_t> shape = {b * per, 1, low.size(2), low.size(3)};
-    if (s == 0 && (!low_res_logits_.defined() || low_res_logits_.sizes() != shape || low_res_logits_.device() != low.device()))
-      low_res_logits_ = torch::empty(shape, low.options());
+    if (low.size(0) != (e - s) * per || low.size(2) != low_side || low.size(3) != low_side)
+      throw Error("AMG: the SAM decoder returned masks of an unexpected shape");
     low_res_logits_.slice(0, s * per, e * per).copy_(low);
     const auto ious = pred.iou_predictions.to(torch::kCPU, torch::kFloat32).contiguous();
-    iou_predictions.insert(iou_predictions.end(), ious.data_ptr<float>(), ious.data_ptr<float>() + ious.numel());
-  }
+    std::copy(ious.data_ptr<float>(), ious.data_ptr<float>() + ious.numel(), iou_predictions.begin() + s * per);
+  };
+  if (!device.is_cpu()) return decode(0, b);
+  // On the CPU every slice decodes on one of LibTorch's threads, OpenBLAS held to the calling thread:
+  // a slice's products are small, and with them handed to OpenBLAS one core decoded while LibTorch's
+  // other threads spun (docs/benchmarks.md). The slices write disjoint parts of the outputs.
+  predictor_.share_image();
+  const ScopedBlasThreads blas(1);  // see core/blas_threads.h
+  const int64_t slices = (b + step - 1) / step;
+  at::parallel_for(0, slices, 1, [&](int64_t first, int64_t last) {
+    for (int64_t i = first; i < last; ++i) decode(i * step, std::min(b, (i + 1) * step));
+  });
 }
 
 void SamPredictorAmgModel::upsample_masks(const std::vector<int64_t>& indices, std::vector<float>& mask_logits) {
