@@ -12,7 +12,8 @@ bool reuse_freed_memory() {
   if (tunables && std::strstr(tunables, "glibc.malloc.")) return false;
   const int max_block = static_cast<int>(kHeapReuseMaxBlock);
   // both: a fixed trim threshold alone also fixes the mmap threshold at its 128 KiB start
-  return mallopt(M_MMAP_THRESHOLD, max_block) == 1 && mallopt(M_TRIM_THRESHOLD, max_block) == 1;
+  return mallopt(M_MMAP_THRESHOLD, max_block) == 1 && mallopt(M_TRIM_THRESHOLD, max_block) == 1 &&
+         mallopt(M_ARENA_MAX, 1) == 1;
 }
 
 }  // namespace cls

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "cli_runner.h"
 #include "core/args.h"
@@ -179,6 +180,24 @@ TEST(HeapReuse, AFreedLargeBlockIsReusedWithoutPageFaults) {
   ASSERT_TRUE(reuse_freed_memory());
   faults_to_fill_and_free(bytes);  // now from the heap, which keeps it
   EXPECT_LT(faults_to_fill_and_free(bytes), pages / 100);
+}
+
+// Another thread's arena keeps heaps of at most 64 MiB: there a 64 MiB block is mapped afresh on every
+// malloc whatever the thresholds, unless every thread shares the main arena.
+TEST(HeapReuse, AFreedLargeBlockIsReusedOnAnotherThread) {
+  const char* tunables = std::getenv("GLIBC_TUNABLES");
+  if (tunables && std::strstr(tunables, "glibc.malloc.")) GTEST_SKIP() << "GLIBC_TUNABLES sets malloc: " << tunables;
+  const std::size_t bytes = std::size_t(64) << 20;
+  const long pages = static_cast<long>(bytes / static_cast<std::size_t>(sysconf(_SC_PAGESIZE)));
+  ASSERT_TRUE(reuse_freed_memory());
+  long first = -1, again = -1;
+  std::thread worker([&] {
+    first = faults_to_fill_and_free(bytes);
+    again = faults_to_fill_and_free(bytes);
+  });
+  worker.join();
+  ASSERT_GE(first, 0);
+  EXPECT_LT(again, pages / 100);
 }
 
 TEST(HeapReuse, TheUsersMallocTunablesWin) {
