@@ -17,8 +17,10 @@ namespace cls {
 constexpr std::size_t kHeapReuseMaxBlock = std::size_t(1) << 30;
 
 // Raises glibc's mmap and trim thresholds to kHeapReuseMaxBlock (M_MMAP_THRESHOLD, M_TRIM_THRESHOLD)
-// and gives every thread the main arena (M_ARENA_MAX 1). Call once at the start of a program, before large allocations. Does nothing and returns false when
-// the user set glibc's malloc tunables (GLIBC_TUNABLES with "glibc.malloc."): theirs win.
+// and gives every thread the main arena (M_ARENA_MAX 1). Call once at the start of a program, before
+// large allocations and before any other thread allocates (a thread keeps the arena it has). Does
+// nothing and returns false when the user set glibc's malloc tunables (GLIBC_TUNABLES with
+// "glibc.malloc."): theirs win.
 bool reuse_freed_memory();
 
 }  // namespace cls

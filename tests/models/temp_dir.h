@@ -12,10 +12,10 @@ namespace cls::test {
 
 struct TempDir {
   std::filesystem::path path;
-  TempDir() {
+  explicit TempDir(const std::string& prefix = "cls_models_test_") {
     static int counter = 0;
     path = std::filesystem::temp_directory_path() /
-           ("cls_models_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+           (prefix + std::to_string(::getpid()) + "_" + std::to_string(counter++));
     std::filesystem::create_directories(path);
   }
   ~TempDir() { std::filesystem::remove_all(path); }

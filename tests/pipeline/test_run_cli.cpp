@@ -9,6 +9,7 @@
 #include "cli_runner.h"
 #include "core/atomic_file.h"
 #include "core/exit_codes.h"
+#include "models/temp_dir.h"
 
 namespace fs = std::filesystem;
 using cls::test::run_cli;
@@ -17,11 +18,17 @@ namespace {
 
 const std::string kFzk = CLS_TEST_DATA "/citygml/fzk-haus/fzk_haus_lod3_v2.gml";
 
+// The shared scene and what the tests make beside it, in one directory per process that goes with the
+// process (ctest runs every test in a process of its own).
+fs::path work_path(const std::string& name) {
+  static const cls::test::TempDir root("cls_run_cli_");
+  return root.path / name;
+}
+
 // One tiny synthetic scene shared by the tests of this file (4 views of 120x90).
 const fs::path& scene_dir() {
   static const fs::path dir = [] {
-    const fs::path d = fs::temp_directory_path() / ("cls_run_scene_" + std::to_string(::getpid()));
-    fs::remove_all(d);
+    const fs::path d = work_path("scene");
     const auto r = run_cli("-q synth --city " + kFzk + " --out " + d.string() +
                            " --views 4 --width 120 --height 90 --gt-density 20 --seed 3");
     EXPECT_EQ(r.status, 0) << r.err;
@@ -34,7 +41,7 @@ nlohmann::json read_json(const fs::path& p) { return nlohmann::json::parse(cls::
 
 // No weights anywhere the model registry looks (for this test process and the commands it runs).
 void hide_model_weights() {
-  const fs::path no_models = scene_dir().string() + "_no_models";
+  const fs::path no_models = work_path("no_models");
   fs::create_directories(no_models);
   ::setenv("HOME", no_models.c_str(), 1);
   ::setenv("XDG_CACHE_HOME", no_models.c_str(), 1);
@@ -68,7 +75,7 @@ double label_agreement(const fs::path& scene, const fs::path& out, int views) {
 }  // namespace
 
 TEST(RunCli, LabelMapsAgreeWithTheSyntheticGroundTruth) {
-  const fs::path out = scene_dir().string() + "_out1";
+  const fs::path out = work_path("out1");
   fs::remove_all(out);
   // --models real without weights: the run stops before the features with its own exit status,
   // saying how to get them.
@@ -122,7 +129,7 @@ TEST(RunCli, AlignAutoRefinesAMisplacedCityModelBeforeTheLabelMaps) {
 }
 
 TEST(RunCli, SecondRunReusesLabelsAndAChangedTransformRedoesThem) {
-  const fs::path out = scene_dir().string() + "_out2";
+  const fs::path out = work_path("out2");
   fs::remove_all(out);
   // --align off: the transform given is the one the label maps use, whatever a refinement would find.
   const std::string run = "run " + scene_dir().string() + " --models real --align off --out " + out.string();
@@ -147,9 +154,9 @@ TEST(RunCli, SecondRunReusesLabelsAndAChangedTransformRedoesThem) {
 }
 
 TEST(RunCli, BadInputsFailWithTheFileNamedAndWriteNothing) {
-  const fs::path out = scene_dir().string() + "_out3";
+  const fs::path out = work_path("out3");
   fs::remove_all(out);
-  const fs::path bad_config = scene_dir().string() + "_bad_config.json";
+  const fs::path bad_config = work_path("bad_config.json");
   cls::write_text_atomic(bad_config, "{\"city_model\": ");
   auto r = run_cli("run " + scene_dir().string() + " --out " + out.string() + " --config " + bad_config.string());
   EXPECT_EQ(r.status, 1);
@@ -161,7 +168,7 @@ TEST(RunCli, BadInputsFailWithTheFileNamedAndWriteNothing) {
   EXPECT_NE(r.err.find("/nonexistent/model.gml"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
 
-  const fs::path empty = scene_dir().string() + "_empty";
+  const fs::path empty = work_path("empty");
   fs::create_directories(empty);
   r = run_cli("run " + empty.string() + " --out " + out.string());
   EXPECT_EQ(r.status, 2) << r.err;  // no city model anywhere: a usage error
@@ -242,7 +249,7 @@ TEST(RunCli, TinyModelsRunEveryStageOnTheBundledExampleAndASecondRunReusesThem) 
 // them but not the label maps; a changed city transform redoes the label maps and the features but
 // not the photometric model, which never sees the city model.
 TEST(RunCli, ChangedInputsRedoExactlyTheStagesThatDependOnThem) {
-  const fs::path scene = scene_dir().string() + "_reuse";
+  const fs::path scene = work_path("reuse");
   fs::remove_all(scene);
   fs::copy(scene_dir(), scene, fs::copy_options::recursive);
   const fs::path out = scene / "out";

@@ -30,6 +30,7 @@ void SamPredictorAmgModel::set_image(const uint8_t* rgb, int height, int width) 
 
 void SamPredictorAmgModel::predict_points(const std::vector<Point2d>& points_1024,
                                           std::vector<float>& iou_predictions) {
+  if (!predictor_.is_image_set()) throw Error("AMG: predict_points before set_image");
   const int64_t b = static_cast<int64_t>(points_1024.size());
   // float64 points, as the reference AMG hands NumPy coordinates to predict_torch.
   auto coords = torch::empty({b, 1, 2}, torch::kFloat64);
@@ -43,9 +44,8 @@ void SamPredictorAmgModel::predict_points(const std::vector<Point2d>& points_102
   // embedding side, i.e. 2 * C * side^2 floats.
   const auto& cfg = predictor_.model()->config;
   const int64_t side = cfg.image_embedding_size();
-  // On the CPU the threads decode slices side by side: each within its share of kCpuBlockBytes (a
-  // thread's blocks then stay in one glibc heap, whose release and refill cost page faults), and at
-  // least one slice per thread (a small model fits a whole batch in one).
+  // On the CPU the threads decode slices side by side: each within its share of kCpuBlockBytes, and at
+  // least one slice per thread.
   const int64_t threads = at::get_num_threads();
   const int64_t step =
       device.is_cpu()
@@ -79,9 +79,9 @@ void SamPredictorAmgModel::predict_points(const std::vector<Point2d>& points_102
     std::copy(ious.data_ptr<float>(), ious.data_ptr<float>() + ious.numel(), iou_predictions.begin() + s * per);
   };
   if (!device.is_cpu()) return decode(0, b);
-  // On the CPU every slice decodes on one of LibTorch's threads, OpenBLAS held to the calling thread:
-  // a slice's products are small, and with them handed to OpenBLAS one core decoded while LibTorch's
-  // other threads spun (docs/benchmarks.md). The slices write disjoint parts of the outputs.
+  // On the CPU the slices are split over LibTorch's threads (a run of them each), OpenBLAS held to the
+  // calling thread: with the slices' small products handed to OpenBLAS one core decoded while
+  // LibTorch's other threads spun (docs/benchmarks.md). The slices write disjoint parts of the outputs.
   predictor_.share_image();
   const ScopedBlasThreads blas(1);  // see core/blas_threads.h
   const int64_t slices = (b + step - 1) / step;
