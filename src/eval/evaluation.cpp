@@ -391,9 +391,14 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
     const Scores3d s3 = score_matched(matching, centre_labels, K);
     // What these Gaussians allow: the labelling that gets the most matched GT points right.
     const Scores3d best = score_matched(matching, best_centre_labels(matching, K), K);
+    const std::vector<int64_t> support = centres_per_class(matching, K);
     auto per_class_of = [&](const Scores3d& s) {
       nlohmann::json per_class = nlohmann::json::object();
-      for (int k = 0; k < K; ++k) per_class[ec.names[k].get<std::string>()] = scores_json(s.scores.per_class[size_t(k)]);
+      for (int k = 0; k < K; ++k) {
+        nlohmann::json c = scores_json(s.scores.per_class[size_t(k)]);
+        c["gaussians"] = support[size_t(k)];
+        per_class[ec.names[k].get<std::string>()] = c;
+      }
       return per_class;
     };
     return nlohmann::json{{"coverage", s3.coverage},

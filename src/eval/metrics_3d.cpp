@@ -79,6 +79,21 @@ std::vector<int32_t> best_centre_labels(const GtMatching& g, int num_classes) {
   return out;
 }
 
+std::vector<int64_t> centres_per_class(const GtMatching& g, int num_classes) {
+  const size_t K = size_t(std::max(num_classes, 0));
+  std::vector<std::vector<int64_t>> centres(K);
+  for (size_t i = 0; i < g.labels.size(); ++i) {
+    if (g.labels[i] >= num_classes) throw std::invalid_argument("centres_per_class: a GT label is not below num_classes");
+    if (g.matching.match[i] >= 0) centres[size_t(g.labels[i])].push_back(g.matching.match[i]);
+  }
+  std::vector<int64_t> out(K, 0);
+  for (size_t k = 0; k < K; ++k) {
+    std::sort(centres[k].begin(), centres[k].end());
+    out[k] = std::unique(centres[k].begin(), centres[k].end()) - centres[k].begin();
+  }
+  return out;
+}
+
 std::vector<int32_t> best_centre_labels(const std::vector<Vec3d>& gt_points, const std::vector<int32_t>& gt_labels,
                                         const std::vector<Vec3d>& centres, int num_classes, double radius) {
   return best_centre_labels(match_gt(gt_points, gt_labels, centres, radius), num_classes);

@@ -163,6 +163,19 @@ TEST(KdTree, MatchesBruteForceOnRandomPoints) {
   EXPECT_EQ(KdTree({}).nearest({0, 0, 0}, 1.0).index, -1);
 }
 
+TEST(Metrics3d, CentresPerClassCountsTheDistinctCentresOfItsMatchedPoints) {
+  // Class 0: two points on centre 0, one on centre 1; class 1: three points on centre 0; class 2: one
+  // point beyond the radius (unmatched); a point of no evaluated class (-1) counts for none.
+  const std::vector<Vec3d> centres{{0, 0, 0}, {5, 0, 0}};
+  const std::vector<Vec3d> gt{{0.01, 0, 0}, {0, 0.02, 0}, {5, 0.05, 0}, {0.1, 0, 0},
+                              {0, 0.1, 0},  {0, 0, 0.1},  {2.5, 0, 0}, {4.9, 0, 0}};
+  const std::vector<int32_t> labels{0, 0, 0, 1, 1, 1, 2, -1};
+  const GtMatching m = match_gt(gt, labels, centres, 0.2);
+  EXPECT_EQ(centres_per_class(m, 3), (std::vector<int64_t>{2, 1, 0}));
+  EXPECT_EQ(centres_per_class(m, 4), (std::vector<int64_t>{2, 1, 0, 0}));
+  EXPECT_THROW(centres_per_class(m, 2), std::invalid_argument);
+}
+
 TEST(Metrics3d, BestCentreLabelsAreTheMajorityOfTheMatchedPoints) {
   // One class-0 point right at centre 0, five class-1 points around it, two class-0 points at centre 1:
   // the class of the nearest GT point would label centre 0 wrongly for five points.
