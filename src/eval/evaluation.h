@@ -47,7 +47,7 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
                               const Taxonomy& taxonomy, const EvaluationOptions& options);
 
 // The tables' layout version: `run` recomputes an evaluation written by another version.
-inline constexpr const char* kEvaluationTables = "2026-11-24 held-out phrases, held-out 2D views";
+inline constexpr const char* kEvaluationTables = "2026-11-26 held-out phrases, held-out 2D views, 3D Gaussians per class";
 
 // The label maps' row name in the tables.
 inline constexpr const char* kLabelMapsMethod = "city-model-labels";

@@ -83,7 +83,8 @@ std::vector<int64_t> centres_per_class(const GtMatching& g, int num_classes) {
   const size_t K = size_t(std::max(num_classes, 0));
   std::vector<std::vector<int64_t>> centres(K);
   for (size_t i = 0; i < g.labels.size(); ++i) {
-    if (g.labels[i] >= num_classes) throw std::invalid_argument("centres_per_class: a GT label is not below num_classes");
+    if (g.labels[i] < 0 || g.labels[i] >= num_classes)
+      throw std::invalid_argument("centres_per_class: a GT label is not in [0, num_classes)");
     if (g.matching.match[i] >= 0) centres[size_t(g.labels[i])].push_back(g.matching.match[i]);
   }
   std::vector<int64_t> out(K, 0);

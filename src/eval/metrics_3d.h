@@ -49,11 +49,11 @@ Scores3d score_3d(const std::vector<Vec3d>& gt_points, const std::vector<int32_t
 // accuracy is the most any field on these centres can reach under this matching (its mIoU is not a
 // strict bound, but close). Arguments as for score_3d.
 std::vector<int32_t> best_centre_labels(const GtMatching& matching, int num_classes);
-
-// Per class: how many distinct centres its matched GT points are matched to. A class held by a handful
-// of Gaussians gets a 3D score that moves by tens of points when one of them changes its label.
-std::vector<int64_t> centres_per_class(const GtMatching& matching, int num_classes);
 std::vector<int32_t> best_centre_labels(const std::vector<Vec3d>& gt_points, const std::vector<int32_t>& gt_labels,
                                         const std::vector<Vec3d>& centres, int num_classes, double radius);
+
+// Per class: how many distinct centres its matched GT points are matched to. A class held by a handful
+// of Gaussians gets a 3D score that moves by many points when one of them changes its label.
+std::vector<int64_t> centres_per_class(const GtMatching& matching, int num_classes);
 
 }  // namespace cls

@@ -191,6 +191,15 @@ TEST(Evaluation, ACorrectFieldScoresHighAndWritesViews) {
   EXPECT_EQ(evaluated, in_gt);
   EXPECT_TRUE(r["2d"]["per_class"].contains("wall"));
   EXPECT_GT(r["2d"]["per_class"]["wall"]["images"].get<int>(), 0);
+  // Per class, the Gaussians its matched GT points go to: at least one and at most one per point, the
+  // same count in the best labelling (it depends on the matching only).
+  for (const auto& [name, c] : r["3d"]["per_class"].items()) {
+    const int64_t gaussians = c["gaussians"].get<int64_t>(), points = c["gt"].get<int64_t>();
+    EXPECT_LE(gaussians, points) << name;
+    EXPECT_EQ(gaussians > 0, points > 0) << name;
+    EXPECT_LE(gaussians, r["3d"]["gaussians"].get<int64_t>()) << name;
+    EXPECT_EQ(r["3d"]["best_labelling"]["per_class"][name]["gaussians"], c["gaussians"]) << name;
+  }
   EXPECT_TRUE(fs::exists(out / "views" / "0000_gt.png"));
   EXPECT_TRUE(fs::exists(out / "views" / "0000_pred.png"));
 }
