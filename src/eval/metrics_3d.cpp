@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 #include "eval/kd_tree.h"
 
@@ -64,13 +65,25 @@ Scores3d score_3d(const std::vector<Vec3d>& gt_points, const std::vector<int32_t
   return score_matched(match_gt(gt_points, gt_labels, centres, radius), centre_labels, num_classes);
 }
 
-std::vector<int32_t> best_centre_labels(const GtMatching& g, int num_classes) {
+namespace {
+
+// The matched GT points per centre and class: votes[c * K + k], K = max(num_classes, 1).
+std::vector<int64_t> centre_votes(const GtMatching& g, int num_classes, const char* caller) {
   const size_t K = size_t(std::max(num_classes, 1));
   std::vector<int64_t> votes(g.num_centres * K, 0);
   for (size_t i = 0; i < g.labels.size(); ++i) {
-    if (g.labels[i] >= num_classes) throw std::invalid_argument("best_centre_labels: a GT label is not below num_classes");
+    if (g.labels[i] < 0 || g.labels[i] >= num_classes)
+      throw std::invalid_argument(std::string(caller) + ": a GT label is not in [0, num_classes)");
     if (g.matching.match[i] >= 0) ++votes[size_t(g.matching.match[i]) * K + size_t(g.labels[i])];
   }
+  return votes;
+}
+
+}  // namespace
+
+std::vector<int32_t> best_centre_labels(const GtMatching& g, int num_classes) {
+  const size_t K = size_t(std::max(num_classes, 1));
+  const std::vector<int64_t> votes = centre_votes(g, num_classes, "best_centre_labels");
   std::vector<int32_t> out(g.num_centres, 0);
   for (size_t c = 0; c < g.num_centres; ++c) {
     const int64_t* v = votes.data() + c * K;
@@ -80,18 +93,11 @@ std::vector<int32_t> best_centre_labels(const GtMatching& g, int num_classes) {
 }
 
 std::vector<int64_t> centres_per_class(const GtMatching& g, int num_classes) {
-  const size_t K = size_t(std::max(num_classes, 0));
-  std::vector<std::vector<int64_t>> centres(K);
-  for (size_t i = 0; i < g.labels.size(); ++i) {
-    if (g.labels[i] < 0 || g.labels[i] >= num_classes)
-      throw std::invalid_argument("centres_per_class: a GT label is not in [0, num_classes)");
-    if (g.matching.match[i] >= 0) centres[size_t(g.labels[i])].push_back(g.matching.match[i]);
-  }
-  std::vector<int64_t> out(K, 0);
-  for (size_t k = 0; k < K; ++k) {
-    std::sort(centres[k].begin(), centres[k].end());
-    out[k] = std::unique(centres[k].begin(), centres[k].end()) - centres[k].begin();
-  }
+  const size_t K = size_t(std::max(num_classes, 1));
+  const std::vector<int64_t> votes = centre_votes(g, num_classes, "centres_per_class");
+  std::vector<int64_t> out(size_t(std::max(num_classes, 0)), 0);
+  for (size_t c = 0; c < g.num_centres; ++c)
+    for (size_t k = 0; k < out.size(); ++k) out[k] += votes[c * K + k] > 0;
   return out;
 }
 
