@@ -1,8 +1,9 @@
 // Language-field costs (docs/benchmarks.md):
 // 1. training, ms per iteration with 128 channels: rasterize_features forward + L1 loss against a
 //    random target latent map + backward into the per-Gaussian latents (geometry frozen, paper 3.3);
-// 2. querying, relevance maps per second at 1080p: render 128 channels, decode every pixel with the
-//    shared autoencoder (128 -> 256 -> 512), cosine with one query feature.
+// 2. querying, relevance maps per second at 1080p: render 128 channels, then every pixel's cosine of its
+//    decoded feature (shared autoencoder, 128 -> 256 -> 512) with one query feature, as `query` takes it
+//    (DecodedCosines: the hidden layer, then the last layer's triangular factor; src/query/relevance.h).
 // Scenes are random (seeded) Gaussians spread over the view frustum, as bench_splat's.
 // Usage: bench_language [--threads N] [--device cpu|cuda] [--train-scenes 200000@800x600,50000@480x360] ...
 // On CUDA every timed body ends with a device synchronisation, so the wall times are the GPU's.
@@ -26,6 +27,7 @@
 #include "core/error.h"
 #include "core/heap_reuse.h"
 #include "language/autoencoder.h"
+#include "query/relevance.h"
 #include "splat/compute_device.h"
 #include "splat/rasterize.h"
 
@@ -169,14 +171,14 @@ int bench_main(int argc, char** argv) {
     at::NoGradGuard no_grad;
     rendered = rasterize_features(s.means, s.scales, s.quats, s.opacities, latents, at::Tensor(), s.settings).image;
   });
+  const DecodedCosines cosines(linear_head_decoder(ae), query.reshape({1, -1}));
   const Timing decode = time_it(repeats, device, [&] {
     at::NoGradGuard no_grad;
     const at::Tensor pixels = rendered.reshape({-1, channels});
     relevance = at::empty({pixels.size(0)}, pixels.options());
     for (int64_t begin = 0; begin < pixels.size(0); begin += chunk) {
       const int64_t end = std::min(pixels.size(0), begin + chunk);
-      const at::Tensor f = ae.decode(pixels.slice(0, begin, end));
-      relevance.slice(0, begin, end).copy_(f.matmul(query) / f.norm(2, {1}).clamp_min(1e-8));
+      relevance.slice(0, begin, end).copy_(cosines(pixels.slice(0, begin, end)).squeeze(1));
     }
   });
   const double total_wall = render.wall_ms + decode.wall_ms, total_cpu = render.cpu_ms + decode.cpu_ms;

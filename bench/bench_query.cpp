@@ -71,7 +71,7 @@ int bench_main(int argc, char** argv) {
   torch::manual_seed(1);
   const at::Tensor latents = torch::rand({g.size(), latent});
   const Autoencoder ae(AutoencoderConfig{}, 1);
-  const LatentDecoder decode = [&](const at::Tensor& z) { return ae.decode(z); };
+  const LinearHeadDecoder decoder = linear_head_decoder(ae);
   const at::Tensor queries = torch::randn({1, 512}), canonical = torch::randn({4, 512});
   std::printf("%lld Gaussians, latent %d, decoder %d -> 256 -> 512, 1 text + 4 canonical phrases, %d threads\n",
               static_cast<long long>(g.size()), latent, latent, threads);
@@ -91,7 +91,7 @@ int bench_main(int argc, char** argv) {
       const double tr = bench::seconds_since(t0);
       const double c1 = bench::cpu_seconds();
       const auto t1 = Clock::now();
-      const RelevanceMaps m = relevance_maps(g, latents, decode, cam, pose, queries, canonical, chunk);
+      const RelevanceMaps m = relevance_maps(g, latents, decoder, cam, pose, queries, canonical, chunk);
       const double tm = bench::seconds_since(t1);
       const double c2 = bench::cpu_seconds();
       if (it >= 0) render_s += tr / iters, total_s += tm / iters, map_cpu += (c2 - c1) / iters;

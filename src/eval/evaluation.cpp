@@ -122,16 +122,15 @@ at::Tensor minmax_normalise(const at::Tensor& map) {
 // Cosine of every Gaussian's decoded latent at `level` with the prototypes: N x K.
 at::Tensor gaussian_cosines(const LanguageModel& model, int level, const at::Tensor& prototypes) {
   const at::Tensor& z = model.latents[size_t(level - 1)];
-  const int64_t N = z.size(0);
-  const at::Tensor p = unit_rows(prototypes.to(torch::kFloat32));
+  const int64_t N = z.size(0), D = model.autoencoder.config().input_dim;
+  if (prototypes.dim() != 2 || prototypes.size(1) != D)
+    throw Error("evaluate: the autoencoder decodes to " + std::to_string(D) + "-d features, the prototypes are " +
+                std::to_string(prototypes.size(-1)) + "-d (a different feature provider?)");
+  const DecodedCosines cosines(linear_head_decoder(model.autoencoder), prototypes);
   at::Tensor out = torch::empty({N, prototypes.size(0)}, torch::kFloat32);
   for (int64_t b = 0; b < N; b += kDecodeChunk) {
     const int64_t e = std::min(N, b + kDecodeChunk);
-    const at::Tensor d = model.autoencoder.decode(z.slice(0, b, e)).to(torch::kCPU, torch::kFloat32);
-    if (d.dim() != 2 || d.size(1) != p.size(1))
-      throw Error("evaluate: the autoencoder decodes to " + std::to_string(d.size(-1)) + "-d features, the prototypes are " +
-                  std::to_string(p.size(1)) + "-d (a different feature provider?)");
-    out.slice(0, b, e).copy_(unit_rows(d).matmul(p.t()));
+    out.slice(0, b, e).copy_(cosines(z.slice(0, b, e)));
   }
   return out;
 }

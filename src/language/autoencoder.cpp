@@ -155,12 +155,24 @@ struct Autoencoder::Impl {
   // Layer by layer, the linear layers through parallel_rows_linear (torch::linear while autograd
   // records, in training): a relevance map decodes millions of pixels on one thread pool.
   at::Tensor run_decoder(const at::Tensor& z) const {
+    const torch::nn::LinearImpl& last = output_layer();
+    const at::Tensor r = parallel_rows_linear(run_hidden(z), last.weight, last.bias);
+    return config.normalize_output ? l2_normalize(r) : r;
+  }
+  // Every decoder layer but the last, which is a Linear (AutoencoderNetImpl).
+  at::Tensor run_hidden(const at::Tensor& z) const {
     at::Tensor r = z;
+    const size_t before_last = net->decoder->size() - 1;
+    size_t i = 0;
     for (auto& layer : *net->decoder) {
+      if (i++ == before_last) break;
       if (const auto* linear = layer.ptr()->as<torch::nn::Linear>()) r = parallel_rows_linear(r, linear->weight, linear->bias);
       else r = layer.forward(r);
     }
-    return config.normalize_output ? l2_normalize(r) : r;
+    return r;
+  }
+  const torch::nn::LinearImpl& output_layer() const {
+    return *net->decoder->ptr(net->decoder->size() - 1)->as<torch::nn::Linear>();
   }
   c10::Device device() const { return net->parameters().front().device(); }
 
@@ -204,6 +216,16 @@ at::Tensor Autoencoder::decode(const at::Tensor& latents) const {
   const auto blas = blas_threads_for_split(z);  // models/parallel_linear.h
   return impl_->run_decoder(z);
 }
+
+at::Tensor Autoencoder::decode_hidden(const at::Tensor& latents) const {
+  at::Tensor z = impl_->prepare(latents, impl_->config.latent_dim(), "decode");
+  torch::NoGradGuard no_grad;
+  const auto blas = blas_threads_for_split(z);
+  return impl_->run_hidden(z);
+}
+
+const at::Tensor& Autoencoder::output_weight() const { return impl_->output_layer().weight; }
+const at::Tensor& Autoencoder::output_bias() const { return impl_->output_layer().bias; }
 
 at::Tensor reconstruction_loss(const at::Tensor& f, const at::Tensor& r, double lambda_cos) {
   if (f.dim() != 2 || !f.sizes().equals(r.sizes()))

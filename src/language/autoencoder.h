@@ -54,6 +54,12 @@ class Autoencoder {
   const AutoencoderConfig& config() const;
   at::Tensor encode(const at::Tensor& features) const;  // B x D -> B x latent (no grad, eval mode)
   at::Tensor decode(const at::Tensor& latents) const;   // B x latent -> B x D
+  // The decoder split before its last linear layer: decode(z) = n(decode_hidden(z) W^T + b), n the output
+  // normalisation when configured. Relevance maps use the split to take cosines of decoded features
+  // without forming them (query/relevance.h). B x latent -> B x H (H: the last layer's input size).
+  at::Tensor decode_hidden(const at::Tensor& latents) const;
+  const at::Tensor& output_weight() const;  // W, D x H
+  const at::Tensor& output_bias() const;    // b, D
   // Moves the weights (encode/decode then take inputs on any device and answer on this one).
   void to(const c10::Device& device);
   c10::Device device() const;

@@ -1,6 +1,7 @@
 #include "models/parallel_linear.h"
 
 #include <ATen/Parallel.h>
+#include <torch/torch.h>
 
 #include <algorithm>
 

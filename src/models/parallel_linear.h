@@ -4,7 +4,7 @@
 // the two take turns spinning and yielding on the same cores (the SAM encoder spent a third of its
 // time in libgomp spins and sched_yield, docs/benchmarks.md). Under ScopedBlasThreads(1), these split
 // the GEMMs over LibTorch's threads instead, each block one BLAS call on its own thread.
-#include <torch/torch.h>
+#include <ATen/core/Tensor.h>
 
 #include "core/blas_threads.h"
 
@@ -13,14 +13,14 @@ namespace cls {
 // Whether to split CPU work on x (and what derives from it) over LibTorch's threads by hand: on the
 // CPU, with more than one thread, and only where autograd records nothing (the worker threads do not
 // record it): grad mode off, or x not requiring grad.
-bool split_over_threads(const torch::Tensor& x);
+bool split_over_threads(const at::Tensor& x);
 
 // OpenBLAS held to the calling thread for a scope whose work on x is split over LibTorch's threads
 // (split_over_threads); otherwise left as it is.
-ScopedBlasThreads blas_threads_for_split(const torch::Tensor& x);
+ScopedBlasThreads blas_threads_for_split(const at::Tensor& x);
 
 // linear(x, weight, bias) with x's rows split over LibTorch's threads (when split_over_threads and
 // there are rows enough; else at::linear). x [..., in], weight [out, in], bias [out] or undefined.
-torch::Tensor parallel_rows_linear(const torch::Tensor& x, const torch::Tensor& weight, const torch::Tensor& bias);
+at::Tensor parallel_rows_linear(const at::Tensor& x, const at::Tensor& weight, const at::Tensor& bias);
 
 }  // namespace cls

@@ -191,7 +191,7 @@ json run_query(const QueryOptions& o) {
   json views_done = json::array();
   if (o.maps) {
     const at::Tensor canonical = provider->text_features(canonical_phrases()).to(device, torch::kFloat32);
-    const LatentDecoder decode = [&model](const at::Tensor& z) { return model.autoencoder.decode(z); };
+    const LinearHeadDecoder decoder = linear_head_decoder(model.autoencoder);
     std::map<int, std::vector<int64_t>> texts_of_level;
     for (int64_t k = 0; k < K; ++k) texts_of_level[level_of[k]].push_back(k);
 
@@ -204,7 +204,7 @@ json run_query(const QueryOptions& o) {
       const std::string stem = view_stem(view->name);
       for (const auto& [level, ks] : texts_of_level) {
         const at::Tensor idx = torch::tensor(ks, torch::kInt64).to(device);
-        const RelevanceMaps m = relevance_maps(geometry_on_device, latents_on_device[level - 1], decode, view->camera,
+        const RelevanceMaps m = relevance_maps(geometry_on_device, latents_on_device[level - 1], decoder, view->camera,
                                                view->pose, text_features.index_select(0, idx), canonical);
         for (size_t j = 0; j < ks.size(); ++j) {
           const int64_t k = ks[j];

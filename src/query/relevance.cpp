@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "models/parallel_linear.h"
 #include "splat/rasterize.h"
 
 namespace cls {
@@ -85,6 +86,44 @@ const std::vector<std::string>& canonical_phrases() {
   return phrases;
 }
 
+DecodedCosines::DecodedCosines(LinearHeadDecoder decoder, const at::Tensor& directions)
+    : hidden_(std::move(decoder.hidden)) {
+  const at::Tensor& W = decoder.weight;
+  if (!W.defined() || W.dim() != 2 || !hidden_)
+    throw Error("relevance: the decoder's last layer must have a D x H weight and hidden layers, got " + shape_of(W));
+  const int64_t D = W.size(0);
+  if (decoder.bias.defined() && (decoder.bias.dim() != 1 || decoder.bias.size(0) != D))
+    throw Error("relevance: the decoder's last bias must have " + std::to_string(D) + " values, got " +
+                shape_of(decoder.bias));
+  check_rows(directions, D, "relevance", "the query and canonical features");
+  at::NoGradGuard no_grad;
+  const auto cpu_double = torch::dtype(torch::kFloat64).device(torch::kCPU);
+  const at::Tensor w = W.detach().to(cpu_double);
+  const at::Tensor b = decoder.bias.defined() ? decoder.bias.detach().to(cpu_double) : torch::zeros({D}, cpu_double);
+  const auto [q, r] = at::linalg_qr(w, "reduced");  // q: D x k, r: k x H
+  const at::Tensor c = q.t().matmul(b), e = b - q.matmul(c);
+  const at::Tensor p = unit_rows(directions.detach().to(cpu_double));
+  const auto on_device = W.options().dtype(torch::kFloat32);
+  r_ = r.to(on_device);
+  c_ = c.to(on_device);
+  q_directions_ = p.matmul(q).to(on_device);
+  e_dot_ = p.matmul(e).to(on_device);
+  e_squared_ = e.dot(e).item<double>();
+}
+
+at::Tensor DecodedCosines::operator()(const at::Tensor& latents) const {
+  at::NoGradGuard no_grad;
+  const at::Tensor h = hidden_(latents).to(r_.device(), torch::kFloat32);
+  if (h.dim() != 2 || h.size(0) != latents.size(0) || h.size(1) != r_.size(1))
+    throw Error("relevance: the decoder's hidden layers gave " + shape_of(h) + " for " + shape_of(latents) +
+                " latents; its last layer takes " + std::to_string(r_.size(1)) + " values");
+  const auto blas = blas_threads_for_split(h);
+  const at::Tensor u = parallel_rows_linear(h, r_, c_);                // B x k
+  const at::Tensor dots = parallel_rows_linear(u, q_directions_, e_dot_);  // B x P
+  const at::Tensor norm = (u.square().sum(1, /*keepdim=*/true) + e_squared_).sqrt();
+  return torch::where(norm > 0, dots / norm, torch::zeros_like(dots));
+}
+
 RenderedLatents render_latents(const GaussianModel& gaussians, const at::Tensor& latents, const PinholeCamera& camera,
                                const Pose& pose) {
   if (!latents.defined() || latents.dim() != 2 || latents.size(0) != gaussians.size())
@@ -104,18 +143,20 @@ RenderedLatents render_latents(const GaussianModel& gaussians, const at::Tensor&
 
 namespace {
 
-// Calls `decode` on the rendered latents (P x L) of the pixels with alpha > 0, chunk by chunk, and hands
-// each chunk to `sink(rows, decoded)`: the pixel indices (int64) and their features (B x D float32). The
+// Calls `decode` (the decoder, or DecodedCosines) on the rendered latents (P x L) of the pixels with
+// alpha > 0, chunk by chunk, and hands each chunk to `sink(rows, decoded)`: the pixel indices (int64) and
+// their values (B x D float32). The
 // other pixels' latents are exactly zero (nothing was blended over the zero background, so alpha is 0
 // only there), so decode(0) is computed once and handed over as one row for all of them: decoded has one
 // row per index, or one row for every index. Views with sky or ground cost only their covered pixels.
 template <class Sink>
 void decode_covered(const at::Tensor& latents, const at::Tensor& alpha, const LatentDecoder& decode, int64_t chunk,
                     Sink&& sink) {
-  if (chunk <= 0) throw Error("render_decoded: chunk size must be positive");
+  if (chunk <= 0) throw Error("decoding rendered latents: the chunk size must be positive");
   auto checked = [&](const at::Tensor& d, int64_t rows) {
     if (!d.defined() || d.dim() != 2 || d.size(0) != rows)
-      throw Error("render_decoded: the decoder returned " + shape_of(d) + " for " + std::to_string(rows) + " latents");
+      throw Error("decoding rendered latents: the decoder returned " + shape_of(d) + " for " + std::to_string(rows) +
+                  " latents");
     return d.to(latents.device(), torch::kFloat32);
   };
   const at::Tensor covered = alpha.reshape({-1}) > 0;
@@ -145,25 +186,22 @@ DecodedView render_decoded(const GaussianModel& gaussians, const at::Tensor& lat
   return {features.reshape({H, W, features.size(1)}), r.alpha.to(torch::kFloat32)};
 }
 
-RelevanceMaps relevance_maps(const GaussianModel& gaussians, const at::Tensor& latents, const LatentDecoder& decode,
+RelevanceMaps relevance_maps(const GaussianModel& gaussians, const at::Tensor& latents, const LinearHeadDecoder& decoder,
                              const PinholeCamera& camera, const Pose& pose, const at::Tensor& queries,
                              const at::Tensor& canonical, int64_t chunk_pixels) {
   if (!queries.defined() || queries.dim() != 2 || !canonical.defined() || canonical.dim() != 2 ||
       canonical.size(0) == 0 || canonical.size(1) != queries.size(1))
     throw Error("relevance_maps: queries K x D and canonical M x D (M > 0) expected, got " + shape_of(queries) +
                 " and " + shape_of(canonical));
+  const DecodedCosines cosines(decoder, torch::cat({queries, canonical}, 0));
   const RenderedLatents r = render_latents(gaussians, latents, camera, pose);
   at::NoGradGuard no_grad;
   const int64_t H = r.latents.size(0), W = r.latents.size(1), L = r.latents.size(2);
-  const int64_t K = queries.size(0), D = queries.size(1);
+  const int64_t K = queries.size(0), P = K + canonical.size(0);
   const at::Tensor flat = r.latents.reshape({H * W, L});
-  const at::Tensor phrases = unit_rows(torch::cat({queries, canonical}, 0).to(flat.device(), torch::kFloat32));
-  at::Tensor cos = torch::empty({H * W, phrases.size(0)}, flat.options().dtype(torch::kFloat32));
-  decode_covered(flat, r.alpha, decode, chunk_pixels, [&](const at::Tensor& rows, const at::Tensor& d) {
-    if (d.size(1) != D)
-      throw Error("relevance_maps: the decoder gives " + std::to_string(d.size(1)) + "-d features, the queries are " +
-                  std::to_string(D) + "-d");
-    cos.index_copy_(0, rows, unit_rows(d).matmul(phrases.t()).expand({rows.size(0), phrases.size(0)}));
+  at::Tensor cos = torch::empty({H * W, P}, flat.options().dtype(torch::kFloat32));
+  decode_covered(flat, r.alpha, std::cref(cosines), chunk_pixels, [&](const at::Tensor& rows, const at::Tensor& c) {
+    cos.index_copy_(0, rows, c.expand({rows.size(0), P}));
   });
   const at::Tensor canonical_cos = cos.slice(1, K);  // P x M
   std::vector<at::Tensor> relevancy;

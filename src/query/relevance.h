@@ -37,6 +37,37 @@ const std::vector<std::string>& canonical_phrases();  // "object", "things", "st
 // Latent -> feature map of the decoder (B x L -> B x D), e.g. Autoencoder::decode.
 using LatentDecoder = std::function<at::Tensor(const at::Tensor&)>;
 
+// A latent decoder whose last layer is linear: decode(z) = hidden(z) weight^T + bias (the autoencoder's,
+// linear_head_decoder; any output normalisation after it leaves cosines unchanged).
+struct LinearHeadDecoder {
+  LatentDecoder hidden;  // B x L -> B x H: every layer before the last
+  at::Tensor weight;     // D x H
+  at::Tensor bias;       // D
+};
+// The autoencoder's decoder in that form; it refers to `autoencoder`, which must outlive it.
+LinearHeadDecoder linear_head_decoder(const Autoencoder& autoencoder);
+
+// Cosines of decoded latents with fixed directions, without forming the D-d features. With the reduced
+// QR factorisation weight = Q R (Q: D x k with orthonormal columns, R: k x H, k = min(D, H)) and
+// bias = Q c + e (e orthogonal to Q's columns), for u = R h + c:
+//   <p, W h + b> = <Q^T p, u> + <p, e>,   |W h + b|^2 = |u|^2 + |e|^2,
+// so a latent costs k x H multiply-adds after the hidden layers instead of D x H: 256 x 256 instead of
+// 512 x 256 for the 128 -> 256 -> 512 decoder. Q and R are computed once, in double.
+class DecodedCosines {
+ public:
+  // directions: P x D (any lengths; a zero direction gives cosine 0). Throws cls::Error for a shape that
+  // does not fit the decoder.
+  DecodedCosines(LinearHeadDecoder decoder, const at::Tensor& directions);
+  // B x L latents -> B x P cosines (float32, on the weight's device); 0 where decode(z) = 0.
+  at::Tensor operator()(const at::Tensor& latents) const;
+
+ private:
+  LatentDecoder hidden_;
+  at::Tensor r_, c_;              // k x H, k: u = h R^T + c
+  at::Tensor q_directions_, e_dot_;  // P x k (Q^T p, p unit), P (<p, e>)
+  double e_squared_ = 0;          // |e|^2
+};
+
 // Pixels decoded per call of the decoder (bounds the MLP's intermediate memory). 8192 x 512 floats
 // = 16 MB: the largest tensor of a call stays under glibc's 32 MB mmap ceiling, so the chunks reuse
 // freed heap instead of mapping and faulting in fresh pages per call (65,536 pixels: 128 MB, and a
@@ -62,15 +93,16 @@ DecodedView render_decoded(const GaussianModel& gaussians, const at::Tensor& lat
 // min_c softmax(10 * [query_cos, canonical_cos_c])[0] (OpenCLIPNetwork.get_relevancy).
 at::Tensor relevancy_from_cosines(const at::Tensor& query_cos, const at::Tensor& canonical_cos);
 
-// Both maps of K queries for one view, computed chunk by chunk so that the H x W x D decoded field
-// never exists as a whole (what `query` uses; equal to cosine_maps / langsplat_relevancy of
-// render_decoded): queries K x D, canonical M x D (feature space) -> cosine and relevancy K x H x W.
+// Both maps of K queries for one view, computed chunk by chunk with DecodedCosines, so that no decoded
+// feature is formed (what `query`, `render` and `evaluate` use; equal to cosine_maps / langsplat_relevancy
+// of render_decoded up to rounding): queries K x D, canonical M x D (feature space) -> cosine and
+// relevancy K x H x W.
 struct RelevanceMaps {
   at::Tensor cosine;     // K x H x W
   at::Tensor relevancy;  // K x H x W
   at::Tensor alpha;      // H x W, the rendered alpha
 };
-RelevanceMaps relevance_maps(const GaussianModel& gaussians, const at::Tensor& latents, const LatentDecoder& decode,
+RelevanceMaps relevance_maps(const GaussianModel& gaussians, const at::Tensor& latents, const LinearHeadDecoder& decoder,
                              const PinholeCamera& camera, const Pose& pose, const at::Tensor& queries,
                              const at::Tensor& canonical, int64_t chunk_pixels = kDecodeChunkPixels);
 // The same for a language model's level (1..3) and a scene view.

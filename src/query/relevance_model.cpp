@@ -17,20 +17,22 @@ const at::Tensor& level_latents(const LanguageModel& model, int level) {
   return latents;
 }
 
-LatentDecoder decoder_of(const LanguageModel& model) {
-  return [&model](const at::Tensor& z) { return model.autoencoder.decode(z); };
-}
-
 }  // namespace
 
+LinearHeadDecoder linear_head_decoder(const Autoencoder& autoencoder) {
+  return {[&autoencoder](const at::Tensor& z) { return autoencoder.decode_hidden(z); }, autoencoder.output_weight(),
+          autoencoder.output_bias()};
+}
+
 DecodedView render_decoded(const LanguageModel& model, int level, const SceneView& view) {
-  return render_decoded(model.gaussians, level_latents(model, level), decoder_of(model), view.camera, view.pose);
+  return render_decoded(model.gaussians, level_latents(model, level),
+                        [&model](const at::Tensor& z) { return model.autoencoder.decode(z); }, view.camera, view.pose);
 }
 
 RelevanceMaps relevance_maps(const LanguageModel& model, int level, const SceneView& view, const at::Tensor& queries,
                              const at::Tensor& canonical) {
-  return relevance_maps(model.gaussians, level_latents(model, level), decoder_of(model), view.camera, view.pose,
-                        queries, canonical);
+  return relevance_maps(model.gaussians, level_latents(model, level), linear_head_decoder(model.autoencoder),
+                        view.camera, view.pose, queries, canonical);
 }
 
 }  // namespace cls

@@ -64,6 +64,23 @@ TEST(Autoencoder, DefaultLayoutIs512To128) {
   EXPECT_EQ(ae.decode(z).sizes(), (at::IntArrayRef{3, 512}));
 }
 
+TEST(Autoencoder, DecodeIsTheHiddenLayersThenTheLastLinearLayer) {
+  // decode(z) = n(decode_hidden(z) W^T + b), computed here in double from the exposed parts, for our
+  // layout (one hidden layer) and LangSplat's (six, output normalised).
+  for (const AutoencoderConfig& c : {small_config(), langsplat_autoencoder_config(64)}) {
+    const Autoencoder ae(c, 4);
+    const at::Tensor z = ae.encode(at::randn({9, 64}));
+    const at::Tensor h = ae.decode_hidden(z).to(at::kDouble);
+    const int64_t hidden = c.decoder_dims.size() > 1 ? c.decoder_dims[c.decoder_dims.size() - 2] : c.latent_dim();
+    ASSERT_EQ(h.sizes(), (at::IntArrayRef{9, hidden}));
+    ASSERT_EQ(ae.output_weight().sizes(), (at::IntArrayRef{64, hidden}));
+    at::Tensor expected = h.matmul(ae.output_weight().to(at::kDouble).t()) + ae.output_bias().to(at::kDouble);
+    if (c.normalize_output) expected = expected / expected.norm(2, {1}, true);
+    EXPECT_LT((ae.decode(z).to(at::kDouble) - expected).abs().max().item<double>(), 1e-5);
+    EXPECT_GE(h.min().item<double>(), 0.0);  // after a ReLU
+  }
+}
+
 TEST(Autoencoder, EncodeDecodeShapesAndErrors) {
   const Autoencoder ae(small_config(), 3);
   for (int64_t b : {0, 1, 7}) {

@@ -162,15 +162,59 @@ TEST(RenderDecoded, LanguageModelLevelMatchesReferenceThenAutoencoderPerPixel) {
   EXPECT_GT((render_decoded(m, 1, view).features - v.features).abs().max().item<float>(), 1e-3);
 }
 
+// decode(z) = tanh(z A) W^T + b in double: the reference for DecodedCosines.
+at::Tensor decode_in_double(const at::Tensor& z, const at::Tensor& A, const at::Tensor& W, const at::Tensor& b) {
+  return torch::tanh(z.to(torch::kFloat64).matmul(A.to(torch::kFloat64))).matmul(W.to(torch::kFloat64).t()) +
+         b.to(torch::kFloat64);
+}
+
+TEST(DecodedCosines, EqualCosinesOfTheDecodedFeaturesInDouble) {
+  // Last layers narrower (7 -> 10: Q is 10 x 7 and the bias has a part outside its columns), as wide
+  // (10 -> 10) and wider (13 -> 10: R is 10 x 13) than the features.
+  const int L = 5, D = 10, B = 300;
+  for (const int Hd : {7, 10, 13}) {
+    torch::manual_seed(Hd);
+    const at::Tensor A = torch::randn({L, Hd}), W = torch::randn({D, Hd}), b = torch::randn({D});
+    at::Tensor directions = torch::randn({6, D}) * torch::rand({6, 1}) * 5;
+    directions[4].zero_();  // a zero direction: cosine 0
+    at::Tensor z = torch::randn({B, L});
+    const LinearHeadDecoder decoder{[&](const at::Tensor& x) { return torch::tanh(x.matmul(A)); }, W, b};
+    const at::Tensor got = DecodedCosines(decoder, directions)(z);
+    ASSERT_EQ(got.sizes(), at::IntArrayRef({B, 6}));
+    EXPECT_EQ(got.scalar_type(), torch::kFloat32);
+    const at::Tensor f = decode_in_double(z, A, W, b);
+    const at::Tensor p = directions.to(torch::kFloat64);
+    const at::Tensor expected = f.matmul(p.t()) / (f.norm(2, {1}, true) * p.norm(2, {1}).clamp_min(1e-300));
+    expected.select(1, 4).zero_();
+    EXPECT_LT((got.to(torch::kFloat64) - expected).abs().max().item<double>(), 1e-5) << "hidden size " << Hd;
+    EXPECT_EQ(got.select(1, 4).abs().max().item<float>(), 0.0f);
+  }
+}
+
+TEST(DecodedCosines, ZeroFeatureGivesZeroAndShapesAreChecked) {
+  // Without a bias, decode(0) = 0: its cosines are 0 (as cosine_maps' for a zero feature), not NaN.
+  const int L = 3, Hd = 4, D = 6;
+  torch::manual_seed(1);
+  const at::Tensor A = torch::randn({L, Hd}), W = torch::randn({D, Hd});
+  const LinearHeadDecoder decoder{[&](const at::Tensor& x) { return torch::tanh(x.matmul(A)); }, W, at::Tensor()};
+  const at::Tensor got = DecodedCosines(decoder, torch::randn({2, D}))(torch::zeros({3, L}));
+  EXPECT_EQ(got.abs().max().item<float>(), 0.0f);
+  EXPECT_THROW(DecodedCosines(decoder, torch::randn({2, D + 1})), Error);
+  EXPECT_THROW(DecodedCosines({decoder.hidden, W, torch::zeros({D + 1})}, torch::randn({2, D})), Error);
+  const LinearHeadDecoder wrong_hidden{[&](const at::Tensor& x) { return x; }, W, at::Tensor()};  // L != Hd values
+  EXPECT_THROW(DecodedCosines(wrong_hidden, torch::randn({2, D}))(torch::zeros({3, L})), Error);
+}
+
 TEST(RelevanceMaps, EqualMapsOfTheWholeDecodedField) {
-  const int W = 31 + 20, H = 23, L = 6, D = 10;
+  const int W = 31 + 20, H = 23, L = 6, Hd = 7, D = 10;
   test::LatentScene t = test::latent_scene(60, 31, H, L, 11);
   t.camera.width = W;  // wider than the scene: uncovered pixels too
   torch::manual_seed(9);
-  const at::Tensor A = torch::randn({L, D});
-  const LatentDecoder decode = [&](const at::Tensor& z) { return z.matmul(A); };
+  const at::Tensor A = torch::randn({L, Hd}), Wd = torch::randn({D, Hd}), b = torch::randn({D});
+  const LinearHeadDecoder decoder{[&](const at::Tensor& z) { return torch::tanh(z.matmul(A)); }, Wd, b};
+  const LatentDecoder decode = [&](const at::Tensor& z) { return decode_in_double(z, A, Wd, b).to(torch::kFloat32); };
   const at::Tensor queries = torch::randn({3, D}), canonical = torch::randn({4, D});
-  const RelevanceMaps m = relevance_maps(t.g, t.latents, decode, t.camera, t.pose, queries, canonical, 77);
+  const RelevanceMaps m = relevance_maps(t.g, t.latents, decoder, t.camera, t.pose, queries, canonical, 77);
   const DecodedView v = render_decoded(t.g, t.latents, decode, t.camera, t.pose);
   ASSERT_EQ(m.cosine.sizes(), at::IntArrayRef({3, H, W}));
   ASSERT_EQ(m.relevancy.sizes(), at::IntArrayRef({3, H, W}));
@@ -179,8 +223,8 @@ TEST(RelevanceMaps, EqualMapsOfTheWholeDecodedField) {
     EXPECT_LT((m.relevancy[k] - langsplat_relevancy(v.features, queries[k], canonical)).abs().max().item<float>(), 1e-5);
   EXPECT_TRUE(torch::equal(m.alpha, v.alpha));
   EXPECT_GT((m.alpha == 0).sum().item<int64_t>(), 0);
-  EXPECT_THROW(relevance_maps(t.g, t.latents, decode, t.camera, t.pose, queries, torch::zeros({0, D})), Error);
-  EXPECT_THROW(relevance_maps(t.g, t.latents, decode, t.camera, t.pose, torch::zeros({1, D + 1}), canonical), Error);
+  EXPECT_THROW(relevance_maps(t.g, t.latents, decoder, t.camera, t.pose, queries, torch::zeros({0, D})), Error);
+  EXPECT_THROW(relevance_maps(t.g, t.latents, decoder, t.camera, t.pose, torch::zeros({1, D + 1}), canonical), Error);
   EXPECT_THROW(render_latents(t.g, t.latents.slice(0, 1), t.camera, t.pose), Error);
 }
 
