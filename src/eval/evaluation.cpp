@@ -122,10 +122,7 @@ at::Tensor minmax_normalise(const at::Tensor& map) {
 // Cosine of every Gaussian's decoded latent at `level` with the prototypes: N x K.
 at::Tensor gaussian_cosines(const LanguageModel& model, int level, const at::Tensor& prototypes) {
   const at::Tensor& z = model.latents[size_t(level - 1)];
-  const int64_t N = z.size(0), D = model.autoencoder.config().input_dim;
-  if (prototypes.dim() != 2 || prototypes.size(1) != D)
-    throw Error("evaluate: the autoencoder decodes to " + std::to_string(D) + "-d features, the prototypes are " +
-                std::to_string(prototypes.size(-1)) + "-d (a different feature provider?)");
+  const int64_t N = z.size(0);
   const DecodedCosines cosines(linear_head_decoder(model.autoencoder), prototypes);
   at::Tensor out = torch::empty({N, prototypes.size(0)}, torch::kFloat32);
   for (int64_t b = 0; b < N; b += kDecodeChunk) {

@@ -89,13 +89,16 @@ const std::vector<std::string>& canonical_phrases() {
 DecodedCosines::DecodedCosines(LinearHeadDecoder decoder, const at::Tensor& directions)
     : hidden_(std::move(decoder.hidden)) {
   const at::Tensor& W = decoder.weight;
-  if (!W.defined() || W.dim() != 2 || !hidden_)
-    throw Error("relevance: the decoder's last layer must have a D x H weight and hidden layers, got " + shape_of(W));
+  if (!hidden_) throw Error("relevance: the decoder has no hidden-layer function");
+  if (!W.defined() || W.dim() != 2)
+    throw Error("relevance: the decoder's last layer must have a D x H weight, got " + shape_of(W));
   const int64_t D = W.size(0);
   if (decoder.bias.defined() && (decoder.bias.dim() != 1 || decoder.bias.size(0) != D))
     throw Error("relevance: the decoder's last bias must have " + std::to_string(D) + " values, got " +
                 shape_of(decoder.bias));
-  check_rows(directions, D, "relevance", "the query and canonical features");
+  if (!directions.defined() || directions.dim() != 2 || directions.size(1) != D)
+    throw Error("relevance: the decoder gives " + std::to_string(D) + "-d features, the text features are " +
+                shape_of(directions) + " (another feature provider?)");
   at::NoGradGuard no_grad;
   const auto cpu_double = torch::dtype(torch::kFloat64).device(torch::kCPU);
   const at::Tensor w = W.detach().to(cpu_double);
@@ -144,11 +147,11 @@ RenderedLatents render_latents(const GaussianModel& gaussians, const at::Tensor&
 namespace {
 
 // Calls `decode` (the decoder, or DecodedCosines) on the rendered latents (P x L) of the pixels with
-// alpha > 0, chunk by chunk, and hands each chunk to `sink(rows, decoded)`: the pixel indices (int64) and
-// their values (B x D float32). The
-// other pixels' latents are exactly zero (nothing was blended over the zero background, so alpha is 0
-// only there), so decode(0) is computed once and handed over as one row for all of them: decoded has one
-// row per index, or one row for every index. Views with sky or ground cost only their covered pixels.
+// alpha > 0, chunk by chunk, and hands each chunk to `sink(rows, values)`: the pixel indices (int64) and
+// their values (B x D features or B x P cosines, float32). The other pixels' latents are exactly zero
+// (nothing was blended over the zero background, so alpha is 0 only there), so decode(0) is computed once
+// and handed over as one row for all of them: values has one row per index, or one row for every index.
+// Views with sky or ground cost only their covered pixels.
 template <class Sink>
 void decode_covered(const at::Tensor& latents, const at::Tensor& alpha, const LatentDecoder& decode, int64_t chunk,
                     Sink&& sink) {

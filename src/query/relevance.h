@@ -34,7 +34,8 @@ const std::vector<std::string>& canonical_phrases();  // "object", "things", "st
 
 // ---- the building blocks of the above, usable without a whole LanguageModel --------------------
 
-// Latent -> feature map of the decoder (B x L -> B x D), e.g. Autoencoder::decode.
+// A function of a batch of latents, B x L -> B x (values per latent): the decoder (B x D, e.g.
+// Autoencoder::decode), its hidden layers (B x H) or DecodedCosines (B x P).
 using LatentDecoder = std::function<at::Tensor(const at::Tensor&)>;
 
 // A latent decoder whose last layer is linear: decode(z) = hidden(z) weight^T + bias (the autoencoder's,
@@ -44,7 +45,9 @@ struct LinearHeadDecoder {
   at::Tensor weight;     // D x H
   at::Tensor bias;       // D
 };
-// The autoencoder's decoder in that form; it refers to `autoencoder`, which must outlive it.
+// The autoencoder's decoder in that form. It refers to `autoencoder` (its hidden layers by reference, its last
+// layer's tensors by alias), which must outlive it and not be assigned another model meanwhile: make it where
+// it is used.
 LinearHeadDecoder linear_head_decoder(const Autoencoder& autoencoder);
 
 // Cosines of decoded latents with fixed directions, without forming the D-d features. With the reduced
@@ -69,7 +72,8 @@ class DecodedCosines {
 };
 
 // Pixels decoded per call of the decoder (bounds the MLP's intermediate memory). 8192 x 512 floats
-// = 16 MB: the largest tensor of a call stays under glibc's 32 MB mmap ceiling, so the chunks reuse
+// = 16 MB (render_decoded's full features; relevance_maps' largest are 8192 x 256): the largest tensor
+// of a call stays under glibc's 32 MB mmap ceiling, so the chunks reuse
 // freed heap instead of mapping and faulting in fresh pages per call (65,536 pixels: 128 MB, and a
 // third of a 1080p map's CPU time went to the kernel; docs/benchmarks.md).
 constexpr int64_t kDecodeChunkPixels = 1 << 13;

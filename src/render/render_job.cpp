@@ -141,7 +141,6 @@ struct Queries {
   std::vector<int> level;    // per text, 1..3 (LangSplat's "best": highest max Gaussian score)
   at::Tensor features;       // K x D
   at::Tensor canonical;      // M x D
-  LinearHeadDecoder decoder;
 };
 
 Queries prepare_queries(const LanguageModel& model, const std::string& model_dir, const std::vector<std::string>& texts,
@@ -155,7 +154,6 @@ Queries prepare_queries(const LanguageModel& model, const std::string& model_dir
   q.canonical = provider->text_features(canonical_phrases()).to(torch::kFloat32);
   const at::Tensor latents = model.autoencoder.encode(q.features);
   for (size_t k = 0; k < texts.size(); ++k) q.level.push_back(score_levels(model.latents, latents[int64_t(k)]).best);
-  q.decoder = linear_head_decoder(model.autoencoder);
   return q;
 }
 
@@ -411,7 +409,8 @@ json render_views(const RenderOptions& o) {
       rgb_video.write(frame);
       if (overlay_video) {
         const int level = queries->level[0];
-        const RelevanceMaps m = relevance_maps(g, model.language->latents[level - 1], queries->decoder, camera, poses[k],
+        const RelevanceMaps m = relevance_maps(g, model.language->latents[level - 1], linear_head_decoder(model.language->autoencoder),
+                                               camera, poses[k],
                                                queries->features.slice(0, 0, 1), queries->canonical);
         const cv::Mat o_frame = relevance_overlay(frame, m.relevancy[0]);
         write_image(out / "path" / overlay / frame_name(int(k)), o_frame);

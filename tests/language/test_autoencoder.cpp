@@ -68,12 +68,13 @@ TEST(Autoencoder, DecodeIsTheHiddenLayersThenTheLastLinearLayer) {
   // decode(z) = n(decode_hidden(z) W^T + b), computed here in double from the exposed parts, for our
   // layout (one hidden layer) and LangSplat's (six, output normalised).
   for (const AutoencoderConfig& c : {small_config(), langsplat_autoencoder_config(64)}) {
+    ASSERT_GT(c.decoder_dims.size(), 1u);  // hidden layers that end in a ReLU
     const Autoencoder ae(c, 4);
-    const at::Tensor z = ae.encode(at::randn({9, 64}));
+    const at::Tensor z = ae.encode(at::randn({9, c.input_dim}));
     const at::Tensor h = ae.decode_hidden(z).to(at::kDouble);
-    const int64_t hidden = c.decoder_dims.size() > 1 ? c.decoder_dims[c.decoder_dims.size() - 2] : c.latent_dim();
+    const int64_t hidden = c.decoder_dims[c.decoder_dims.size() - 2];
     ASSERT_EQ(h.sizes(), (at::IntArrayRef{9, hidden}));
-    ASSERT_EQ(ae.output_weight().sizes(), (at::IntArrayRef{64, hidden}));
+    ASSERT_EQ(ae.output_weight().sizes(), (at::IntArrayRef{c.input_dim, hidden}));
     at::Tensor expected = h.matmul(ae.output_weight().to(at::kDouble).t()) + ae.output_bias().to(at::kDouble);
     if (c.normalize_output) expected = expected / expected.norm(2, {1}, true);
     EXPECT_LT((ae.decode(z).to(at::kDouble) - expected).abs().max().item<double>(), 1e-5);

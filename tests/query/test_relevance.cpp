@@ -205,6 +205,25 @@ TEST(DecodedCosines, ZeroFeatureGivesZeroAndShapesAreChecked) {
   EXPECT_THROW(DecodedCosines(wrong_hidden, torch::randn({2, D}))(torch::zeros({3, L})), Error);
 }
 
+TEST(RelevanceMaps, LangSplatAutoencoderLayoutEqualsItsDecodedField) {
+  // LangSplat's layout: six hidden layers, the last one wider than the features, latent and output normalised.
+  const AutoencoderConfig c = langsplat_autoencoder_config(16);
+  const int W = 29, H = 23, L = c.latent_dim(), D = c.input_dim;
+  test::LatentScene t = test::latent_scene(70, W, H, L, 17);
+  LanguageModel m{t.g, {}, Autoencoder(c, 5), {}};
+  m.latents = {t.latents, t.latents, t.latents};
+  SceneView view;
+  view.camera = t.camera;
+  view.pose = t.pose;
+  torch::manual_seed(4);
+  const at::Tensor queries = torch::randn({2, D}), canonical = torch::randn({4, D});
+  const RelevanceMaps rm = relevance_maps(m, 1, view, queries, canonical);
+  const DecodedView v = render_decoded(m, 1, view);
+  EXPECT_LT((rm.cosine - cosine_maps(v.features, queries)).abs().max().item<float>(), 1e-5);
+  EXPECT_LT((rm.relevancy[0] - langsplat_relevancy(v.features, queries[0], canonical)).abs().max().item<float>(), 1e-5);
+  EXPECT_THROW(relevance_maps(m, 1, view, torch::randn({1, D + 1}), torch::randn({4, D + 1})), Error);
+}
+
 TEST(RelevanceMaps, EqualMapsOfTheWholeDecodedField) {
   const int W = 31 + 20, H = 23, L = 6, Hd = 7, D = 10;
   test::LatentScene t = test::latent_scene(60, 31, H, L, 11);
