@@ -2,7 +2,8 @@
 # The GPU checks, on a lent device machine, in a copy of this repository that carries .gpu/ (made by
 # scripts/device/prepare.sh). Appends every step's output to $OUT/gpu.log and prints one line per step.
 #   bash scripts/device/gpu_checks.sh [STEP...] [debug PROGRAM ARGS...]   (default: the steps of ALL, in order)
-# Steps: splat_tests (the CUDA rasterizer against the CPU path), models_tests (CLIP/SAM fixture parity
+# Steps: splat_tests (the CUDA rasterizer against the CPU path), query_tests (relevance cosines on CUDA
+# against the CPU path), models_tests (CLIP/SAM fixture parity
 # on CUDA), bench_* (rasterizer, CLIP, language field, SAM AMG on the GPU), run (`run --models tiny` on
 # the bundled example), train_rgb (densification, the cap and resuming on the GPU), suite (every test
 # program carried, 16 at a time, one OpenMP thread each), profile_splat / profile_language (every
@@ -45,7 +46,7 @@ step() {  # step NAME LIMIT_S COMMAND...
   ldd "$B/citylangsplat" "$B"/test_* "$B"/bench/bench_* | grep "not found"; } >> "$LOG" 2>&1
 # Each case is one step; the default order puts what matters most first, so that a call cut short
 # by its time limit still brings back the rest's log.
-ALL=(splat_tests bench_splat models_tests bench_clip_bf16 bench_language run bench_amg amg_fixture bench_clip_other
+ALL=(splat_tests query_tests bench_splat models_tests bench_clip_bf16 bench_language run bench_amg amg_fixture bench_clip_other
      bench_splat_200k)
 # `gpu_checks.sh debug PROGRAM ARGS...`: PROGRAM of the build under cuda-gdb (the machine has no gdb),
 # its backtrace where it stops; after the steps named before `debug`, which takes the rest of the line.
@@ -69,6 +70,7 @@ done
 for s in "${steps[@]}"; do
   case $s in
     splat_tests) step "$s" 90 "$B/test_splat" --gtest_filter='*Cuda*:*CUDA*' ;;
+    query_tests) step "$s" 60 "$B/test_query" --gtest_filter='*Cuda*' ;;
     models_tests)
       step "$s" 150 env CLS_TEST_DEVICE=cuda "$B/test_models" \
         --gtest_filter='ClipParity*:ClipModel.ReducedPrecision*:SamPredictor.*:SamAmgRun.*' ;;

@@ -205,6 +205,22 @@ TEST(DecodedCosines, ZeroFeatureGivesZeroAndShapesAreChecked) {
   EXPECT_THROW(DecodedCosines(wrong_hidden, torch::randn({2, D}))(torch::zeros({3, L})), Error);
 }
 
+TEST(DecodedCosinesCuda, EqualTheCpuPathForAnAutoencoderOnTheDevice) {
+  if (!torch::cuda::is_available()) GTEST_SKIP() << "no CUDA device: DecodedCosines on CUDA is not compared";
+  // The same initial weights on both devices (one seed); the factorisation is made on the CPU in both.
+  for (const AutoencoderConfig& c : {AutoencoderConfig{}, langsplat_autoencoder_config()}) {
+    const Autoencoder cpu(c, 2);
+    Autoencoder cuda(c, 2);
+    cuda.to(torch::kCUDA);
+    torch::manual_seed(3);
+    const at::Tensor z = torch::randn({5000, c.latent_dim()}), directions = torch::randn({5, c.input_dim});
+    const at::Tensor expected = DecodedCosines(linear_head_decoder(cpu), directions)(z);
+    const at::Tensor got = DecodedCosines(linear_head_decoder(cuda), directions)(z.to(torch::kCUDA));
+    ASSERT_TRUE(got.is_cuda());
+    EXPECT_LT((got.cpu() - expected).abs().max().item<float>(), 1e-4);
+  }
+}
+
 TEST(RelevanceMaps, LangSplatAutoencoderLayoutEqualsItsDecodedField) {
   // LangSplat's layout: six hidden layers, the last one wider than the features, latent and output normalised.
   const AutoencoderConfig c = langsplat_autoencoder_config(16);
