@@ -3,12 +3,12 @@
 # scripts/device/prepare.sh). Appends every step's output to $OUT/gpu.log and prints one line per step.
 #   bash scripts/device/gpu_checks.sh [STEP...] [debug PROGRAM ARGS...]   (default: the steps of ALL, in order)
 # Steps: splat_tests (the CUDA rasterizer against the CPU path), query_tests (relevance cosines on CUDA
-# against the CPU path), models_tests (CLIP/SAM fixture parity
-# on CUDA), bench_* (rasterizer, CLIP, language field, SAM AMG on the GPU), run (`run --models tiny` on
-# the bundled example), train_rgb (densification, the cap and resuming on the GPU), suite (every test
-# program carried, 16 at a time, one OpenMP thread each), profile_splat / profile_language (every
-# kernel's duration under Nsight Compute: one photometric and 128-channel iteration at 1M Gaussians,
-# 1600x1000; one language iteration at 200k, 800x600 and a 1080p relevance map; $OUT/ncu_*.csv).
+# against the CPU path), models_tests (CLIP/SAM fixture parity on CUDA), bench_* (rasterizer, CLIP,
+# language field, SAM AMG on the GPU), run (`run --models tiny` on the bundled example), train_rgb
+# (densification, the cap and resuming on the GPU), suite (every test program carried, 16 at a time, one
+# OpenMP thread each), profile_splat / profile_language (every kernel's duration under Nsight Compute: one
+# photometric and 128-channel iteration at 1M Gaussians, 1600x1000; one language iteration at 200k,
+# 800x600 and a 1080p relevance map; $OUT/ncu_*.csv).
 # GPU_LIB_OVERRIDE=DIR: libraries in DIR (e.g. an earlier commit's libcls.so) load before the build's,
 # so one call can time before and after on the same machine.
 set -uo pipefail

@@ -409,9 +409,9 @@ json render_views(const RenderOptions& o) {
       rgb_video.write(frame);
       if (overlay_video) {
         const int level = queries->level[0];
-        const RelevanceMaps m = relevance_maps(g, model.language->latents[level - 1], linear_head_decoder(model.language->autoencoder),
-                                               camera, poses[k],
-                                               queries->features.slice(0, 0, 1), queries->canonical);
+        const RelevanceMaps m =
+            relevance_maps(g, model.language->latents[level - 1], linear_head_decoder(model.language->autoencoder),
+                           camera, poses[k], queries->features.slice(0, 0, 1), queries->canonical);
         const cv::Mat o_frame = relevance_overlay(frame, m.relevancy[0]);
         write_image(out / "path" / overlay / frame_name(int(k)), o_frame);
         overlay_video->write(o_frame);

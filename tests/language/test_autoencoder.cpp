@@ -66,19 +66,23 @@ TEST(Autoencoder, DefaultLayoutIs512To128) {
 
 TEST(Autoencoder, DecodeIsTheHiddenLayersThenTheLastLinearLayer) {
   // decode(z) = n(decode_hidden(z) W^T + b), computed here in double from the exposed parts, for our
-  // layout (one hidden layer) and LangSplat's (six, output normalised).
-  for (const AutoencoderConfig& c : {small_config(), langsplat_autoencoder_config(64)}) {
-    ASSERT_GT(c.decoder_dims.size(), 1u);  // hidden layers that end in a ReLU
+  // layout (one hidden layer), LangSplat's (six, output normalised) and a decoder of one linear layer
+  // (no hidden layer: decode_hidden gives the latents themselves).
+  AutoencoderConfig one_layer = small_config();
+  one_layer.decoder_dims = {one_layer.input_dim};
+  for (const AutoencoderConfig& c : {small_config(), langsplat_autoencoder_config(64), one_layer}) {
+    const bool has_hidden = c.decoder_dims.size() > 1;
     const Autoencoder ae(c, 4);
     const at::Tensor z = ae.encode(at::randn({9, c.input_dim}));
     const at::Tensor h = ae.decode_hidden(z).to(at::kDouble);
-    const int64_t hidden = c.decoder_dims[c.decoder_dims.size() - 2];
+    const int64_t hidden = has_hidden ? c.decoder_dims[c.decoder_dims.size() - 2] : c.latent_dim();
     ASSERT_EQ(h.sizes(), (at::IntArrayRef{9, hidden}));
     ASSERT_EQ(ae.output_weight().sizes(), (at::IntArrayRef{c.input_dim, hidden}));
     at::Tensor expected = h.matmul(ae.output_weight().to(at::kDouble).t()) + ae.output_bias().to(at::kDouble);
     if (c.normalize_output) expected = expected / expected.norm(2, {1}, true);
     EXPECT_LT((ae.decode(z).to(at::kDouble) - expected).abs().max().item<double>(), 1e-5);
-    EXPECT_GE(h.min().item<double>(), 0.0);  // after a ReLU
+    if (has_hidden) EXPECT_GE(h.min().item<double>(), 0.0);  // after a ReLU
+    else EXPECT_TRUE(at::equal(h.to(at::kFloat), z));
   }
 }
 
