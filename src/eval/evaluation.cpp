@@ -34,11 +34,6 @@ namespace {
 
 constexpr int64_t kDecodeChunk = 1 << 16;
 
-at::Tensor unit_rows(const at::Tensor& x) {
-  const at::Tensor n = x.norm(2, {-1}, /*keepdim=*/true);
-  return torch::where(n > 0, x / n, torch::zeros_like(x));
-}
-
 // The evaluated classes (taxonomy ids, ascending): the named ones, or every class in the GT.
 std::vector<int> evaluated_classes(const Taxonomy& taxonomy, const LabelledPoints& gt, const EvaluationOptions& o) {
   std::vector<int> ids;

@@ -14,12 +14,6 @@ namespace {
 
 std::string shape_of(const at::Tensor& t) { return t.defined() ? c10::str(t.sizes()) : "undefined"; }
 
-// Rows (last dimension) scaled to unit length; zero rows stay zero (their cosine with anything is 0).
-at::Tensor unit_rows(const at::Tensor& x) {
-  const at::Tensor n = x.norm(2, {-1}, /*keepdim=*/true);
-  return torch::where(n > 0, x / n, torch::zeros_like(x));
-}
-
 void check_features(const at::Tensor& features, const char* fn) {
   if (!features.defined() || features.dim() != 3)
     throw Error(std::string(fn) + ": features must be H x W x D, got " + shape_of(features));
@@ -31,6 +25,11 @@ void check_rows(const at::Tensor& rows, int64_t dim, const char* fn, const char*
 }
 
 }  // namespace
+
+at::Tensor unit_rows(const at::Tensor& x) {
+  const at::Tensor n = x.norm(2, {-1}, /*keepdim=*/true);
+  return torch::where(n > 0, x / n, torch::zeros_like(x));
+}
 
 at::Tensor gaussian_scores(const at::Tensor& latents, const at::Tensor& query_latent) {
   if (!latents.defined() || latents.dim() != 2)

@@ -22,6 +22,9 @@ struct DecodedView {
 };
 DecodedView render_decoded(const LanguageModel& model, int level, const SceneView& view);
 
+// Rows (last dimension) scaled to unit length; zero rows stay zero (their cosine with anything is 0).
+at::Tensor unit_rows(const at::Tensor& x);
+
 // Cosine of every pixel's feature with each prototype: features H x W x D, prototypes K x D -> K x H x W.
 at::Tensor cosine_maps(const at::Tensor& features, const at::Tensor& prototypes);
 
