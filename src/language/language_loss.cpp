@@ -7,6 +7,15 @@
 #include <string>
 
 #include "core/error.h"
+#include "language/seg_loss_pixel.h"
+
+#ifdef CLS_WITH_CUDA
+#include <c10/cuda/CUDAGuard.h>
+#include <c10/cuda/CUDAStream.h>
+
+#include "language/seg_loss_cuda.h"
+#include "splat/cuda_check.h"
+#endif
 
 namespace cls {
 
@@ -85,15 +94,104 @@ namespace {
 using torch::autograd::AutogradContext;
 using torch::autograd::variable_list;
 
-inline float sign_of(float d) { return float(d > 0) - float(d < 0); }  // torch's abs backward: sgn(0) = 0
-
-void check_seg_target(const SegMapTarget& t, int64_t channels, const char* name) {
-  if (!t.ids) return;
-  if (!t.table.defined() || t.table.dim() != 2 || t.table.size(1) != channels || t.table.scalar_type() != at::kFloat ||
-      !t.table.device().is_cpu())
-    throw Error(std::string("language loss: ") + name + " latent table must be K x L CPU float32 with L = " +
-                std::to_string(channels));
+void check_seg_target(const SegMapTarget& t, const at::Tensor& rendered, const char* name) {
+  if (!t.ids.defined()) return;
+  if (t.ids.dim() != 2 || t.ids.size(0) != rendered.size(0) || t.ids.size(1) != rendered.size(1) ||
+      t.ids.scalar_type() != at::kInt)
+    throw Error(std::string("language loss: the ") + name + " seg map must be H x W int32 as the rendered map");
+  if (!t.table.defined() || t.table.dim() != 2 || t.table.size(1) != rendered.size(2) ||
+      t.table.scalar_type() != at::kFloat)
+    throw Error(std::string("language loss: the ") + name + " latent table must be K x L float32 with L = " +
+                std::to_string(rendered.size(2)));
 }
+
+// The seg map's ids and table on `device`, contiguous (undefined where there is no map).
+std::pair<at::Tensor, at::Tensor> on_device(const SegMapTarget& t, const at::Device& device) {
+  if (!t.ids.defined()) return {};
+  return {t.ids.to(device).contiguous(), t.table.to(device).contiguous()};
+}
+
+// The CPU pass: dL/dZ^ into `grad`, the sums returned; false where an id is outside its table.
+bool seg_loss_cpu(const at::Tensor& z, const at::Tensor& coverage, const at::Tensor& sam_ids, const at::Tensor& sam_table,
+                  const at::Tensor& gml_ids, const at::Tensor& gml_table, const SegLossWeights& weights, at::Tensor& grad,
+                  SegLossSums& total) {
+  const int64_t l = z.size(2), n = z.size(0) * z.size(1);
+  const float* zp = z.data_ptr<float>();
+  const float* mp = coverage.data_ptr<float>();
+  float* gp = grad.data_ptr<float>();
+  const int32_t* sid = sam_ids.defined() ? sam_ids.data_ptr<int32_t>() : nullptr;
+  const int32_t* gid = gml_ids.defined() ? gml_ids.data_ptr<int32_t>() : nullptr;
+  const float* sp = sid ? sam_table.data_ptr<float>() : nullptr;
+  const float* gtp = gid ? gml_table.data_ptr<float>() : nullptr;
+  const int64_t ks = sid ? sam_table.size(0) : 0, kg = gid ? gml_table.size(0) : 0;
+  double sum_sam = 0, sum_sam_gml = 0, sum_citygml = 0;
+  bool bad_id = false;
+#pragma omp parallel for reduction(+ : sum_sam, sum_sam_gml, sum_citygml) reduction(|| : bad_id) schedule(static)
+  for (int64_t p = 0; p < n; ++p) {
+    const float* zv = zp + p * l;
+    float* gv = gp + p * l;
+    const int32_t s = sid ? sid[p] : -1;
+    const int32_t g = gid ? gid[p] : -1;
+    if (s < -1 || s >= ks || g < -1 || g >= kg) {
+      bad_id = true;
+      continue;
+    }
+    const float mv = mp[p];
+    const float ws = sam_weight(weights, s, mv), wg = citygml_weight(weights, g, mv);
+    float abs_s = 0, abs_g = 0;
+    const float* ts = s >= 0 ? sp + int64_t(s) * l : nullptr;
+    const float* tg = g >= 0 ? gtp + int64_t(g) * l : nullptr;
+    // Branch-free inner loops per case, so that they vectorise.
+    if (ts && tg) {
+#pragma omp simd reduction(+ : abs_s, abs_g)
+      for (int64_t c = 0; c < l; ++c) gv[c] = l1_channel(zv[c], ts[c], ws, abs_s) + l1_channel(zv[c], tg[c], wg, abs_g);
+    } else if (ts || tg) {
+      const float* t = ts ? ts : tg;
+      const float wt = ts ? ws : wg;
+      float a = 0;
+#pragma omp simd reduction(+ : a)
+      for (int64_t c = 0; c < l; ++c) gv[c] = l1_channel(zv[c], t[c], wt, a);
+      (ts ? abs_s : abs_g) = a;
+    } else {
+      for (int64_t c = 0; c < l; ++c) gv[c] = 0.f;
+    }
+    SegLossSums pixel;
+    add_pixel(pixel, mv, abs_s, abs_g);
+    sum_sam += pixel.sam, sum_sam_gml += pixel.sam_gml, sum_citygml += pixel.citygml;
+  }
+  total = {sum_sam, sum_sam_gml, sum_citygml};
+  return !bad_id;
+}
+
+#ifdef CLS_WITH_CUDA
+// The CUDA pass (seg_loss_cuda.h), the same contract as seg_loss_cpu. Waits for the device: the sums
+// come back to the host.
+bool seg_loss_gpu(const at::Tensor& z, const at::Tensor& coverage, const at::Tensor& sam_ids, const at::Tensor& sam_table,
+                  const at::Tensor& gml_ids, const at::Tensor& gml_table, const SegLossWeights& weights, at::Tensor& grad,
+                  SegLossSums& total) {
+  const c10::cuda::CUDAGuard guard(z.device());
+  const at::Tensor sums = at::empty({4}, z.options().dtype(at::kDouble));
+  SegLossCudaArgs a;
+  a.rendered = z.data_ptr<float>();
+  a.sam_ids = sam_ids.defined() ? sam_ids.data_ptr<int32_t>() : nullptr;
+  a.sam_table = a.sam_ids ? sam_table.data_ptr<float>() : nullptr;
+  a.ks = a.sam_ids ? int32_t(sam_table.size(0)) : 0;
+  a.gml_ids = gml_ids.defined() ? gml_ids.data_ptr<int32_t>() : nullptr;
+  a.gml_table = a.gml_ids ? gml_table.data_ptr<float>() : nullptr;
+  a.kg = a.gml_ids ? int32_t(gml_table.size(0)) : 0;
+  a.coverage = coverage.data_ptr<float>();
+  a.n = z.size(0) * z.size(1);
+  a.l = int(z.size(2));
+  a.weights = weights;
+  a.grad = grad.data_ptr<float>();
+  a.sums = sums.data_ptr<double>();
+  check_cuda(seg_loss_cuda(a, c10::cuda::getCurrentCUDAStream().stream()), "language loss");
+  const at::Tensor host = sums.cpu();
+  const double* h = host.data_ptr<double>();
+  total = {h[0], h[1], h[2]};
+  return h[3] == 0;
+}
+#endif
 
 // Forward: the three terms (into *terms) and dL/dZ^ (saved); backward: grad_output x dL/dZ^.
 class SegLossFunction : public torch::autograd::Function<SegLossFunction> {
@@ -101,67 +199,21 @@ class SegLossFunction : public torch::autograd::Function<SegLossFunction> {
   static at::Tensor forward(AutogradContext* ctx, const at::Tensor& rendered, const SegMapTarget* sam,
                             const SegMapTarget* gml, const at::Tensor& coverage, LanguageLossWeights weights,
                             std::array<double, 3>* terms) {
-    const int64_t h = rendered.size(0), w = rendered.size(1), l = rendered.size(2), n = h * w;
     const at::Tensor z = rendered.detach().contiguous();
-    const at::Tensor m = coverage.to(at::kFloat).contiguous();
+    const at::Tensor m = coverage.to(z.device(), at::kFloat).contiguous();
     at::Tensor grad = at::empty_like(z);
-    const float* zp = z.data_ptr<float>();
-    const float* mp = m.data_ptr<float>();
-    float* gp = grad.data_ptr<float>();
-    const at::Tensor st = sam->ids ? sam->table.contiguous() : at::Tensor();
-    const at::Tensor gt = gml->ids && !weights.baseline ? gml->table.contiguous() : at::Tensor();
-    const float* sp = st.defined() ? st.data_ptr<float>() : nullptr;
-    const float* gtp = gt.defined() ? gt.data_ptr<float>() : nullptr;
-    const int64_t ks = st.defined() ? st.size(0) : 0, kg = gt.defined() ? gt.size(0) : 0;
-    const double inv = 1.0 / double(z.numel());
-    double sum_out = 0, sum_in = 0, sum_gml = 0;
-    bool bad_id = false;
-#pragma omp parallel for reduction(+ : sum_out, sum_in, sum_gml) reduction(|| : bad_id) schedule(static)
-    for (int64_t p = 0; p < n; ++p) {
-      const float* zv = zp + p * l;
-      float* gv = gp + p * l;
-      const int32_t s = sp ? sam->ids[p] : -1;
-      const int32_t g = gtp ? gml->ids[p] : -1;
-      if (s < -1 || s >= ks || g < -1 || g >= kg) {
-        bad_id = true;
-        continue;
-      }
-      const float mv = mp[p];
-      // Per-pixel weights of sign(Z^ - Z_SAM) and sign(Z^ - Z_GML).
-      const float ws = s < 0 ? 0.f : float((weights.baseline ? 1.0 : (1 - mv) + weights.lambda_sam * mv) * inv);
-      const float wg = g < 0 ? 0.f : float(weights.lambda_citygml * mv * inv);
-      float abs_s = 0, abs_g = 0;
-      const float* ts = s >= 0 ? sp + int64_t(s) * l : nullptr;
-      const float* tg = g >= 0 ? gtp + int64_t(g) * l : nullptr;
-      // Branch-free inner loops per case, so that they vectorise.
-      if (ts && tg) {
-#pragma omp simd reduction(+ : abs_s, abs_g)
-        for (int64_t c = 0; c < l; ++c) {
-          const float ds = zv[c] - ts[c], dg = zv[c] - tg[c];
-          abs_s += std::fabs(ds);
-          abs_g += std::fabs(dg);
-          gv[c] = ws * sign_of(ds) + wg * sign_of(dg);
-        }
-      } else if (ts || tg) {
-        const float* t = ts ? ts : tg;
-        const float wt = ts ? ws : wg;
-        float a = 0;
-#pragma omp simd reduction(+ : a)
-        for (int64_t c = 0; c < l; ++c) {
-          const float d = zv[c] - t[c];
-          a += std::fabs(d);
-          gv[c] = wt * sign_of(d);
-        }
-        (ts ? abs_s : abs_g) = a;
-      } else {
-        for (int64_t c = 0; c < l; ++c) gv[c] = 0.f;
-      }
-      sum_out += (1 - mv) * abs_s;
-      sum_in += mv * abs_s;
-      sum_gml += mv * abs_g;
-    }
-    if (bad_id) throw Error("language loss: a seg map holds an id outside its latent table");
-    (*terms)[0] = sum_out * inv, (*terms)[1] = sum_in * inv, (*terms)[2] = sum_gml * inv;
+    const auto [sam_ids, sam_table] = on_device(*sam, z.device());
+    const auto [gml_ids, gml_table] = weights.baseline ? std::pair<at::Tensor, at::Tensor>() : on_device(*gml, z.device());
+    const SegLossWeights w{weights.lambda_sam, weights.lambda_citygml, weights.baseline, 1.0 / double(z.numel())};
+    SegLossSums sums;
+#ifdef CLS_WITH_CUDA
+    const bool ok = z.is_cuda() ? seg_loss_gpu(z, m, sam_ids, sam_table, gml_ids, gml_table, w, grad, sums)
+                                : seg_loss_cpu(z, m, sam_ids, sam_table, gml_ids, gml_table, w, grad, sums);
+#else
+    const bool ok = seg_loss_cpu(z, m, sam_ids, sam_table, gml_ids, gml_table, w, grad, sums);
+#endif
+    if (!ok) throw Error("language loss: a seg map holds an id outside its latent table");
+    (*terms)[0] = sums.sam * w.inv, (*terms)[1] = sums.sam_gml * w.inv, (*terms)[2] = sums.citygml * w.inv;
     ctx->save_for_backward({grad});
     const double total = weights.baseline
                              ? (*terms)[0] + (*terms)[1]
@@ -181,11 +233,18 @@ class SegLossFunction : public torch::autograd::Function<SegLossFunction> {
 
 LanguageLoss language_loss_from_seg(const at::Tensor& rendered, const SegMapTarget& sam, const SegMapTarget& gml,
                                     const at::Tensor& coverage, const LanguageLossWeights& weights) {
-  if (!rendered.defined() || rendered.dim() != 3 || rendered.scalar_type() != at::kFloat || !rendered.device().is_cpu())
-    throw Error("language loss: rendered latents must be an H x W x L CPU float32 tensor");
+  if (!rendered.defined() || rendered.dim() != 3 || rendered.scalar_type() != at::kFloat)
+    throw Error("language loss: rendered latents must be an H x W x L float32 tensor");
+#ifdef CLS_WITH_CUDA
+  if (!rendered.device().is_cpu() && !rendered.is_cuda())
+#else
+  if (!rendered.device().is_cpu())
+#endif
+    throw Error("language loss: rendered latents on " + rendered.device().str() + ": the one-pass loss runs on " +
+                "the CPU or a CUDA device");
   check_map(coverage, rendered, "coverage", false);
-  check_seg_target(sam, rendered.size(2), "SAM");
-  if (!weights.baseline) check_seg_target(gml, rendered.size(2), "CityGML");
+  check_seg_target(sam, rendered, "SAM");
+  if (!weights.baseline) check_seg_target(gml, rendered, "CityGML");
   std::array<double, 3> terms{0, 0, 0};
   LanguageLoss out;
   out.total = SegLossFunction::apply(rendered, &sam, &gml, coverage, weights, &terms);

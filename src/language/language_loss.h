@@ -54,11 +54,12 @@ LanguageLoss language_loss(const LanguageLossInputs& inputs, const LanguageLossW
 
 // The same loss computed straight from the seg maps, without dense targets: one pass over the
 // pixels computes the three terms and dL/dZ^ (saved for the backward), so a 480 x 360 x 128 view
-// costs one H x W x L buffer instead of a dozen. CPU float32 `rendered` only (training uses it on
-// the CPU, language_loss() elsewhere); equal to language_loss() up to float rounding (tested).
+// costs one H x W x L buffer instead of a dozen. `rendered`: float32 on the CPU or, in a CUDA build, a
+// GPU (seg_loss_cuda.h); the ids and tables are moved to its device. Equal to language_loss() up to
+// float rounding (tested), which stays the reference.
 struct SegMapTarget {
-  const int32_t* ids = nullptr;  // H x W, -1 = none; nullptr = no pixel valid
-  at::Tensor table;              // K x L latents (CPU float32)
+  at::Tensor ids;    // H x W int32, -1 = none; undefined = no pixel valid
+  at::Tensor table;  // K x L float32 latents
 };
 LanguageLoss language_loss_from_seg(const at::Tensor& rendered, const SegMapTarget& sam, const SegMapTarget& gml,
                                     const at::Tensor& coverage, const LanguageLossWeights& weights);

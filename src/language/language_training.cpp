@@ -12,8 +12,7 @@
 //    region there (docs/conventions.md: coverage is 255 where any level has a label, and the
 //    features stage writes -1 wherever M = 0).
 // Only the per-segment latents (the encoder applied once per view) and the seg maps are kept in
-// memory. On the CPU the loss runs straight from the seg maps (language_loss_from_seg); on a GPU
-// dense H x W x L targets are gathered per iteration for the one view being trained.
+// memory; the loss runs straight from the seg maps (language_loss_from_seg), on the CPU or a GPU.
 #include "language/language_training.h"
 
 #include <ATen/ATen.h>
@@ -326,20 +325,13 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
       settings.pose = sv.pose;
       const at::Tensor rendered =
           rasterize_features(means, scales, quats, opacities, splatted(adam.group(adam_name(level)).param, o), at::Tensor(), settings).image;
+      // Seg map l of [default, s, m, l] and CityGML level l, read in place (the loss only reads them).
       const size_t hw = size_t(v.height) * v.width;
-      const int32_t* sam_ids = v.sam_seg.data() + level * hw;  // seg map l of [default, s, m, l]
-      const int32_t* gml_ids = v.gml_seg.data() + (level - 1) * hw;
-      LanguageLoss loss;
-      if (device.is_cpu()) {  // one pass, no dense targets
-        loss = language_loss_from_seg(rendered, {sam_ids, v.sam_latents}, {gml_ids, v.gml_latents}, v.coverage, weights);
-      } else {
-        LanguageLossInputs in;
-        in.rendered = rendered;
-        in.sam = gather_latent_target(sam_ids, v.height, v.width, v.sam_latents, "SAM seg map");
-        if (!o.baseline) in.gml = gather_latent_target(gml_ids, v.height, v.width, v.gml_latents, "CityGML seg map");
-        in.coverage = v.coverage;
-        loss = language_loss(in, weights);
-      }
+      const auto seg_map = [&](const std::vector<int32_t>& maps, int index) {
+        return at::from_blob(const_cast<int32_t*>(maps.data()) + index * hw, {v.height, v.width}, at::kInt);
+      };
+      const LanguageLoss loss = language_loss_from_seg(rendered, {seg_map(v.sam_seg, level), v.sam_latents},
+                                                       {seg_map(v.gml_seg, level - 1), v.gml_latents}, v.coverage, weights);
       loss.total.backward();
       adam.step();
       adam.zero_grad();

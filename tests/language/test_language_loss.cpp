@@ -1,5 +1,6 @@
 // The dual-feature loss of paper 3.3 against hand-computed values (see the comments for the sums).
 #include <gtest/gtest.h>
+#include <torch/cuda.h>
 #include <torch/torch.h>
 
 #include <vector>
@@ -143,11 +144,14 @@ TEST(LanguageLoss, ShapeMismatchIsAnError) {
   EXPECT_THROW(language_loss(in, {1.0, 0.5, false}), Error);
 }
 
-// The one-pass loss from seg maps equals the dense reference (values and gradients), on random
-// maps with partial coverage, missing segments and both modes.
-TEST(LanguageLoss, FromSegMapsEqualsDenseReference) {
-  const int h = 7, w = 9, l = 5;
-  torch::manual_seed(3);
+torch::Tensor ids_tensor(const std::vector<int32_t>& ids, int64_t h, int64_t w) {
+  return torch::tensor(ids, torch::kInt32).view({h, w});
+}
+
+// The one-pass loss from seg maps on `device` against the dense reference on the CPU (values and
+// gradients), on random maps with partial coverage, missing segments and both modes.
+void expect_seg_equals_dense(const torch::Device& device, int64_t h, int64_t w, int64_t l, uint64_t seed) {
+  torch::manual_seed(seed);
   const torch::Tensor sam_table = torch::randn({6, l}), gml_table = torch::randn({4, l});
   const torch::Tensor sam_ids_t = torch::randint(-1, 6, {h * w}, torch::kInt32);
   const torch::Tensor gml_ids_t = torch::randint(-1, 4, {h * w}, torch::kInt32);
@@ -164,27 +168,56 @@ TEST(LanguageLoss, FromSegMapsEqualsDenseReference) {
     in.coverage = coverage;
     const LanguageLoss ref = language_loss(in, weights);
     ref.total.backward();
-    const torch::Tensor z = base.clone().requires_grad_(true);
-    const LanguageLoss fused = language_loss_from_seg(z, {sam_ids.data(), sam_table}, {gml_ids.data(), gml_table},
-                                                      coverage, weights);
+    const torch::Tensor z = base.clone().to(device).requires_grad_(true);
+    const LanguageLoss fused = language_loss_from_seg(z, {ids_tensor(sam_ids, h, w), sam_table},
+                                                      {ids_tensor(gml_ids, h, w), gml_table}, coverage, weights);
     fused.total.backward();
     EXPECT_NEAR(fused.total.item<double>(), ref.total.item<double>(), 1e-5) << baseline;
     EXPECT_NEAR(fused.sam.item<double>(), ref.sam.item<double>(), 1e-5);
     EXPECT_NEAR(fused.sam_gml.item<double>(), ref.sam_gml.item<double>(), 1e-5);
     EXPECT_NEAR(fused.citygml.item<double>(), ref.citygml.item<double>(), 1e-5);
-    EXPECT_TRUE(torch::allclose(z.grad(), in.rendered.grad(), 1e-5, 1e-7)) << baseline;
+    ASSERT_EQ(z.grad().device().type(), device.type());
+    EXPECT_TRUE(torch::allclose(z.grad().cpu(), in.rendered.grad(), 1e-5, 1e-7)) << baseline;
   }
+  // Ids outside the table are an error, and shapes are checked.
+  std::vector<int32_t> bad = sam_ids;
+  bad[h * w / 2] = 6;
+  const torch::Tensor z = base.to(device);
+  EXPECT_THROW(language_loss_from_seg(z, {ids_tensor(bad, h, w), sam_table}, {}, coverage, {1.0, 0.5, true}), Error);
+  bad[h * w / 2] = -2;
+  EXPECT_THROW(language_loss_from_seg(z, {ids_tensor(bad, h, w), sam_table}, {}, coverage, {1.0, 0.5, true}), Error);
+  EXPECT_THROW(language_loss_from_seg(z, {ids_tensor(sam_ids, h * w, 1), sam_table}, {}, coverage, {1.0, 0.5, true}),
+               Error);
+  EXPECT_THROW(language_loss_from_seg(z, {ids_tensor(sam_ids, h, w), sam_table.slice(1, 1)}, {}, coverage,
+                                      {1.0, 0.5, true}),
+               Error);
+}
+
+TEST(LanguageLoss, FromSegMapsEqualsDenseReference) {
+  expect_seg_equals_dense(torch::kCPU, 7, 9, 5, 3);
+  expect_seg_equals_dense(torch::kCPU, 5, 4, 37, 4);
   // The hand-computed 2 x 2 case as well.
   Case2x2 c;
-  const LanguageLoss l2 = language_loss_from_seg(c.rendered, {c.sam_ids.data(), c.sam_table},
-                                                 {c.gml_ids.data(), c.gml_table}, c.coverage, {1.0, 0.5, false});
+  const LanguageLoss l2 =
+      language_loss_from_seg(c.rendered, {ids_tensor(c.sam_ids, 2, 2), c.sam_table}, {ids_tensor(c.gml_ids, 2, 2), c.gml_table},
+                             c.coverage, {1.0, 0.5, false});
   EXPECT_NEAR(l2.total.item<double>(), 5.0 / 8 + 2.0 / 8 + 0.5 * 3.0 / 8, 1e-6);
-  // Ids outside the table are an error.
-  std::vector<int32_t> bad = c.sam_ids;
-  bad[2] = 2;
-  EXPECT_THROW(language_loss_from_seg(c.rendered, {bad.data(), c.sam_table}, {c.gml_ids.data(), c.gml_table},
-                                      c.coverage, {}),
-               Error);
+  // No seg maps at all: zero loss and gradient.
+  const torch::Tensor z = c.rendered.clone().requires_grad_(true);
+  const LanguageLoss none = language_loss_from_seg(z, {}, {}, c.coverage, {1.0, 0.5, false});
+  none.total.backward();
+  EXPECT_EQ(none.total.item<double>(), 0.0);
+  EXPECT_EQ(z.grad().abs().sum().item<double>(), 0.0);
+}
+
+// The CUDA kernel (seg_loss_cuda.h) against the same reference: channel counts below, at and above a
+// warp's 32 lanes and LangSplat's 3, views of several warps' pixels per block.
+TEST(LanguageLossCuda, FromSegMapsEqualsDenseReferenceOnTheDevice) {
+  if (!torch::cuda::is_available()) GTEST_SKIP() << "no CUDA device: the CUDA loss is not compared with the reference";
+  expect_seg_equals_dense(torch::kCUDA, 7, 9, 3, 5);
+  expect_seg_equals_dense(torch::kCUDA, 37, 53, 32, 6);
+  expect_seg_equals_dense(torch::kCUDA, 61, 43, 128, 7);
+  expect_seg_equals_dense(torch::kCUDA, 9, 11, 200, 8);
 }
 
 }  // namespace
