@@ -1,9 +1,12 @@
 // Language-field costs (docs/benchmarks.md):
-// 1. training, ms per iteration with 128 channels: rasterize_features forward + L1 loss against a
-//    random target latent map + backward into the per-Gaussian latents (geometry frozen, paper 3.3);
+// 1. training, ms per iteration with 128 channels: rasterize_features forward + a loss (--loss: L1 against a
+//    random latent map, or the paper's loss from seg maps) + backward into the per-Gaussian latents
+//    (geometry frozen, paper 3.3);
 // 2. querying, relevance maps per second at 1080p: render 128 channels, then every pixel's cosine of its
 //    decoded feature (shared autoencoder, 128 -> 256 -> 512) with one query feature, as `query` takes it
 //    (DecodedCosines: the hidden layer, then the last layer's triangular factor; src/query/relevance.h).
+// --matmul-precision highest,high times the decode with float32 products and again with TF32 (CUDA), and
+// prints how far the second's cosines are from the first's.
 // Scenes are random (seeded) Gaussians spread over the view frustum, as bench_splat's.
 // Usage: bench_language [--threads N] [--device cpu|cuda] [--train-scenes 200000@800x600,50000@480x360] ...
 // On CUDA every timed body ends with a device synchronisation, so the wall times are the GPU's.
@@ -26,7 +29,9 @@
 #include "core/args.h"
 #include "core/error.h"
 #include "core/heap_reuse.h"
+#include "core/strings.h"
 #include "language/autoencoder.h"
+#include "language/language_loss.h"
 #include "query/relevance.h"
 #include "splat/compute_device.h"
 #include "splat/rasterize.h"
@@ -97,9 +102,7 @@ struct SceneSpec {
 
 std::vector<SceneSpec> parse_scenes(const std::string& text) {
   std::vector<SceneSpec> specs;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
+  for (const std::string& item : split_commas(text)) {
     SceneSpec s{};
     char at_sign = 0, x = 0;
     std::stringstream is(item);
@@ -111,17 +114,61 @@ std::vector<SceneSpec> parse_scenes(const std::string& text) {
   return specs;
 }
 
-// One language-training iteration's rasterizer work: forward, L1 against the target, backward.
-Timing bench_training(const SceneSpec& spec, int channels, int repeats, const at::Device& device) {
+// Seg maps as the features stage writes them, for the paper's loss: SAM segments of 40 x 40 px blocks,
+// CityGML regions of 80 x 80 px blocks on the left 60 % of the view (the covered part), random latents.
+struct SegTargets {
+  std::vector<int32_t> sam, gml;
+  at::Tensor sam_table, gml_table, coverage;
+};
+
+SegTargets make_seg_targets(int width, int height, int channels, at::Generator& gen, const at::Device& device) {
+  SegTargets t;
+  const int covered = width * 6 / 10, sam_cols = (width + 39) / 40, gml_cols = (covered + 79) / 80;
+  t.coverage = at::zeros({height, width});
+  t.coverage.slice(1, 0, covered).fill_(1);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      t.sam.push_back(y / 40 * sam_cols + x / 40);
+      t.gml.push_back(x < covered ? y / 80 * gml_cols + x / 80 : -1);
+    }
+  t.sam_table = at::rand({int64_t(t.sam.back()) + 1, channels}, gen).to(device);
+  t.gml_table = at::rand({int64_t((height - 1) / 80 * gml_cols + (covered - 1) / 80) + 1, channels}, gen).to(device);
+  t.coverage = t.coverage.to(device);
+  return t;
+}
+
+// One language-training iteration's rasterizer work: forward, the loss, backward. Losses: "l1" (the mean
+// L1 against a random latent map; the figures before the paper's loss was timed), "seg" (the paper's
+// loss from seg maps, as train-language computes it: language_loss_from_seg) and "dense" (the same loss
+// from gathered H x W x L targets, language_loss: the reference, and what the GPU ran before seg_loss_cuda).
+Timing bench_training(const SceneSpec& spec, int channels, const std::string& loss_kind, int repeats,
+                      const at::Device& device) {
   const Scene s = make_scene(spec.gaussians, spec.width, spec.height, 42, device);
   at::Generator gen = at::detail::createCPUGenerator(7);
   const at::Tensor latents = at::rand({spec.gaussians, channels}, gen).to(device).requires_grad_(true);
-  const at::Tensor target = at::rand({spec.height, spec.width, channels}, gen).to(device);
+  const at::Tensor target = loss_kind == "l1" ? at::rand({spec.height, spec.width, channels}, gen).to(device) : at::Tensor();
+  const SegTargets seg = make_seg_targets(spec.width, spec.height, channels, gen, device);
+  const auto seg_map = [&](const std::vector<int32_t>& ids) {
+    return at::from_blob(const_cast<int32_t*>(ids.data()), {spec.height, spec.width}, at::kInt);
+  };
+  const LanguageLossWeights weights;
   return time_it(repeats, device, [&] {
     const RasterizeOutput out =
         rasterize_features(s.means, s.scales, s.quats, s.opacities, latents, at::Tensor(), s.settings);
-    const at::Tensor loss = (out.image - target).abs().mean();
-    loss.backward();
+    if (loss_kind == "l1") {
+      (out.image - target).abs().mean().backward();
+    } else if (loss_kind == "seg") {
+      language_loss_from_seg(out.image, {seg_map(seg.sam), seg.sam_table}, {seg_map(seg.gml), seg.gml_table},
+                             seg.coverage, weights)
+          .total.backward();
+    } else {
+      LanguageLossInputs in;
+      in.rendered = out.image;
+      in.sam = gather_latent_target(seg.sam.data(), spec.height, spec.width, seg.sam_table, "SAM seg map");
+      in.gml = gather_latent_target(seg.gml.data(), spec.height, spec.width, seg.gml_table, "CityGML seg map");
+      in.coverage = seg.coverage;
+      language_loss(in, weights).total.backward();
+    }
     latents.mutable_grad().zero_();
   });
 }
@@ -131,8 +178,11 @@ int bench_main(int argc, char** argv) {
   args.option("threads", "2", "OpenMP / ATen threads")
       .option("channels", "128", "latent channels")
       .option("train-scenes", "200000@800x600,50000@480x360", "training scenes, N@WxH comma-separated")
+      .option("loss", "l1", "training losses to time, comma-separated: l1, seg (train-language's), dense")
       .option("query-scene", "200000@1920x1080", "the relevance-map scene, N@WxH")
       .option("chunk", "65536", "pixels decoded per autoencoder call")
+      .option("matmul-precision", "highest", "float32 product precisions to time the decode with, comma-separated "
+              "(highest, high: TF32 on CUDA, medium)")
       .option("repeats", "3", "timed repeats (after one warm-up); the median is reported")
       .option("device", "cpu", "cpu or cuda (needs a CUDA build)");
   if (!args.parse(argc, argv)) return 0;
@@ -142,16 +192,26 @@ int bench_main(int argc, char** argv) {
   at::set_num_threads(threads);
   const int channels = args.get_int("channels");
   const int repeats = std::max(1, args.get_int("repeats"));
+  const std::vector<std::string> losses = split_commas(args.get("loss"));
+  for (const std::string& l : losses)
+    if (l != "l1" && l != "seg" && l != "dense")
+      throw UsageError("bench_language: --loss takes l1, seg or dense, got '" + l + "'");
+  const std::vector<std::string> precisions = split_commas(args.get("matmul-precision"));
+  for (const std::string& p : precisions)
+    if (p != "highest" && p != "high" && p != "medium")
+      throw UsageError("bench_language: --matmul-precision takes highest, high or medium, got '" + p + "'");
 
   std::printf("device %s, threads %d, %d channels, median of %d repeats after one warm-up\n", device.str().c_str(),
               threads, channels, repeats);
-  for (const SceneSpec& spec : parse_scenes(args.get("train-scenes"))) {
-    const Timing t = bench_training(spec, channels, repeats, device);
-    std::printf("training  %7lld Gaussians %4dx%-4d  %9.1f ms/iteration (wall)  CPU %9.1f ms  CPU/threads %9.1f ms\n",
-                static_cast<long long>(spec.gaussians), spec.width, spec.height, t.wall_ms, t.cpu_ms,
-                t.cpu_ms / threads);
-    std::fflush(stdout);
-  }
+  for (const SceneSpec& spec : parse_scenes(args.get("train-scenes")))
+    for (const std::string& loss : losses) {
+      const Timing t = bench_training(spec, channels, loss, repeats, device);
+      std::printf("training  %7lld Gaussians %4dx%-4d  %9.1f ms/iteration (wall)  CPU %9.1f ms  CPU/threads %9.1f ms"
+                  "  loss %s\n",
+                  static_cast<long long>(spec.gaussians), spec.width, spec.height, t.wall_ms, t.cpu_ms,
+                  t.cpu_ms / threads, loss.c_str());
+      std::fflush(stdout);
+    }
 
   // Relevance map: render, decode per pixel (chunks), cosine with a query feature.
   const SceneSpec q = parse_scenes(args.get("query-scene")).at(0);
@@ -172,21 +232,35 @@ int bench_main(int argc, char** argv) {
     rendered = rasterize_features(s.means, s.scales, s.quats, s.opacities, latents, at::Tensor(), s.settings).image;
   });
   const DecodedCosines cosines(linear_head_decoder(ae), query.reshape({1, -1}));
-  const Timing decode = time_it(repeats, device, [&] {
-    at::NoGradGuard no_grad;
-    const at::Tensor pixels = rendered.reshape({-1, channels});
-    relevance = at::empty({pixels.size(0)}, pixels.options());
-    for (int64_t begin = 0; begin < pixels.size(0); begin += chunk) {
-      const int64_t end = std::min(pixels.size(0), begin + chunk);
-      relevance.slice(0, begin, end).copy_(cosines(pixels.slice(0, begin, end)).squeeze(1));
-    }
-  });
-  const double total_wall = render.wall_ms + decode.wall_ms, total_cpu = render.cpu_ms + decode.cpu_ms;
-  std::printf("query     %7lld Gaussians %4dx%-4d  render %9.1f ms  decode+cosine %9.1f ms  (CPU %9.1f / %9.1f ms)\n",
-              static_cast<long long>(q.gaussians), q.width, q.height, render.wall_ms, decode.wall_ms, render.cpu_ms,
-              decode.cpu_ms);
-  std::printf("query     relevance maps: %.3f FPS (wall), %.3f FPS (CPU/threads estimate)\n", 1e3 / total_wall,
-              1e3 / (total_cpu / threads));
+  // Each precision of float32 products in turn (PyTorch's names: "high" lets CUDA use TF32 tensor cores);
+  // a later one's maps are compared with the first one's.
+  at::Tensor first;
+  for (const std::string& precision : precisions) {
+    at::globalContext().setFloat32MatmulPrecision(precision);
+    const Timing decode = time_it(repeats, device, [&] {
+      at::NoGradGuard no_grad;
+      const at::Tensor pixels = rendered.reshape({-1, channels});
+      relevance = at::empty({pixels.size(0)}, pixels.options());
+      for (int64_t begin = 0; begin < pixels.size(0); begin += chunk) {
+        const int64_t end = std::min(pixels.size(0), begin + chunk);
+        relevance.slice(0, begin, end).copy_(cosines(pixels.slice(0, begin, end)).squeeze(1));
+      }
+    });
+    const double total_wall = render.wall_ms + decode.wall_ms, total_cpu = render.cpu_ms + decode.cpu_ms;
+    std::printf("query     %7lld Gaussians %4dx%-4d  render %9.1f ms  decode+cosine %9.1f ms  (CPU %9.1f / %9.1f ms)"
+                "  matmul precision %s\n",
+                static_cast<long long>(q.gaussians), q.width, q.height, render.wall_ms, decode.wall_ms, render.cpu_ms,
+                decode.cpu_ms, precision.c_str());
+    std::printf("query     relevance maps: %.3f FPS (wall), %.3f FPS (CPU/threads estimate)", 1e3 / total_wall,
+                1e3 / (total_cpu / threads));
+    if (first.defined())
+      std::printf("; cosines differ from the %s ones by at most %.2e", precisions[0].c_str(),
+                  (relevance - first).abs().max().item<double>());
+    else
+      first = relevance.clone();
+    std::printf("\n");
+    std::fflush(stdout);
+  }
   return 0;
 }
 

@@ -3,12 +3,14 @@
 # scripts/device/prepare.sh). Appends every step's output to $OUT/gpu.log and prints one line per step.
 #   bash scripts/device/gpu_checks.sh [STEP...] [debug PROGRAM ARGS...]   (default: the steps of ALL, in order)
 # Steps: splat_tests (the CUDA rasterizer against the CPU path), query_tests (relevance cosines on CUDA
-# against the CPU path), models_tests (CLIP/SAM fixture parity on CUDA), bench_* (rasterizer, CLIP,
-# language field, SAM AMG on the GPU), run (`run --models tiny` on the bundled example), train_rgb
-# (densification, the cap and resuming on the GPU), suite (every test program carried, 16 at a time, one
-# OpenMP thread each), profile_splat / profile_language (every kernel's duration under Nsight Compute: one
-# photometric and 128-channel iteration at 1M Gaussians, 1600x1000; one language iteration at 200k,
-# 800x600 and a 1080p relevance map; $OUT/ncu_*.csv).
+# against the CPU path), language_tests (the language loss's CUDA kernel against its reference),
+# models_tests (CLIP/SAM fixture parity on CUDA), bench_* (rasterizer, CLIP, language field, SAM AMG on
+# the GPU), run (`run --models tiny` on the bundled example), query_gpu (after run: `query --device cuda`
+# on its model against run's CPU query, scripts/device/compare_query.py), train_rgb (densification, the
+# cap and resuming on the GPU), suite (every test program carried, 16 at a time, one OpenMP thread each),
+# profile_splat / profile_language (every kernel's duration under Nsight Compute: one photometric and
+# 128-channel iteration at 1M Gaussians, 1600x1000; one language iteration at 200k, 800x600 and a 1080p
+# relevance map; $OUT/ncu_*.csv).
 # GPU_LIB_OVERRIDE=DIR: libraries in DIR (e.g. an earlier commit's libcls.so) load before the build's,
 # so one call can time before and after on the same machine.
 set -uo pipefail
@@ -46,7 +48,7 @@ step() {  # step NAME LIMIT_S COMMAND...
   ldd "$B/citylangsplat" "$B"/test_* "$B"/bench/bench_* | grep "not found"; } >> "$LOG" 2>&1
 # Each case is one step; the default order puts what matters most first, so that a call cut short
 # by its time limit still brings back the rest's log.
-ALL=(splat_tests query_tests bench_splat models_tests bench_clip_bf16 bench_language run bench_amg amg_fixture bench_clip_other
+ALL=(splat_tests query_tests language_tests bench_splat models_tests bench_clip_bf16 bench_language run bench_amg amg_fixture bench_clip_other
      bench_splat_200k)
 # `gpu_checks.sh debug PROGRAM ARGS...`: PROGRAM of the build under cuda-gdb (the machine has no gdb),
 # its backtrace where it stops; after the steps named before `debug`, which takes the rest of the line.
@@ -62,15 +64,17 @@ while [ $# -gt 0 ]; do
 done
 [ ${#steps[@]} -gt 0 ] || [ ${#debug[@]} -gt 0 ] || steps=("${ALL[@]}")
 for s in "${steps[@]}"; do
-  case " ${ALL[*]} train_rgb suite profile_splat profile_language " in
+  case " ${ALL[*]} query_gpu train_rgb suite profile_splat profile_language " in
     *" $s "*) ;;
-    *) echo "gpu_checks: unknown step $s (steps: ${ALL[*]} train_rgb suite profile_splat profile_language)" >&2; exit 2 ;;
+    *) echo "gpu_checks: unknown step $s (steps: ${ALL[*]} query_gpu train_rgb suite profile_splat profile_language)" >&2
+       exit 2 ;;
   esac
 done
 for s in "${steps[@]}"; do
   case $s in
     splat_tests) step "$s" 90 "$B/test_splat" --gtest_filter='*Cuda*:*CUDA*' ;;
     query_tests) step "$s" 60 "$B/test_query" --gtest_filter='*Cuda*' ;;
+    language_tests) step "$s" 60 "$B/test_language" --gtest_filter='*Cuda*' ;;
     models_tests)
       step "$s" 150 env CLS_TEST_DEVICE=cuda "$B/test_models" \
         --gtest_filter='ClipParity*:ClipModel.ReducedPrecision*:SamPredictor.*:SamAmgRun.*' ;;
@@ -86,8 +90,9 @@ for s in "${steps[@]}"; do
           --threads 16
       done ;;
     bench_language)
-      step "$s" 90 "$B/bench/bench_language" --device cuda --threads 16 --repeats 10 \
-        --train-scenes 50000@480x360,200000@800x600,1000000@1600x1000 --query-scene 200000@1920x1080
+      step "$s" 180 "$B/bench/bench_language" --device cuda --threads 16 --repeats 10 \
+        --train-scenes 50000@480x360,200000@800x600,1000000@1600x1000 --loss l1,dense,seg \
+        --query-scene 200000@1920x1080 --matmul-precision highest,high
       step bench_language_chunk256k 60 "$B/bench/bench_language" --device cuda --threads 16 --repeats 10 \
         --train-scenes '' --query-scene 200000@1920x1080 --chunk 262144 ;;
     bench_amg) step "$s" 120 "$B/bench/bench_amg" --device cuda --masks '' --model vit_h --threads 16 ;;
@@ -97,6 +102,14 @@ for s in "${steps[@]}"; do
       make_example
       step run_tiny 300 "$B/citylangsplat" run /tmp/example --models tiny
       cat /tmp/example/citylangsplat/run.json >> "$LOG" 2>&1 ;;
+    query_gpu)  # `query --device cuda` on the run step's model, against the query that run made on the CPU
+      Q=/tmp/example/citylangsplat/query/citylangsplat
+      mapfile -t texts < <(python3 -c 'import json, sys; [print(q["text"]) for q in json.load(open(sys.argv[1]))["queries"]]' \
+        $Q/query.json)
+      views=$(python3 -c 'import json, sys; print(",".join(v["name"] for v in json.load(open(sys.argv[1]))["views"]))' $Q/query.json)
+      step "$s" 120 "$B/citylangsplat" query /tmp/example/citylangsplat/language/citylangsplat "${texts[@]}" --scene /tmp/example \
+        --views "$views" --device cuda --out /tmp/query_gpu
+      step query_compare 60 python3 scripts/device/compare_query.py $Q /tmp/query_gpu ;;
     train_rgb)  # densification, the Gaussian cap and resuming on the GPU; the compare scene's PSNR
       make_example
       step train_rgb_3000 180 "$B/citylangsplat" train-rgb --scene /tmp/example --out /tmp/rgb --iterations 3000 --device cuda
@@ -116,12 +129,13 @@ for s in "${steps[@]}"; do
       if [ "$s" = profile_splat ]; then
         args=(bench/bench_splat --device cuda --threads 16 --gaussians 1000000 --width 1600 --height 1000 --iters 1)
       else
-        args=(bench/bench_language --device cuda --threads 16 --repeats 1 --train-scenes 200000@800x600 --query-scene 200000@1920x1080)
+        args=(bench/bench_language --device cuda --threads 16 --repeats 1 --train-scenes 200000@800x600 --loss seg
+              --query-scene 200000@1920x1080)
       fi
       step "$s" 240 "$NCU" --clock-control none --metrics gpu__time_duration.sum --csv --log-file "${OUT:-/tmp}/ncu_$s.csv" \
         "$B/${args[0]}" "${args[@]:1}" ;;
     suite)  # in the build folder, as ctest runs them; one row per test program in the log
-      step "$s" 500 sh -c 'cd "$1" && for t in ./test_*; do echo "$t"; done | OMP_NUM_THREADS=1 xargs -P 16 -I{} sh -c \
+      step "$s" 300 sh -c 'cd "$1" && for t in ./test_*; do echo "$t"; done | OMP_NUM_THREADS=1 xargs -P 16 -I{} sh -c \
         "{} --gtest_brief=1 > /tmp/\$(basename {}).log 2>&1; echo \"\$(basename {}) rc=\$?\""' suite "$B"
       cat /tmp/test_*.log >> "$LOG" ;;
   esac
