@@ -179,7 +179,7 @@ int bench_main(int argc, char** argv) {
       .option("channels", "128", "latent channels")
       .option("train-scenes", "200000@800x600,50000@480x360", "training scenes, N@WxH comma-separated")
       .option("loss", "l1", "training losses to time, comma-separated: l1, seg (train-language's), dense")
-      .option("query-scene", "200000@1920x1080", "the relevance-map scene, N@WxH")
+      .option("query-scene", "200000@1920x1080", "the relevance-map scene, N@WxH (empty: none)")
       .option("chunk", "65536", "pixels decoded per autoencoder call")
       .option("matmul-precision", "highest", "float32 product precisions to time the decode with, comma-separated "
               "(highest, high: TF32 on CUDA, medium)")
@@ -214,7 +214,9 @@ int bench_main(int argc, char** argv) {
     }
 
   // Relevance map: render, decode per pixel (chunks), cosine with a query feature.
-  const SceneSpec q = parse_scenes(args.get("query-scene")).at(0);
+  const std::vector<SceneSpec> query_scenes = parse_scenes(args.get("query-scene"));
+  if (query_scenes.empty()) return 0;
+  const SceneSpec q = query_scenes.front();
   const Scene s = make_scene(q.gaussians, q.width, q.height, 43, device);
   at::Generator gen = at::detail::createCPUGenerator(8);
   AutoencoderConfig config;
