@@ -1,15 +1,17 @@
 #!/usr/bin/env python3
 """Compares two `citylangsplat query` outputs of one model (e.g. --device cpu and --device cuda).
 
-  compare_query.py REFERENCE_DIR OTHER_DIR [--map-tol 1e-2] [--score-tol 1e-5]
-Prints, and fails (exit 1) beyond the tolerances: the largest difference of every map (maps/*/*.npy,
-float32), of the per-Gaussian scores (score_* properties of scores.ply) and the selection counts of
-query.json. Plain Python: the GPU machines have no numpy.
+  compare_query.py REFERENCE_DIR OTHER_DIR [--map-tol 1e-3] [--score-tol 1e-5]
+Prints, and fails (exit 1) beyond the tolerances or on a NaN: the largest difference of every map
+(maps/*/*.npy, float32; a map in only one of the two fails), of the per-Gaussian scores (score_*
+properties of scores.ply) and the selection counts of query.json. Plain Python: the GPU machines have
+no numpy.
 """
 import argparse
 import array
 import glob
 import json
+import math
 import os
 import struct
 import sys
@@ -36,6 +38,26 @@ PLY_TYPES = {"char": "b", "int8": "b", "uchar": "B", "uint8": "B", "short": "h",
              "double": "d", "float64": "d"}
 
 
+def largest_difference(a, b):
+    """max |a_i - b_i|, NaN if either holds a NaN (plain max() would skip it)."""
+    d = 0.0
+    for x, y in zip(a, b):
+        e = abs(x - y)
+        if math.isnan(e):
+            return math.nan
+        d = max(d, e)
+    return d
+
+
+def within(d, tol):
+    return d <= tol  # False for NaN
+
+
+def read_json(path):
+    with open(path) as f:
+        return json.load(f)
+
+
 def read_scores(path):
     """The score_* columns of a binary little-endian PLY's vertices (scalar properties only)."""
     with open(path, "rb") as f:
@@ -44,6 +66,8 @@ def read_scores(path):
     names, fmt, count = [], "<", 0
     for line in data[:end].decode("ascii").splitlines():
         parts = line.split()
+        if parts[:1] == ["format"] and parts[1:2] != ["binary_little_endian"]:
+            sys.exit(f"compare_query: {path}: format {' '.join(parts[1:])}, not binary_little_endian")
         if parts[:2] == ["element", "vertex"]:
             count = int(parts[2])
         elif parts[:1] == ["property"]:
@@ -60,29 +84,32 @@ def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("reference")
     p.add_argument("other")
-    p.add_argument("--map-tol", type=float, default=1e-2)
+    p.add_argument("--map-tol", type=float, default=1e-3)
     p.add_argument("--score-tol", type=float, default=1e-5)
     a = p.parse_args()
     failed = False
-    maps = sorted(os.path.relpath(f, a.reference) for f in glob.glob(os.path.join(a.reference, "maps", "*", "*.npy")))
+    def maps_of(d):
+        return {os.path.relpath(f, d) for f in glob.glob(os.path.join(d, "maps", "*", "*.npy"))}
+    maps, other_maps = maps_of(a.reference), maps_of(a.other)
     if not maps:
         sys.exit(f"compare_query: no maps under {a.reference}/maps")
+    for rel in sorted(maps ^ other_maps):
+        print(f"only in {a.reference if rel in maps else a.other}: {rel}")
+        failed = True
     worst = (0.0, "")
-    for rel in maps:
-        other = os.path.join(a.other, rel)
-        if not os.path.exists(other):
-            print(f"missing in {a.other}: {rel}")
-            failed = True
-            continue
-        (shape_r, r), (shape_o, o) = read_npy(os.path.join(a.reference, rel)), read_npy(other)
+    for rel in sorted(maps & other_maps):
+        (shape_r, r), (shape_o, o) = read_npy(os.path.join(a.reference, rel)), read_npy(os.path.join(a.other, rel))
         if shape_r != shape_o:
             print(f"{rel}: shape {shape_r} against {shape_o}")
             failed = True
             continue
-        d = max((abs(x - y) for x, y in zip(r, o)), default=0.0)
-        worst = max(worst, (d, rel))
-    print(f"maps: {len(maps)} compared, largest difference {worst[0]:.3g} ({worst[1]})")
-    failed |= worst[0] > a.map_tol
+        d = largest_difference(r, o)
+        if math.isnan(d) or d > worst[0]:
+            worst = (d, rel)
+        if math.isnan(d):
+            break
+    print(f"maps: {len(maps & other_maps)} compared, largest difference {worst[0]:.3g} ({worst[1]})")
+    failed |= not within(worst[0], a.map_tol)
     for d in (a.reference, a.other):
         for name in ("scores.ply", "query.json"):
             if not os.path.exists(os.path.join(d, name)):
@@ -92,10 +119,11 @@ def main():
         print("scores.ply: the score properties or the Gaussian counts differ")
         failed = True
     else:
-        d = max((max((abs(x - y) for x, y in zip(sr[k], so[k])), default=0.0) for k in sr), default=0.0)
+        diffs = [largest_difference(sr[k], so[k]) for k in sr]
+        d = math.nan if any(math.isnan(x) for x in diffs) else max(diffs, default=0.0)
         print(f"scores: {len(sr)} texts x {len(next(iter(sr.values()), []))} Gaussians, largest difference {d:.3g}")
-        failed |= d > a.score_tol
-    qr, qo = (json.load(open(os.path.join(d, "query.json")))["queries"] for d in (a.reference, a.other))
+        failed |= not within(d, a.score_tol)
+    qr, qo = (read_json(os.path.join(d, "query.json"))["queries"] for d in (a.reference, a.other))
     sel_r = [(q["text"], q["level"], q["selection"]["count"]) for q in qr]
     sel_o = [(q["text"], q["level"], q["selection"]["count"]) for q in qo]
     print(f"selections (text, level, count) {'equal' if sel_r == sel_o else 'differ'}: {sel_o}")

@@ -111,36 +111,47 @@ std::pair<at::Tensor, at::Tensor> on_device(const SegMapTarget& t, const at::Dev
   return {t.ids.to(device).contiguous(), t.table.to(device).contiguous()};
 }
 
-// The CPU pass: dL/dZ^ into `grad`, the sums returned; false where an id is outside its table.
-bool seg_loss_cpu(const at::Tensor& z, const at::Tensor& coverage, const at::Tensor& sam_ids, const at::Tensor& sam_table,
-                  const at::Tensor& gml_ids, const at::Tensor& gml_table, const SegLossWeights& weights, at::Tensor& grad,
-                  SegLossSums& total) {
-  const int64_t l = z.size(2), n = z.size(0) * z.size(1);
-  const float* zp = z.data_ptr<float>();
-  const float* mp = coverage.data_ptr<float>();
-  float* gp = grad.data_ptr<float>();
-  const int32_t* sid = sam_ids.defined() ? sam_ids.data_ptr<int32_t>() : nullptr;
-  const int32_t* gid = gml_ids.defined() ? gml_ids.data_ptr<int32_t>() : nullptr;
-  const float* sp = sid ? sam_table.data_ptr<float>() : nullptr;
-  const float* gtp = gid ? gml_table.data_ptr<float>() : nullptr;
-  const int64_t ks = sid ? sam_table.size(0) : 0, kg = gid ? gml_table.size(0) : 0;
+// The tensors of one pass and the SegLossArgs that point into them (on their device).
+struct SegLossTensors {
+  at::Tensor z, coverage, sam_ids, sam_table, gml_ids, gml_table, grad;
+  SegLossArgs args(const SegLossWeights& weights) {
+    SegLossArgs a;
+    a.rendered = z.data_ptr<float>();
+    a.sam_ids = sam_ids.defined() ? sam_ids.data_ptr<int32_t>() : nullptr;
+    a.sam_table = a.sam_ids ? sam_table.data_ptr<float>() : nullptr;
+    a.ks = a.sam_ids ? sam_table.size(0) : 0;
+    a.gml_ids = gml_ids.defined() ? gml_ids.data_ptr<int32_t>() : nullptr;
+    a.gml_table = a.gml_ids ? gml_table.data_ptr<float>() : nullptr;
+    a.kg = a.gml_ids ? gml_table.size(0) : 0;
+    a.coverage = coverage.data_ptr<float>();
+    a.n = z.size(0) * z.size(1);
+    a.l = int(z.size(2));
+    a.weights = weights;
+    a.grad = grad.data_ptr<float>();
+    return a;
+  }
+};
+
+// The CPU pass: dL/dZ^ into a.grad, the sums returned; false where an id lies outside its table.
+bool seg_loss_cpu(const SegLossArgs& a, SegLossSums& total) {
+  const int64_t l = a.l;
   double sum_sam = 0, sum_sam_gml = 0, sum_citygml = 0;
   bool bad_id = false;
 #pragma omp parallel for reduction(+ : sum_sam, sum_sam_gml, sum_citygml) reduction(|| : bad_id) schedule(static)
-  for (int64_t p = 0; p < n; ++p) {
-    const float* zv = zp + p * l;
-    float* gv = gp + p * l;
-    const int32_t s = sid ? sid[p] : -1;
-    const int32_t g = gid ? gid[p] : -1;
-    if (s < -1 || s >= ks || g < -1 || g >= kg) {
+  for (int64_t p = 0; p < a.n; ++p) {
+    const float* zv = a.rendered + p * l;
+    float* gv = a.grad + p * l;
+    const int32_t s = a.sam_ids ? a.sam_ids[p] : -1;
+    const int32_t g = a.gml_ids ? a.gml_ids[p] : -1;
+    if (!ids_in_tables(s, g, a.ks, a.kg)) {
       bad_id = true;
       continue;
     }
-    const float mv = mp[p];
-    const float ws = sam_weight(weights, s, mv), wg = citygml_weight(weights, g, mv);
+    const float mv = a.coverage[p];
+    const float ws = sam_weight(a.weights, s, mv), wg = citygml_weight(a.weights, g, mv);
     float abs_s = 0, abs_g = 0;
-    const float* ts = s >= 0 ? sp + int64_t(s) * l : nullptr;
-    const float* tg = g >= 0 ? gtp + int64_t(g) * l : nullptr;
+    const float* ts = s >= 0 ? a.sam_table + int64_t(s) * l : nullptr;
+    const float* tg = g >= 0 ? a.gml_table + int64_t(g) * l : nullptr;
     // Branch-free inner loops per case, so that they vectorise.
     if (ts && tg) {
 #pragma omp simd reduction(+ : abs_s, abs_g)
@@ -148,10 +159,10 @@ bool seg_loss_cpu(const at::Tensor& z, const at::Tensor& coverage, const at::Ten
     } else if (ts || tg) {
       const float* t = ts ? ts : tg;
       const float wt = ts ? ws : wg;
-      float a = 0;
-#pragma omp simd reduction(+ : a)
-      for (int64_t c = 0; c < l; ++c) gv[c] = l1_channel(zv[c], t[c], wt, a);
-      (ts ? abs_s : abs_g) = a;
+      float a_sum = 0;
+#pragma omp simd reduction(+ : a_sum)
+      for (int64_t c = 0; c < l; ++c) gv[c] = l1_channel(zv[c], t[c], wt, a_sum);
+      (ts ? abs_s : abs_g) = a_sum;
     } else {
       for (int64_t c = 0; c < l; ++c) gv[c] = 0.f;
     }
@@ -166,26 +177,10 @@ bool seg_loss_cpu(const at::Tensor& z, const at::Tensor& coverage, const at::Ten
 #ifdef CLS_WITH_CUDA
 // The CUDA pass (seg_loss_cuda.h), the same contract as seg_loss_cpu. Waits for the device: the sums
 // come back to the host.
-bool seg_loss_gpu(const at::Tensor& z, const at::Tensor& coverage, const at::Tensor& sam_ids, const at::Tensor& sam_table,
-                  const at::Tensor& gml_ids, const at::Tensor& gml_table, const SegLossWeights& weights, at::Tensor& grad,
-                  SegLossSums& total) {
-  const c10::cuda::CUDAGuard guard(z.device());
-  const at::Tensor sums = at::empty({4}, z.options().dtype(at::kDouble));
-  SegLossCudaArgs a;
-  a.rendered = z.data_ptr<float>();
-  a.sam_ids = sam_ids.defined() ? sam_ids.data_ptr<int32_t>() : nullptr;
-  a.sam_table = a.sam_ids ? sam_table.data_ptr<float>() : nullptr;
-  a.ks = a.sam_ids ? int32_t(sam_table.size(0)) : 0;
-  a.gml_ids = gml_ids.defined() ? gml_ids.data_ptr<int32_t>() : nullptr;
-  a.gml_table = a.gml_ids ? gml_table.data_ptr<float>() : nullptr;
-  a.kg = a.gml_ids ? int32_t(gml_table.size(0)) : 0;
-  a.coverage = coverage.data_ptr<float>();
-  a.n = z.size(0) * z.size(1);
-  a.l = int(z.size(2));
-  a.weights = weights;
-  a.grad = grad.data_ptr<float>();
-  a.sums = sums.data_ptr<double>();
-  check_cuda(seg_loss_cuda(a, c10::cuda::getCurrentCUDAStream().stream()), "language loss");
+bool seg_loss_gpu(const SegLossArgs& a, const at::Device& device, SegLossSums& total) {
+  const c10::cuda::CUDAGuard guard(device);
+  const at::Tensor sums = at::empty({4}, at::TensorOptions(device).dtype(at::kDouble));
+  check_cuda(seg_loss_cuda(a, sums.data_ptr<double>(), c10::cuda::getCurrentCUDAStream().stream()), "language loss");
   const at::Tensor host = sums.cpu();
   const double* h = host.data_ptr<double>();
   total = {h[0], h[1], h[2]};
@@ -193,32 +188,50 @@ bool seg_loss_gpu(const at::Tensor& z, const at::Tensor& coverage, const at::Ten
 }
 #endif
 
+// Throws naming the first pixel of the map whose id lies outside its table (read on the CPU: an error path).
+void throw_if_bad_id(const SegMapTarget& t, const char* name) {
+  if (!t.ids.defined()) return;
+  const at::Tensor ids = t.ids.to(at::kCPU).contiguous();
+  const int32_t* p = ids.data_ptr<int32_t>();
+  const int64_t k = t.table.size(0), w = ids.size(1);
+  for (int64_t i = 0; i < ids.numel(); ++i)
+    if (p[i] < -1 || p[i] >= k)
+      throw Error(std::string("language loss: the ") + name + " seg map holds id " + std::to_string(p[i]) +
+                  " at pixel (" + std::to_string(i % w) + ", " + std::to_string(i / w) + "), outside [-1, " +
+                  std::to_string(k) + ") of its latent table");
+}
+
 // Forward: the three terms (into *terms) and dL/dZ^ (saved); backward: grad_output x dL/dZ^.
 class SegLossFunction : public torch::autograd::Function<SegLossFunction> {
  public:
   static at::Tensor forward(AutogradContext* ctx, const at::Tensor& rendered, const SegMapTarget* sam,
                             const SegMapTarget* gml, const at::Tensor& coverage, LanguageLossWeights weights,
                             std::array<double, 3>* terms) {
-    const at::Tensor z = rendered.detach().contiguous();
-    const at::Tensor m = coverage.to(z.device(), at::kFloat).contiguous();
-    at::Tensor grad = at::empty_like(z);
-    const auto [sam_ids, sam_table] = on_device(*sam, z.device());
-    const auto [gml_ids, gml_table] = weights.baseline ? std::pair<at::Tensor, at::Tensor>() : on_device(*gml, z.device());
-    const SegLossWeights w{weights.lambda_sam, weights.lambda_citygml, weights.baseline, 1.0 / double(z.numel())};
+    SegLossTensors t;
+    t.z = rendered.detach().contiguous();
+    t.coverage = coverage.to(t.z.device(), at::kFloat).contiguous();
+    t.grad = at::empty_like(t.z);
+    std::tie(t.sam_ids, t.sam_table) = on_device(*sam, t.z.device());
+    if (!weights.baseline) std::tie(t.gml_ids, t.gml_table) = on_device(*gml, t.z.device());
+    const SegLossWeights w{weights.lambda_sam, weights.lambda_citygml, weights.baseline, 1.0 / double(t.z.numel())};
+    const SegLossArgs a = t.args(w);
     SegLossSums sums;
 #ifdef CLS_WITH_CUDA
-    const bool ok = z.is_cuda() ? seg_loss_gpu(z, m, sam_ids, sam_table, gml_ids, gml_table, w, grad, sums)
-                                : seg_loss_cpu(z, m, sam_ids, sam_table, gml_ids, gml_table, w, grad, sums);
+    const bool ok = t.z.is_cuda() ? seg_loss_gpu(a, t.z.device(), sums) : seg_loss_cpu(a, sums);
 #else
-    const bool ok = seg_loss_cpu(z, m, sam_ids, sam_table, gml_ids, gml_table, w, grad, sums);
+    const bool ok = seg_loss_cpu(a, sums);
 #endif
-    if (!ok) throw Error("language loss: a seg map holds an id outside its latent table");
+    if (!ok) {
+      throw_if_bad_id(*sam, "SAM");
+      if (!weights.baseline) throw_if_bad_id(*gml, "CityGML");
+      throw Error("language loss: a seg map holds an id outside its latent table");
+    }
     (*terms)[0] = sums.sam * w.inv, (*terms)[1] = sums.sam_gml * w.inv, (*terms)[2] = sums.citygml * w.inv;
-    ctx->save_for_backward({grad});
+    ctx->save_for_backward({t.grad});
     const double total = weights.baseline
                              ? (*terms)[0] + (*terms)[1]
                              : (*terms)[0] + weights.lambda_sam * (*terms)[1] + weights.lambda_citygml * (*terms)[2];
-    return at::scalar_tensor(total, z.options());
+    return at::scalar_tensor(total, t.z.options());
   }
 
   static variable_list backward(AutogradContext* ctx, variable_list grad_output) {
@@ -242,6 +255,7 @@ LanguageLoss language_loss_from_seg(const at::Tensor& rendered, const SegMapTarg
 #endif
     throw Error("language loss: rendered latents on " + rendered.device().str() + ": the one-pass loss runs on " +
                 "the CPU or a CUDA device");
+  if (rendered.numel() == 0) throw Error("language loss: the rendered map is empty (" + c10::str(rendered.sizes()) + ")");
   check_map(coverage, rendered, "coverage", false);
   check_seg_target(sam, rendered, "SAM");
   if (!weights.baseline) check_seg_target(gml, rendered, "CityGML");

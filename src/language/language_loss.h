@@ -56,7 +56,8 @@ LanguageLoss language_loss(const LanguageLossInputs& inputs, const LanguageLossW
 // pixels computes the three terms and dL/dZ^ (saved for the backward), so a 480 x 360 x 128 view
 // costs one H x W x L buffer instead of a dozen. `rendered`: float32 on the CPU or, in a CUDA build, a
 // GPU (seg_loss_cuda.h); the ids and tables are moved to its device. Equal to language_loss() up to
-// float rounding (tested), which stays the reference.
+// float rounding (tested), which stays the reference. `total` lies on `rendered`'s device; the three
+// terms are CPU scalars (the pass sums them on the host's side).
 struct SegMapTarget {
   at::Tensor ids;    // H x W int32, -1 = none; undefined = no pixel valid
   at::Tensor table;  // K x L float32 latents

@@ -16,8 +16,8 @@ __device__ float warp_sum(float v) {
 }
 
 // Warp w of the grid takes pixels w, w + (all warps), ...; lane c takes channels c, c + 32, ...
-// Lane 0 keeps the warp's sums; the block adds its warps' sums to a.sums.
-__global__ void seg_loss_kernel(SegLossCudaArgs a) {
+// Lane 0 keeps the warp's sums; the block adds its warps' sums to out.
+__global__ void seg_loss_kernel(SegLossArgs a, double* out) {
   const int lane = threadIdx.x % kWarp, warp = threadIdx.x / kWarp;
   const int64_t warps = static_cast<int64_t>(gridDim.x) * kWarpsPerBlock;
   SegLossSums sums;
@@ -26,7 +26,7 @@ __global__ void seg_loss_kernel(SegLossCudaArgs a) {
     const int s = a.sam_ids ? a.sam_ids[p] : -1;
     const int g = a.gml_ids ? a.gml_ids[p] : -1;
     float* gv = a.grad + p * a.l;
-    if (s < -1 || s >= a.ks || g < -1 || g >= a.kg) {
+    if (!ids_in_tables(s, g, a.ks, a.kg)) {
       bad += 1;
       continue;
     }
@@ -55,15 +55,15 @@ __global__ void seg_loss_kernel(SegLossCudaArgs a) {
   if (threadIdx.x < 4) {
     double t = 0;
     for (int w = 0; w < kWarpsPerBlock; ++w) t += block[w][threadIdx.x];
-    if (t != 0) atomicAdd(a.sums + threadIdx.x, t);
+    if (t != 0) atomicAdd(out + threadIdx.x, t);
   }
 }
 
 }  // namespace
 
-int seg_loss_cuda(const SegLossCudaArgs& a, void* stream_ptr) {
+int seg_loss_cuda(const SegLossArgs& a, double* sums, void* stream_ptr) {
   const cudaStream_t stream = static_cast<cudaStream_t>(stream_ptr);
-  cudaError_t err = cudaMemsetAsync(a.sums, 0, 4 * sizeof(double), stream);
+  cudaError_t err = cudaMemsetAsync(sums, 0, 4 * sizeof(double), stream);
   if (err != cudaSuccess || a.n == 0) return err;
   int device = 0, sms = 0;
   err = cudaGetDevice(&device);
@@ -72,7 +72,7 @@ int seg_loss_cuda(const SegLossCudaArgs& a, void* stream_ptr) {
   // Enough blocks to fill the device a few times over; each warp then walks its pixels.
   const int64_t needed = (a.n + kWarpsPerBlock - 1) / kWarpsPerBlock;
   const int blocks = static_cast<int>(needed < 16LL * sms ? needed : 16LL * sms);
-  seg_loss_kernel<<<blocks, kWarpsPerBlock * kWarp, 0, stream>>>(a);
+  seg_loss_kernel<<<blocks, kWarpsPerBlock * kWarp, 0, stream>>>(a, sums);
   return cudaGetLastError();
 }
 

@@ -9,22 +9,8 @@
 
 namespace cls {
 
-struct SegLossCudaArgs {
-  const float* rendered = nullptr;  // Z^: n x l
-  const int32_t* sam_ids = nullptr;  // n, -1 = no segment; null = no pixel has one
-  const float* sam_table = nullptr;  // ks x l
-  int32_t ks = 0;
-  const int32_t* gml_ids = nullptr;  // n, -1 = no region; null = none (and the baseline passes null)
-  const float* gml_table = nullptr;  // kg x l
-  int32_t kg = 0;
-  const float* coverage = nullptr;  // n, 0/1
-  int64_t n = 0;
-  int l = 0;
-  SegLossWeights weights;
-  float* grad = nullptr;   // n x l: dL/dZ^
-  double* sums = nullptr;  // 4 values, zeroed here: SegLossSums' three, then the count of ids outside their table
-};
-
-int seg_loss_cuda(const SegLossCudaArgs& a, void* stream);
+// `a`'s pointers in device memory; `sums`: 4 device doubles, zeroed here, then SegLossSums' three and the
+// count of pixels whose ids lie outside their tables.
+int seg_loss_cuda(const SegLossArgs& a, double* sums, void* stream);
 
 }  // namespace cls

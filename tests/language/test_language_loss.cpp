@@ -148,8 +148,20 @@ torch::Tensor ids_tensor(const std::vector<int32_t>& ids, int64_t h, int64_t w) 
   return torch::tensor(ids, torch::kInt32).view({h, w});
 }
 
+// The message of the cls::Error that `f` throws ("" if none).
+template <class F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
 // The one-pass loss from seg maps on `device` against the dense reference on the CPU (values and
-// gradients), on random maps with partial coverage, missing segments and both modes.
+// gradients), on random maps with partial coverage, missing segments, pixels equal to their targets
+// (sgn(0) = 0) and both modes; no maps and empty tables; bad ids and shapes.
 void expect_seg_equals_dense(const torch::Device& device, int64_t h, int64_t w, int64_t l, uint64_t seed) {
   torch::manual_seed(seed);
   const torch::Tensor sam_table = torch::randn({6, l}), gml_table = torch::randn({4, l});
@@ -159,6 +171,13 @@ void expect_seg_equals_dense(const torch::Device& device, int64_t h, int64_t w, 
   const std::vector<int32_t> gml_ids(gml_ids_t.data_ptr<int32_t>(), gml_ids_t.data_ptr<int32_t>() + h * w);
   const torch::Tensor coverage = (torch::rand({h, w}) > 0.4).to(torch::kFloat);
   const torch::Tensor base = torch::randn({h, w, l});
+  int64_t ties = 0;
+  for (int64_t p = 0; p < h * w; ++p) {  // every 5th pixel equals its SAM target, every 7th its CityGML one
+    const int32_t s = sam_ids[p], g = gml_ids[p];
+    if (p % 5 == 0 && s >= 0) base.view({h * w, l})[p].copy_(sam_table[s]), ++ties;
+    if (p % 7 == 0 && g >= 0) base.view({h * w, l})[p].copy_(gml_table[g]), ++ties;
+  }
+  ASSERT_GT(ties, 0);
   for (bool baseline : {false, true}) {
     const LanguageLossWeights weights{1.3, 0.7, baseline};
     LanguageLossInputs in;
@@ -179,13 +198,35 @@ void expect_seg_equals_dense(const torch::Device& device, int64_t h, int64_t w, 
     ASSERT_EQ(z.grad().device().type(), device.type());
     EXPECT_TRUE(torch::allclose(z.grad().cpu(), in.rendered.grad(), 1e-5, 1e-7)) << baseline;
   }
-  // Ids outside the table are an error, and shapes are checked.
-  std::vector<int32_t> bad = sam_ids;
-  bad[h * w / 2] = 6;
+  // No seg maps, or an empty SAM table with every id -1: zero loss and gradient.
+  const std::vector<int32_t> none(h * w, -1);
+  for (const SegMapTarget& sam : {SegMapTarget{}, SegMapTarget{ids_tensor(none, h, w), torch::zeros({0, l})}}) {
+    const torch::Tensor z = base.clone().to(device).requires_grad_(true);
+    const LanguageLoss empty = language_loss_from_seg(z, sam, {}, coverage, {1.0, 0.5, false});
+    empty.total.backward();
+    EXPECT_EQ(empty.total.item<double>(), 0.0);
+    EXPECT_EQ(z.grad().abs().sum().item<double>(), 0.0);
+  }
+  // Ids outside the table are errors naming the map, the id and the pixel; shapes are checked.
   const torch::Tensor z = base.to(device);
+  const int64_t at = h * w / 2;
+  const std::string where = " at pixel (" + std::to_string(at % w) + ", " + std::to_string(at / w) + ")";
+  std::vector<int32_t> bad = sam_ids;
+  bad[at] = 6;
+  EXPECT_NE(error_of([&] {
+              language_loss_from_seg(z, {ids_tensor(bad, h, w), sam_table}, {}, coverage, {1.0, 0.5, true});
+            }).find("SAM seg map holds id 6" + where + ", outside [-1, 6)"),
+            std::string::npos);
+  bad[at] = -2;
   EXPECT_THROW(language_loss_from_seg(z, {ids_tensor(bad, h, w), sam_table}, {}, coverage, {1.0, 0.5, true}), Error);
-  bad[h * w / 2] = -2;
-  EXPECT_THROW(language_loss_from_seg(z, {ids_tensor(bad, h, w), sam_table}, {}, coverage, {1.0, 0.5, true}), Error);
+  bad = gml_ids;
+  bad[at] = 4;
+  const auto with_bad_gml = [&](bool baseline) {
+    return language_loss_from_seg(z, {ids_tensor(sam_ids, h, w), sam_table}, {ids_tensor(bad, h, w), gml_table},
+                                  coverage, {1.0, 0.5, baseline});
+  };
+  EXPECT_NE(error_of([&] { with_bad_gml(false); }).find("CityGML seg map holds id 4" + where), std::string::npos);
+  EXPECT_NO_THROW(with_bad_gml(true));  // the baseline reads no CityGML map
   EXPECT_THROW(language_loss_from_seg(z, {ids_tensor(sam_ids, h * w, 1), sam_table}, {}, coverage, {1.0, 0.5, true}),
                Error);
   EXPECT_THROW(language_loss_from_seg(z, {ids_tensor(sam_ids, h, w), sam_table.slice(1, 1)}, {}, coverage,
@@ -202,22 +243,19 @@ TEST(LanguageLoss, FromSegMapsEqualsDenseReference) {
       language_loss_from_seg(c.rendered, {ids_tensor(c.sam_ids, 2, 2), c.sam_table}, {ids_tensor(c.gml_ids, 2, 2), c.gml_table},
                              c.coverage, {1.0, 0.5, false});
   EXPECT_NEAR(l2.total.item<double>(), 5.0 / 8 + 2.0 / 8 + 0.5 * 3.0 / 8, 1e-6);
-  // No seg maps at all: zero loss and gradient.
-  const torch::Tensor z = c.rendered.clone().requires_grad_(true);
-  const LanguageLoss none = language_loss_from_seg(z, {}, {}, c.coverage, {1.0, 0.5, false});
-  none.total.backward();
-  EXPECT_EQ(none.total.item<double>(), 0.0);
-  EXPECT_EQ(z.grad().abs().sum().item<double>(), 0.0);
+  EXPECT_THROW(language_loss_from_seg(torch::zeros({0, 2, 2}), {}, {}, torch::zeros({0, 2}), {}), Error);
 }
 
 // The CUDA kernel (seg_loss_cuda.h) against the same reference: channel counts below, at and above a
-// warp's 32 lanes and LangSplat's 3, views of several warps' pixels per block.
+// warp's 32 lanes and LangSplat's 3; the 300 x 200 view has more pixels than the grid has warps, so
+// warps take several pixels each.
 TEST(LanguageLossCuda, FromSegMapsEqualsDenseReferenceOnTheDevice) {
   if (!torch::cuda::is_available()) GTEST_SKIP() << "no CUDA device: the CUDA loss is not compared with the reference";
   expect_seg_equals_dense(torch::kCUDA, 7, 9, 3, 5);
   expect_seg_equals_dense(torch::kCUDA, 37, 53, 32, 6);
   expect_seg_equals_dense(torch::kCUDA, 61, 43, 128, 7);
   expect_seg_equals_dense(torch::kCUDA, 9, 11, 200, 8);
+  expect_seg_equals_dense(torch::kCUDA, 200, 300, 3, 9);
 }
 
 }  // namespace
