@@ -2,11 +2,14 @@
 // at the bundled example's resolution (480x360) and at 1080p, on the CPU. A relevance map = splat
 // the 128-d latents (rasterize_features), decode every pixel with the shared autoencoder's decoder
 // (default layout 128 -> 256 -> 512, random weights: the speed does not depend on them), cosine with
-// [text; 4 canonical phrases], relevancy (relevance_maps in src/query/relevance.h).
-// Usage: bench_query [--threads N] [--gaussians N] [--iters N] [--sizes 480x360,1920x1080]
+// [text; 4 canonical phrases], relevancy (relevance_maps in src/query/relevance.h), as `query` makes them.
+// On CUDA (--device cuda) the model, latents and decoder live on the GPU and each timed map ends with a
+// device synchronisation.
+// Usage: bench_query [--threads N] [--gaussians N] [--iters N] [--sizes 480x360,1920x1080] [--device cpu]
 // Figures go to docs/benchmarks.md.
 #include <ATen/Parallel.h>
 #include <omp.h>
+#include <torch/cuda.h>
 #include <torch/torch.h>
 
 #include <cmath>
@@ -20,6 +23,7 @@
 #include "core/error.h"
 #include "core/heap_reuse.h"
 #include "query/relevance.h"
+#include "splat/compute_device.h"
 
 namespace cls {
 namespace {
@@ -54,12 +58,14 @@ GaussianModel make_model(int n, int latent) {
 }
 
 int bench_main(int argc, char** argv) {
-  Args args("bench_query", "relevance maps per second (render latents + decode + cosine/relevancy) on the CPU", "");
+  Args args("bench_query", "relevance maps per second (render latents + decode + cosine/relevancy), CPU or CUDA", "");
   args.option("threads", "2", "threads (OpenMP rasterizer and LibTorch)")
       .option("gaussians", "200000", "number of Gaussians")
       .option("iters", "2", "timed views per size (after one warm-up)")
       .option("sizes", "480x360,1920x1080", "view sizes WxH, comma-separated")
-      .option("chunk", std::to_string(kDecodeChunkPixels), "pixels decoded per decoder call");
+      .option("chunk", "0", "pixels decoded per decoder call (0: the device's, " + std::to_string(kDecodeChunkPixels) +
+              " on the CPU, " + std::to_string(kDecodeChunkPixelsGpu) + " on a GPU)")
+      .option("device", "cpu", "cpu or cuda (needs a CUDA build)");
   if (!args.parse(argc, argv)) return 0;
   const int threads = args.get_int("threads");
   omp_set_num_threads(threads);
@@ -67,14 +73,23 @@ int bench_main(int argc, char** argv) {
   torch::NoGradGuard no_grad;
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
   const int latent = 128;
-  const GaussianModel g = make_model(args.get_int("gaussians"), latent);
+  const at::Device device = compute_device(args.get("device"));
+  GaussianModel g = make_model(args.get_int("gaussians"), latent);
+  for (at::Tensor* t : {&g.means, &g.log_scales, &g.quats, &g.opacity_logits}) *t = t->to(device);
   torch::manual_seed(1);
-  const at::Tensor latents = torch::rand({g.size(), latent});
-  const Autoencoder ae(AutoencoderConfig{}, 1);
+  const at::Tensor latents = torch::rand({g.size(), latent}).to(device);
+  Autoencoder ae(AutoencoderConfig{}, 1);
+  ae.to(device);
   const LinearHeadDecoder decoder = linear_head_decoder(ae);
-  const at::Tensor queries = torch::randn({1, 512}), canonical = torch::randn({4, 512});
-  std::printf("%lld Gaussians, latent %d, decoder %d -> 256 -> 512, 1 text + 4 canonical phrases, %d threads\n",
-              static_cast<long long>(g.size()), latent, latent, threads);
+  const at::Tensor queries = torch::randn({1, 512}).to(device), canonical = torch::randn({4, 512}).to(device);
+  const auto sync = [&] {
+    if (device.is_cuda()) torch::cuda::synchronize();
+  };
+  const int64_t chunk = args.get_int("chunk");
+  std::printf("%lld Gaussians, latent %d, decoder %d -> 256 -> 512, 1 text + 4 canonical phrases, %d threads, %s, "
+              "chunks of %lld pixels\n",
+              static_cast<long long>(g.size()), latent, latent, threads, device.str().c_str(),
+              static_cast<long long>(chunk > 0 ? chunk : decode_chunk_pixels(device)));
 
   std::stringstream sizes(args.get("sizes"));
   for (std::string size; std::getline(sizes, size, ',');) {
@@ -83,15 +98,16 @@ int bench_main(int argc, char** argv) {
     PinholeCamera cam{0.8 * W, 0.8 * W, 0.5 * W, 0.5 * H, W, H};
     Pose pose;  // identity: the Gaussians were placed in this camera's frustum
     const int iters = args.get_int("iters");
-    const int64_t chunk = args.get_int("chunk");
     double render_s = 0, total_s = 0, map_cpu = 0;
     for (int it = -1; it < iters; ++it) {
       const auto t0 = Clock::now();
       const RenderedLatents r = render_latents(g, latents, cam, pose);  // timed alone for the split
+      sync();
       const double tr = bench::seconds_since(t0);
       const double c1 = bench::cpu_seconds();
       const auto t1 = Clock::now();
       const RelevanceMaps m = relevance_maps(g, latents, decoder, cam, pose, queries, canonical, chunk);
+      sync();
       const double tm = bench::seconds_since(t1);
       const double c2 = bench::cpu_seconds();
       if (it >= 0) render_s += tr / iters, total_s += tm / iters, map_cpu += (c2 - c1) / iters;

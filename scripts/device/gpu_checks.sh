@@ -4,13 +4,13 @@
 #   bash scripts/device/gpu_checks.sh [STEP...] [debug PROGRAM ARGS...]   (default: the steps of ALL, in order)
 # Steps: splat_tests (the CUDA rasterizer against the CPU path), query_tests (relevance cosines on CUDA
 # against the CPU path), language_tests (the language loss's CUDA kernel against its reference),
-# models_tests (CLIP/SAM fixture parity on CUDA), bench_* (rasterizer, CLIP, language field, SAM AMG on
-# the GPU), run (`run --models tiny` on the bundled example), query_gpu (after run: `query --device cuda`
-# on its model against run's CPU query, scripts/device/compare_query.py), train_rgb (densification, the
-# cap and resuming on the GPU), suite (every test program carried, 16 at a time, one OpenMP thread each),
-# profile_splat / profile_language (every kernel's duration under Nsight Compute: one photometric and
-# 128-channel iteration at 1M Gaussians, 1600x1000; one language iteration at 200k, 800x600 and a 1080p
-# relevance map; $OUT/ncu_*.csv).
+# models_tests (CLIP/SAM fixture parity on CUDA), bench_* (rasterizer, CLIP, language field, relevance
+# maps, SAM AMG on the GPU), run (`run --models tiny` on the bundled example), query_gpu (after run:
+# `query --device cuda` on its model against run's CPU query, scripts/device/compare_query.py), train_rgb
+# (densification, the cap and resuming on the GPU), suite (every test program carried, 16 at a time, one
+# OpenMP thread each), profile_splat / profile_language (every kernel's duration under Nsight Compute: one
+# photometric and 128-channel iteration at 1M Gaussians, 1600x1000; one language iteration at 200k,
+# 800x600 and a 1080p relevance map; $OUT/ncu_*.csv).
 # GPU_LIB_OVERRIDE=DIR: libraries in DIR (e.g. an earlier commit's libcls.so) load before the build's,
 # so one call can time before and after on the same machine.
 set -uo pipefail
@@ -48,8 +48,8 @@ step() {  # step NAME LIMIT_S COMMAND...
   ldd "$B/citylangsplat" "$B"/test_* "$B"/bench/bench_* | grep "not found"; } >> "$LOG" 2>&1
 # Each case is one step; the default order puts what matters most first, so that a call cut short
 # by its time limit still brings back the rest's log.
-ALL=(splat_tests query_tests language_tests bench_splat models_tests bench_clip_bf16 bench_language run bench_amg amg_fixture bench_clip_other
-     bench_splat_200k)
+ALL=(splat_tests query_tests language_tests bench_splat models_tests bench_clip_bf16 bench_language bench_query run bench_amg
+     amg_fixture bench_clip_other bench_splat_200k)
 # `gpu_checks.sh debug PROGRAM ARGS...`: PROGRAM of the build under cuda-gdb (the machine has no gdb),
 # its backtrace where it stops; after the steps named before `debug`, which takes the rest of the line.
 steps=() debug=()
@@ -95,6 +95,10 @@ for s in "${steps[@]}"; do
         --query-scene 200000@1920x1080 --matmul-precision highest,high
       step bench_language_chunk256k 60 "$B/bench/bench_language" --device cuda --threads 16 --repeats 10 \
         --train-scenes '' --query-scene 200000@1920x1080 --chunk 262144 ;;
+    bench_query)  # relevance_maps as `query` calls it, 1080p, per decode chunk (0: the device's default)
+      for c in 8192 65536 0 1048576; do
+        step "bench_query_chunk$c" 90 "$B/bench/bench_query" --device cuda --threads 16 --sizes 1920x1080 --iters 5 --chunk $c
+      done ;;
     bench_amg) step "$s" 120 "$B/bench/bench_amg" --device cuda --masks '' --model vit_h --threads 16 ;;
     amg_fixture)
       step "$s" 90 "$B/bench/bench_amg" --device cuda --masks '' --fixture "$ROOT/tests/fixtures/sam" --threads 16 ;;
@@ -104,12 +108,17 @@ for s in "${steps[@]}"; do
       cat /tmp/example/citylangsplat/run.json >> "$LOG" 2>&1 ;;
     query_gpu)  # `query --device cuda` on the run step's model, against the query that run made on the CPU
       Q=/tmp/example/citylangsplat/query/citylangsplat
+      if [ ! -f "$Q/query.json" ]; then
+        echo "gpu_checks: query_gpu needs the run step first (no $Q/query.json)" | tee -a "$LOG" >&2
+        continue
+      fi
       mapfile -t texts < <(python3 -c 'import json, sys; [print(q["text"]) for q in json.load(open(sys.argv[1]))["queries"]]' \
-        $Q/query.json)
-      views=$(python3 -c 'import json, sys; print(",".join(v["name"] for v in json.load(open(sys.argv[1]))["views"]))' $Q/query.json)
+        "$Q/query.json")
+      views=$(python3 -c 'import json, sys; print(",".join(v["name"] for v in json.load(open(sys.argv[1]))["views"]))' \
+        "$Q/query.json")
       step "$s" 120 "$B/citylangsplat" query /tmp/example/citylangsplat/language/citylangsplat "${texts[@]}" --scene /tmp/example \
         --views "$views" --device cuda --out /tmp/query_gpu
-      step query_compare 60 python3 scripts/device/compare_query.py $Q /tmp/query_gpu ;;
+      step query_compare 60 python3 scripts/device/compare_query.py "$Q" /tmp/query_gpu ;;
     train_rgb)  # densification, the Gaussian cap and resuming on the GPU; the compare scene's PSNR
       make_example
       step train_rgb_3000 180 "$B/citylangsplat" train-rgb --scene /tmp/example --out /tmp/rgb --iterations 3000 --device cuda

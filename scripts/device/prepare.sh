@@ -29,7 +29,7 @@ cmake -S "$ROOT" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCLS_SHARED_LI
   -DC10_CUDA_LIBRARY="$TORCH/lib/libc10_cuda.so" -Dkineto_LIBRARY=IGNORE \
   -DTORCH_CUDA_ARCH_LIST=9.0 -DCMAKE_CUDA_ARCHITECTURES=90 > "$BUILD/configure.log"
 # What gpu_checks.sh runs (each test program that includes torch costs ~40 s to compile here).
-TARGETS=${GPU_TARGETS:-citylangsplat test_splat test_models test_query test_language bench_splat bench_clip bench_language bench_amg}
+TARGETS=${GPU_TARGETS:-citylangsplat test_splat test_models test_query test_language bench_splat bench_clip bench_language bench_query bench_amg}
 ninja -C "$BUILD" $TARGETS
 STAGE=$(mktemp -d)
 mkdir -p "$STAGE/build/bench" "$STAGE/lib"

@@ -126,6 +126,10 @@ at::Tensor DecodedCosines::operator()(const at::Tensor& latents) const {
   return torch::where(norm > 0, dots / norm, torch::zeros_like(dots));
 }
 
+int64_t decode_chunk_pixels(const at::Device& device) {
+  return device.is_cpu() ? kDecodeChunkPixels : kDecodeChunkPixelsGpu;
+}
+
 RenderedLatents render_latents(const GaussianModel& gaussians, const at::Tensor& latents, const PinholeCamera& camera,
                                const Pose& pose) {
   if (!latents.defined() || latents.dim() != 2 || latents.size(0) != gaussians.size())
@@ -154,7 +158,8 @@ namespace {
 template <class Sink>
 void decode_covered(const at::Tensor& latents, const at::Tensor& alpha, const LatentDecoder& decode, int64_t chunk,
                     Sink&& sink) {
-  if (chunk <= 0) throw Error("decoding rendered latents: the chunk size must be positive");
+  if (chunk == 0) chunk = decode_chunk_pixels(latents.device());
+  if (chunk < 0) throw Error("decoding rendered latents: the chunk size must be positive (or 0: the device's)");
   auto checked = [&](const at::Tensor& d, int64_t rows) {
     if (!d.defined() || d.dim() != 2 || d.size(0) != rows)
       throw Error("decoding rendered latents: the decoder returned " + shape_of(d) + " for " + std::to_string(rows) +

@@ -74,12 +74,16 @@ class DecodedCosines {
   double e_squared_ = 0;          // |e|^2
 };
 
-// Pixels decoded per call of the decoder (bounds the MLP's intermediate memory). 8192 x 512 floats
-// = 16 MB (render_decoded's full features; relevance_maps' largest are 8192 x 256): the largest tensor
-// of a call stays under glibc's 32 MB mmap ceiling, so the chunks reuse
+// Pixels decoded per call of the decoder (bounds the MLP's intermediate memory). On the CPU 8192 x 512
+// floats = 16 MB (render_decoded's full features; relevance_maps' largest are 8192 x 256): the largest
+// tensor of a call stays under glibc's 32 MB mmap ceiling, so the chunks reuse
 // freed heap instead of mapping and faulting in fresh pages per call (65,536 pixels: 128 MB, and a
-// third of a 1080p map's CPU time went to the kernel; docs/benchmarks.md).
+// third of a 1080p map's CPU time went to the kernel; docs/benchmarks.md). On a GPU the cost per call is
+// the launches and their waits: 262,144 pixels (0.5 GB of features per chunk) decode a 1080p map in 8 calls.
 constexpr int64_t kDecodeChunkPixels = 1 << 13;
+constexpr int64_t kDecodeChunkPixelsGpu = 1 << 18;
+// The chunk for latents on `device`: kDecodeChunkPixels on the CPU, kDecodeChunkPixelsGpu elsewhere.
+int64_t decode_chunk_pixels(const at::Device& device);
 
 // rasterize_features of `latents` (N x L, one row per Gaussian of `gaussians`) for a camera and pose
 // on a zero background, no gradients: image H x W x L, alpha H x W.
@@ -92,9 +96,9 @@ RenderedLatents render_latents(const GaussianModel& gaussians, const at::Tensor&
 
 // render_latents followed by `decode` per chunk of the pixels with alpha > 0; the others hold exactly zero
 // latents (nothing blended over the zero background) and get decode(0), computed once. Features H x W x D
-// (float32), alpha.
+// (float32), alpha. chunk_pixels 0: decode_chunk_pixels of the latents' device.
 DecodedView render_decoded(const GaussianModel& gaussians, const at::Tensor& latents, const LatentDecoder& decode,
-                           const PinholeCamera& camera, const Pose& pose, int64_t chunk_pixels = kDecodeChunkPixels);
+                           const PinholeCamera& camera, const Pose& pose, int64_t chunk_pixels = 0);
 
 // LangSplat's relevancy from cosines: query_cos (...), canonical_cos (..., M) -> (...):
 // min_c softmax(10 * [query_cos, canonical_cos_c])[0] (OpenCLIPNetwork.get_relevancy).
@@ -103,7 +107,7 @@ at::Tensor relevancy_from_cosines(const at::Tensor& query_cos, const at::Tensor&
 // Both maps of K queries for one view, computed chunk by chunk with DecodedCosines, so that no decoded
 // feature is formed (what `query`, `render` and `evaluate` use; equal to cosine_maps / langsplat_relevancy
 // of render_decoded up to rounding): queries K x D, canonical M x D (feature space) -> cosine and
-// relevancy K x H x W.
+// relevancy K x H x W. chunk_pixels 0: decode_chunk_pixels of the latents' device.
 struct RelevanceMaps {
   at::Tensor cosine;     // K x H x W
   at::Tensor relevancy;  // K x H x W
@@ -111,7 +115,7 @@ struct RelevanceMaps {
 };
 RelevanceMaps relevance_maps(const GaussianModel& gaussians, const at::Tensor& latents, const LinearHeadDecoder& decoder,
                              const PinholeCamera& camera, const Pose& pose, const at::Tensor& queries,
-                             const at::Tensor& canonical, int64_t chunk_pixels = kDecodeChunkPixels);
+                             const at::Tensor& canonical, int64_t chunk_pixels = 0);
 // The same for a language model's level (1..3) and a scene view.
 RelevanceMaps relevance_maps(const LanguageModel& model, int level, const SceneView& view, const at::Tensor& queries,
                              const at::Tensor& canonical);

@@ -102,6 +102,14 @@ TEST(RenderDecoded, MatchesPerPixelReference) {
   // chunked over the covered pixels, last chunk partial; one more call decodes the uncovered pixels' zero latent
   const int64_t covered_pixels = (v.alpha > 0).sum().item<int64_t>();
   EXPECT_EQ(calls, (covered_pixels + 99) / 100 + 1);
+  // Chunk 0: the device's (8192 pixels on the CPU: one call for this view's covered pixels), same features.
+  calls = 0;
+  const DecodedView v0 = render_decoded(t.g, t.latents, decode, t.camera, t.pose);
+  EXPECT_EQ(calls, 2);
+  EXPECT_LT((v0.features - v.features).abs().max().item<double>(), 1e-6);
+  EXPECT_EQ(decode_chunk_pixels(torch::kCPU), kDecodeChunkPixels);
+  EXPECT_EQ(decode_chunk_pixels(torch::Device(torch::kCUDA, 0)), kDecodeChunkPixelsGpu);
+  EXPECT_THROW(render_decoded(t.g, t.latents, decode, t.camera, t.pose, -1), Error);
 
   // Reference: double-precision renderer for the latents (zero background), then the decoder per pixel.
   const auto ad = test::scene_arrays<double>(t.s);
