@@ -1,5 +1,5 @@
 // Query speed: relevance maps (cosine + LangSplat relevancy of one text) per second for one view,
-// at the bundled example's resolution (480x360) and at 1080p, on the CPU. A relevance map = splat
+// at the bundled example's resolution (480x360) and at 1080p, on the CPU or a GPU. A relevance map = splat
 // the 128-d latents (rasterize_features), decode every pixel with the shared autoencoder's decoder
 // (default layout 128 -> 256 -> 512, random weights: the speed does not depend on them), cosine with
 // [text; 4 canonical phrases], relevancy (relevance_maps in src/query/relevance.h), as `query` makes them.

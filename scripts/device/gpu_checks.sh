@@ -110,6 +110,7 @@ for s in "${steps[@]}"; do
       Q=/tmp/example/citylangsplat/query/citylangsplat
       if [ ! -f "$Q/query.json" ]; then
         echo "gpu_checks: query_gpu needs the run step first (no $Q/query.json)" | tee -a "$LOG" >&2
+        SUMMARY+=("$(printf '%-28s rc=%-3s' query_gpu skip)")
         continue
       fi
       mapfile -t texts < <(python3 -c 'import json, sys; [print(q["text"]) for q in json.load(open(sys.argv[1]))["queries"]]' \
