@@ -85,32 +85,44 @@ const std::vector<std::string>& canonical_phrases() {
   return phrases;
 }
 
-DecodedCosines::DecodedCosines(LinearHeadDecoder decoder, const at::Tensor& directions)
-    : hidden_(std::move(decoder.hidden)) {
-  const at::Tensor& W = decoder.weight;
-  if (!hidden_) throw Error("relevance: the decoder has no hidden-layer function");
+LinearHeadFactors factor_linear_head(const at::Tensor& W, const at::Tensor& bias) {
   if (!W.defined() || W.dim() != 2)
     throw Error("relevance: the decoder's last layer must have a D x H weight, got " + shape_of(W));
   const int64_t D = W.size(0);
-  if (decoder.bias.defined() && (decoder.bias.dim() != 1 || decoder.bias.size(0) != D))
-    throw Error("relevance: the decoder's last bias must have " + std::to_string(D) + " values, got " +
-                shape_of(decoder.bias));
+  if (bias.defined() && (bias.dim() != 1 || bias.size(0) != D))
+    throw Error("relevance: the decoder's last bias must have " + std::to_string(D) + " values, got " + shape_of(bias));
+  at::NoGradGuard no_grad;
+  const auto cpu_double = torch::dtype(torch::kFloat64).device(torch::kCPU);
+  const at::Tensor w = W.detach().to(cpu_double);
+  const at::Tensor b = bias.defined() ? bias.detach().to(cpu_double) : torch::zeros({D}, cpu_double);
+  const auto [q, r] = at::linalg_qr(w, "reduced");  // q: D x k, r: k x H
+  const at::Tensor c = q.t().matmul(b);
+  LinearHeadFactors f;
+  f.q = q;
+  f.e = b - q.matmul(c);
+  const auto on_device = W.options().dtype(torch::kFloat32);
+  f.r = r.to(on_device);
+  f.c = c.to(on_device);
+  f.e_squared = f.e.dot(f.e).item<double>();
+  return f;
+}
+
+DecodedCosines::DecodedCosines(LinearHeadDecoder decoder, const at::Tensor& directions)
+    : hidden_(std::move(decoder.hidden)) {
+  if (!hidden_) throw Error("relevance: the decoder has no hidden-layer function");
+  const LinearHeadFactors f = decoder.factors ? *decoder.factors : factor_linear_head(decoder.weight, decoder.bias);
+  const int64_t D = f.q.size(0);
   if (!directions.defined() || directions.dim() != 2 || directions.size(1) != D)
     throw Error("relevance: the decoder gives " + std::to_string(D) + "-d features, the text features are " +
                 shape_of(directions) + " (another feature provider?)");
   at::NoGradGuard no_grad;
-  const auto cpu_double = torch::dtype(torch::kFloat64).device(torch::kCPU);
-  const at::Tensor w = W.detach().to(cpu_double);
-  const at::Tensor b = decoder.bias.defined() ? decoder.bias.detach().to(cpu_double) : torch::zeros({D}, cpu_double);
-  const auto [q, r] = at::linalg_qr(w, "reduced");  // q: D x k, r: k x H
-  const at::Tensor c = q.t().matmul(b), e = b - q.matmul(c);
-  const at::Tensor p = unit_rows(directions.detach().to(cpu_double));
-  const auto on_device = W.options().dtype(torch::kFloat32);
-  r_ = r.to(on_device);
-  c_ = c.to(on_device);
-  q_directions_ = p.matmul(q).to(on_device);
-  e_dot_ = p.matmul(e).to(on_device);
-  e_squared_ = e.dot(e).item<double>();
+  const at::Tensor p = unit_rows(directions.detach().to(f.q.options()));
+  const auto on_device = f.r.options();
+  r_ = f.r;
+  c_ = f.c;
+  q_directions_ = p.matmul(f.q).to(on_device);
+  e_dot_ = p.matmul(f.e).to(on_device);
+  e_squared_ = f.e_squared;
 }
 
 at::Tensor DecodedCosines::operator()(const at::Tensor& latents) const {
@@ -122,7 +134,7 @@ at::Tensor DecodedCosines::operator()(const at::Tensor& latents) const {
   const auto blas = blas_threads_for_split(h);
   const at::Tensor u = parallel_rows_linear(h, r_, c_);                // B x k
   const at::Tensor dots = parallel_rows_linear(u, q_directions_, e_dot_);  // B x P
-  const at::Tensor norm = (u.square().sum(1, /*keepdim=*/true) + e_squared_).sqrt();
+  const at::Tensor norm = (u.norm(2, {1}, /*keepdim=*/true).square() + e_squared_).sqrt();  // one pass over u
   return torch::where(norm > 0, dots / norm, torch::zeros_like(dots));
 }
 

@@ -4,6 +4,7 @@
 #include <ATen/core/Tensor.h>
 
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include "language/language_model.h"
@@ -41,24 +42,38 @@ const std::vector<std::string>& canonical_phrases();  // "object", "things", "st
 // Autoencoder::decode), its hidden layers (B x H) or DecodedCosines (B x P).
 using LatentDecoder = std::function<at::Tensor(const at::Tensor&)>;
 
+// The reduced QR factorisation of a linear last layer, weight = Q R (Q: D x k with orthonormal columns,
+// R: k x H, k = min(D, H)) and bias = Q c + e (e orthogonal to Q's columns), in double: what
+// DecodedCosines needs of a decoder. Q and e stay on the CPU (they project the directions, once per
+// DecodedCosines); R and c go to the weight's device as float32.
+struct LinearHeadFactors {
+  at::Tensor q, e;  // D x k, D: double, CPU
+  at::Tensor r, c;  // k x H, k: float32, on the weight's device
+  double e_squared = 0;
+};
+// weight D x H, bias D or undefined (zero); throws cls::Error for other shapes.
+LinearHeadFactors factor_linear_head(const at::Tensor& weight, const at::Tensor& bias);
+
 // A latent decoder whose last layer is linear: decode(z) = hidden(z) weight^T + bias (the autoencoder's,
 // linear_head_decoder; any output normalisation after it leaves cosines unchanged).
 struct LinearHeadDecoder {
   LatentDecoder hidden;  // B x L -> B x H: every layer before the last
   at::Tensor weight;     // D x H
   at::Tensor bias;       // D
+  // weight and bias factorised (linear_head_decoder sets it), so that the DecodedCosines of every view
+  // and frame share one factorisation; null: each DecodedCosines factorises them itself.
+  std::shared_ptr<const LinearHeadFactors> factors;
 };
-// The autoencoder's decoder in that form. It refers to `autoencoder` (its hidden layers by reference, its last
-// layer's tensors by alias), which must outlive it and not be assigned another model meanwhile: make it where
-// it is used.
+// The autoencoder's decoder in that form, its last layer factorised. It refers to `autoencoder` (its
+// hidden layers by reference, its last layer's tensors by alias), which must outlive it and not be
+// assigned another model or trained meanwhile: make it where it is used.
 LinearHeadDecoder linear_head_decoder(const Autoencoder& autoencoder);
 
-// Cosines of decoded latents with fixed directions, without forming the D-d features. With the reduced
-// QR factorisation weight = Q R (Q: D x k with orthonormal columns, R: k x H, k = min(D, H)) and
-// bias = Q c + e (e orthogonal to Q's columns), for u = R h + c:
+// Cosines of decoded latents with fixed directions, without forming the D-d features. With the last
+// layer's factors (LinearHeadFactors) and u = R h + c:
 //   <p, W h + b> = <Q^T p, u> + <p, e>,   |W h + b|^2 = |u|^2 + |e|^2,
 // so a latent costs k x H multiply-adds after the hidden layers instead of D x H: 256 x 256 instead of
-// 512 x 256 for the 128 -> 256 -> 512 decoder. Q and R are computed once, in double.
+// 512 x 256 for the 128 -> 256 -> 512 decoder.
 class DecodedCosines {
  public:
   // directions: P x D (any lengths; a zero direction gives cosine 0). Throws cls::Error for a shape that

@@ -403,6 +403,9 @@ json render_views(const RenderOptions& o) {
       files[overlay + "_frames"] = "path/" + overlay;
     }
     Progress progress("render " + o.path, poses.size(), "frames");
+    // One factorisation of the decoder's last layer for every frame.
+    const std::optional<LinearHeadDecoder> decoder =
+        overlay_video ? std::optional(linear_head_decoder(model.language->autoencoder)) : std::nullopt;
     for (size_t k = 0; k < poses.size(); ++k) {
       const cv::Mat frame = tensor_to_image(render_rgb(g, camera, poses[k], background).image);
       write_image(out / "path" / "rgb" / frame_name(int(k)), frame);
@@ -410,8 +413,8 @@ json render_views(const RenderOptions& o) {
       if (overlay_video) {
         const int level = queries->level[0];
         const RelevanceMaps m =
-            relevance_maps(g, model.language->latents[level - 1], linear_head_decoder(model.language->autoencoder),
-                           camera, poses[k], queries->features.slice(0, 0, 1), queries->canonical);
+            relevance_maps(g, model.language->latents[level - 1], *decoder, camera, poses[k],
+                           queries->features.slice(0, 0, 1), queries->canonical);
         const cv::Mat o_frame = relevance_overlay(frame, m.relevancy[0]);
         write_image(out / "path" / overlay / frame_name(int(k)), o_frame);
         overlay_video->write(o_frame);

@@ -196,6 +196,13 @@ TEST(DecodedCosines, EqualCosinesOfTheDecodedFeaturesInDouble) {
     expected.select(1, 4).zero_();
     EXPECT_LT((got.to(torch::kFloat64) - expected).abs().max().item<double>(), 1e-5) << "hidden size " << Hd;
     EXPECT_EQ(got.select(1, 4).abs().max().item<float>(), 0.0f);
+    // The decoder's own factors (as linear_head_decoder makes them) give the same cosines, and are the ones
+    // used: another layer's factors change them.
+    LinearHeadDecoder factored = decoder;
+    factored.factors = std::make_shared<const LinearHeadFactors>(factor_linear_head(W, b));
+    EXPECT_TRUE(torch::equal(DecodedCosines(factored, directions)(z), got)) << "hidden size " << Hd;
+    factored.factors = std::make_shared<const LinearHeadFactors>(factor_linear_head(W, b + 1));
+    EXPECT_GT((DecodedCosines(factored, directions)(z) - got).abs().max().item<float>(), 1e-3);
   }
 }
 
@@ -208,7 +215,8 @@ TEST(DecodedCosines, ZeroFeatureGivesZeroAndShapesAreChecked) {
   const at::Tensor got = DecodedCosines(decoder, torch::randn({2, D}))(torch::zeros({3, L}));
   EXPECT_EQ(got.abs().max().item<float>(), 0.0f);
   EXPECT_THROW(DecodedCosines(decoder, torch::randn({2, D + 1})), Error);
-  EXPECT_THROW(DecodedCosines({decoder.hidden, W, torch::zeros({D + 1})}, torch::randn({2, D})), Error);
+  EXPECT_THROW(DecodedCosines({decoder.hidden, W, torch::zeros({D + 1}), nullptr}, torch::randn({2, D})), Error);
+  EXPECT_THROW(factor_linear_head(torch::randn({D}), at::Tensor()), Error);
   const LinearHeadDecoder wrong_hidden{[&](const at::Tensor& x) { return x; }, W, at::Tensor()};  // L != Hd values
   EXPECT_THROW(DecodedCosines(wrong_hidden, torch::randn({2, D}))(torch::zeros({3, L})), Error);
 }
