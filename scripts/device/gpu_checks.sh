@@ -10,7 +10,8 @@
 # (densification, the cap and resuming on the GPU), suite (every test program carried, 16 at a time, one
 # OpenMP thread each), profile_splat / profile_language (every kernel's duration under Nsight Compute: one
 # photometric and 128-channel iteration at 1M Gaussians, 1600x1000; one language iteration at 200k,
-# 800x600 and a 1080p relevance map; $OUT/ncu_*.csv).
+# 800x600 and a 1080p relevance map; profile_query: relevance_maps at 1080p as `query` calls it;
+# $OUT/ncu_*.csv).
 # GPU_LIB_OVERRIDE=DIR: libraries in DIR (e.g. an earlier commit's libcls.so) load before the build's,
 # so one call can time before and after on the same machine.
 set -uo pipefail
@@ -64,9 +65,10 @@ while [ $# -gt 0 ]; do
 done
 [ ${#steps[@]} -gt 0 ] || [ ${#debug[@]} -gt 0 ] || steps=("${ALL[@]}")
 for s in "${steps[@]}"; do
-  case " ${ALL[*]} query_gpu train_rgb suite profile_splat profile_language " in
+  case " ${ALL[*]} query_gpu train_rgb suite profile_splat profile_language profile_query " in
     *" $s "*) ;;
-    *) echo "gpu_checks: unknown step $s (steps: ${ALL[*]} query_gpu train_rgb suite profile_splat profile_language)" >&2
+    *) echo "gpu_checks: unknown step $s (steps: ${ALL[*]} query_gpu train_rgb suite profile_splat profile_language" \
+         "profile_query)" >&2
        exit 2 ;;
   esac
 done
@@ -134,10 +136,12 @@ for s in "${steps[@]}"; do
       step train_rgb_compare 120 "$B/citylangsplat" train-rgb --scene /tmp/compare --out /tmp/rgb_compare --iterations 600 \
         -r 1 --densify-from 500 --densify-until 300 --checkpoint-every 0 --device cuda
       for d in rgb rgb_cap rgb_resume rgb_compare; do echo "== $d"; cat /tmp/$d/summary.json; done >> "$LOG" 2>&1 ;;
-    profile_splat | profile_language)  # each kernel's duration (Nsight Compute), one CSV row per launch
+    profile_splat | profile_language | profile_query)  # each kernel's duration (Nsight Compute), one CSV row per launch
       NCU=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
       if [ "$s" = profile_splat ]; then
         args=(bench/bench_splat --device cuda --threads 16 --gaussians 1000000 --width 1600 --height 1000 --iters 1)
+      elif [ "$s" = profile_query ]; then
+        args=(bench/bench_query --device cuda --threads 16 --sizes 1920x1080 --iters 1)
       else
         args=(bench/bench_language --device cuda --threads 16 --repeats 1 --train-scenes 200000@800x600 --loss seg
               --query-scene 200000@1920x1080)

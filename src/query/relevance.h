@@ -96,7 +96,7 @@ class DecodedCosines {
 // third of a 1080p map's CPU time went to the kernel; docs/benchmarks.md). On a GPU the cost per call is
 // the launches and their waits: 262,144 pixels decode a 1080p map in 8 calls, about 1 GB each in
 // relevance_maps (latents, hidden layer, R h) and 0.5 GB more of features in render_decoded
-// (2.6x the maps per second of 8,192 on an H100; docs/benchmarks.md, "GPU, third round").
+// (2.8x the maps per second of 8,192 on an H100; docs/benchmarks.md, "GPU, third round").
 constexpr int64_t kDecodeChunkPixels = 1 << 13;
 constexpr int64_t kDecodeChunkPixelsGpu = 1 << 18;
 // The chunk for latents on `device`: kDecodeChunkPixels on the CPU, kDecodeChunkPixelsGpu elsewhere.
