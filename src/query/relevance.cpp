@@ -110,7 +110,8 @@ LinearHeadFactors factor_linear_head(const at::Tensor& W, const at::Tensor& bias
 DecodedCosines::DecodedCosines(LinearHeadDecoder decoder, const at::Tensor& directions)
     : hidden_(std::move(decoder.hidden)) {
   if (!hidden_) throw Error("relevance: the decoder has no hidden-layer function");
-  const LinearHeadFactors f = decoder.factors ? *decoder.factors : factor_linear_head(decoder.weight, decoder.bias);
+  const LinearHeadFactors& f = decoder.last;
+  if (!f.q.defined() || !f.r.defined()) throw Error("relevance: the decoder's last layer is not factorised");
   const int64_t D = f.q.size(0);
   if (!directions.defined() || directions.dim() != 2 || directions.size(1) != D)
     throw Error("relevance: the decoder gives " + std::to_string(D) + "-d features, the text features are " +

@@ -4,7 +4,6 @@
 #include <ATen/core/Tensor.h>
 
 #include <functional>
-#include <memory>
 #include <vector>
 
 #include "language/language_model.h"
@@ -55,18 +54,14 @@ struct LinearHeadFactors {
 LinearHeadFactors factor_linear_head(const at::Tensor& weight, const at::Tensor& bias);
 
 // A latent decoder whose last layer is linear: decode(z) = hidden(z) weight^T + bias (the autoencoder's,
-// linear_head_decoder; any output normalisation after it leaves cosines unchanged).
+// linear_head_decoder; any output normalisation after it leaves cosines unchanged), the last layer held
+// factorised, so that the DecodedCosines of every view and frame share one factorisation.
 struct LinearHeadDecoder {
-  LatentDecoder hidden;  // B x L -> B x H: every layer before the last
-  at::Tensor weight;     // D x H
-  at::Tensor bias;       // D
-  // weight and bias factorised (linear_head_decoder sets it), so that the DecodedCosines of every view
-  // and frame share one factorisation; null: each DecodedCosines factorises them itself.
-  std::shared_ptr<const LinearHeadFactors> factors;
+  LatentDecoder hidden;    // B x L -> B x H: every layer before the last
+  LinearHeadFactors last;  // factor_linear_head(weight, bias) of the last layer
 };
-// The autoencoder's decoder in that form, its last layer factorised. It refers to `autoencoder` (its
-// hidden layers by reference, its last layer's tensors by alias), which must outlive it and not be
-// assigned another model or trained meanwhile: make it where it is used.
+// The autoencoder's decoder in that form. It refers to `autoencoder` (its hidden layers by reference),
+// which must outlive it and not be assigned another model or trained meanwhile: make it where it is used.
 LinearHeadDecoder linear_head_decoder(const Autoencoder& autoencoder);
 
 // Cosines of decoded latents with fixed directions, without forming the D-d features. With the last

@@ -20,10 +20,8 @@ const at::Tensor& level_latents(const LanguageModel& model, int level) {
 }  // namespace
 
 LinearHeadDecoder linear_head_decoder(const Autoencoder& autoencoder) {
-  LinearHeadDecoder d{[&autoencoder](const at::Tensor& z) { return autoencoder.decode_hidden(z); },
-                      autoencoder.output_weight(), autoencoder.output_bias(), nullptr};
-  d.factors = std::make_shared<const LinearHeadFactors>(factor_linear_head(d.weight, d.bias));
-  return d;
+  return {[&autoencoder](const at::Tensor& z) { return autoencoder.decode_hidden(z); },
+          factor_linear_head(autoencoder.output_weight(), autoencoder.output_bias())};
 }
 
 DecodedView render_decoded(const LanguageModel& model, int level, const SceneView& view) {

@@ -186,7 +186,8 @@ TEST(DecodedCosines, EqualCosinesOfTheDecodedFeaturesInDouble) {
     at::Tensor directions = torch::randn({6, D}) * torch::rand({6, 1}) * 5;
     directions[4].zero_();  // a zero direction: cosine 0
     at::Tensor z = torch::randn({B, L});
-    const LinearHeadDecoder decoder{[&](const at::Tensor& x) { return torch::tanh(x.matmul(A)); }, W, b};
+    const LinearHeadDecoder decoder{[&](const at::Tensor& x) { return torch::tanh(x.matmul(A)); },
+                                    factor_linear_head(W, b)};
     const at::Tensor got = DecodedCosines(decoder, directions)(z);
     ASSERT_EQ(got.sizes(), at::IntArrayRef({B, 6}));
     EXPECT_EQ(got.scalar_type(), torch::kFloat32);
@@ -196,13 +197,12 @@ TEST(DecodedCosines, EqualCosinesOfTheDecodedFeaturesInDouble) {
     expected.select(1, 4).zero_();
     EXPECT_LT((got.to(torch::kFloat64) - expected).abs().max().item<double>(), 1e-5) << "hidden size " << Hd;
     EXPECT_EQ(got.select(1, 4).abs().max().item<float>(), 0.0f);
-    // The decoder's own factors (as linear_head_decoder makes them) give the same cosines, and are the ones
-    // used: another layer's factors change them.
-    LinearHeadDecoder factored = decoder;
-    factored.factors = std::make_shared<const LinearHeadFactors>(factor_linear_head(W, b));
-    EXPECT_TRUE(torch::equal(DecodedCosines(factored, directions)(z), got)) << "hidden size " << Hd;
-    factored.factors = std::make_shared<const LinearHeadFactors>(factor_linear_head(W, b + 1));
-    EXPECT_GT((DecodedCosines(factored, directions)(z) - got).abs().max().item<float>(), 1e-3);
+    // The factors the decoder holds are the ones used: another layer's change the cosines, and one
+    // factorisation serves every DecodedCosines made from it.
+    LinearHeadDecoder other = decoder;
+    other.last = factor_linear_head(W, b + 1);
+    EXPECT_GT((DecodedCosines(other, directions)(z) - got).abs().max().item<float>(), 1e-3);
+    EXPECT_TRUE(torch::equal(DecodedCosines(decoder, directions)(z), got)) << "hidden size " << Hd;
   }
 }
 
@@ -211,13 +211,15 @@ TEST(DecodedCosines, ZeroFeatureGivesZeroAndShapesAreChecked) {
   const int L = 3, Hd = 4, D = 6;
   torch::manual_seed(1);
   const at::Tensor A = torch::randn({L, Hd}), W = torch::randn({D, Hd});
-  const LinearHeadDecoder decoder{[&](const at::Tensor& x) { return torch::tanh(x.matmul(A)); }, W, at::Tensor()};
+  const LinearHeadDecoder decoder{[&](const at::Tensor& x) { return torch::tanh(x.matmul(A)); },
+                                  factor_linear_head(W, at::Tensor())};
   const at::Tensor got = DecodedCosines(decoder, torch::randn({2, D}))(torch::zeros({3, L}));
   EXPECT_EQ(got.abs().max().item<float>(), 0.0f);
   EXPECT_THROW(DecodedCosines(decoder, torch::randn({2, D + 1})), Error);
-  EXPECT_THROW(DecodedCosines({decoder.hidden, W, torch::zeros({D + 1}), nullptr}, torch::randn({2, D})), Error);
+  EXPECT_THROW(factor_linear_head(W, torch::zeros({D + 1})), Error);
   EXPECT_THROW(factor_linear_head(torch::randn({D}), at::Tensor()), Error);
-  const LinearHeadDecoder wrong_hidden{[&](const at::Tensor& x) { return x; }, W, at::Tensor()};  // L != Hd values
+  EXPECT_THROW(DecodedCosines({decoder.hidden, LinearHeadFactors{}}, torch::randn({2, D})), Error);
+  const LinearHeadDecoder wrong_hidden{[&](const at::Tensor& x) { return x; }, decoder.last};  // L != Hd values
   EXPECT_THROW(DecodedCosines(wrong_hidden, torch::randn({2, D}))(torch::zeros({3, L})), Error);
 }
 
@@ -262,7 +264,8 @@ TEST(RelevanceMaps, EqualMapsOfTheWholeDecodedField) {
   t.camera.width = W;  // wider than the scene: uncovered pixels too
   torch::manual_seed(9);
   const at::Tensor A = torch::randn({L, Hd}), Wd = torch::randn({D, Hd}), b = torch::randn({D});
-  const LinearHeadDecoder decoder{[&](const at::Tensor& z) { return torch::tanh(z.matmul(A)); }, Wd, b};
+  const LinearHeadDecoder decoder{[&](const at::Tensor& z) { return torch::tanh(z.matmul(A)); },
+                                  factor_linear_head(Wd, b)};
   const LatentDecoder decode = [&](const at::Tensor& z) { return decode_in_double(z, A, Wd, b).to(torch::kFloat32); };
   const at::Tensor queries = torch::randn({3, D}), canonical = torch::randn({4, D});
   const RelevanceMaps m = relevance_maps(t.g, t.latents, decoder, t.camera, t.pose, queries, canonical, 77);
