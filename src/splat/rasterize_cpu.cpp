@@ -82,24 +82,43 @@ void cutoff_box(TileGaussian<T>& g, T cutoff) {
 constexpr int kSubTilesPerSide = kTileSize / kSubTile;
 constexpr int kSubTilesPerTile = kSubTilesPerSide * kSubTilesPerSide;
 
-// For each sub-tile of the tile whose first pixel is (x0, y0), in one pass over the tile's list: the
-// indices into the list of the Gaussians whose box reaches a pixel centre of the sub-tile, in list
-// (depth) order. Sub-tile (i, j) (column, row) is out[j * kSubTilesPerSide + i].
+// The sub-tile lists of one tile: for sub-tile q (column i, row j: q = j * kSubTilesPerSide + i), the
+// indices into the tile's list of the Gaussians whose box reaches one of its pixel centres, in list
+// (depth) order. Each row has room for the whole list, so filling one needs no capacity check.
+struct SubTileLists {
+  std::vector<int32_t> index;  // kSubTilesPerTile rows of `stride`
+  int stride = 0;
+  int count[kSubTilesPerTile] = {};
+  const int32_t* row(int q) const { return index.data() + static_cast<size_t>(q) * stride; }
+};
+
+// Fills `out` for the tile whose first pixel is (x0, y0) in one pass over its list. The overlap tests
+// are combined as bits, not branches: which sub-tiles a Gaussian reaches is unpredictable, and the
+// branches' mispredictions were most of this pass's time.
 template <class T>
-void subtile_lists(const std::vector<TileGaussian<T>>& list, int x0, int y0, std::vector<int32_t>* out) {
-  for (int q = 0; q < kSubTilesPerTile; ++q) out[q].clear();
-  for (int k = 0; k < static_cast<int>(list.size()); ++k) {
+void subtile_lists(const std::vector<TileGaussian<T>>& list, int x0, int y0, SubTileLists& out) {
+  const int L = static_cast<int>(list.size());
+  out.stride = L;
+  if (out.index.size() < static_cast<size_t>(kSubTilesPerTile) * L) out.index.resize(static_cast<size_t>(kSubTilesPerTile) * L);
+  int32_t* const index = out.index.data();
+  int* const count = out.count;
+  for (int q = 0; q < kSubTilesPerTile; ++q) count[q] = 0;
+  static_assert(kSubTilesPerSide == 4, "a row of sub-tiles is a 4-bit group of the mask");
+  for (int k = 0; k < L; ++k) {
     const T* b = list[k].box;
     unsigned cols = 0, rows = 0;
     for (int i = 0; i < kSubTilesPerSide; ++i) {
       const int sx = x0 + i * kSubTile, sy = y0 + i * kSubTile;
-      if (b[1] >= T(sx) + T(0.5) && b[0] <= T(sx + kSubTile) - T(0.5)) cols |= 1u << i;
-      if (b[3] >= T(sy) + T(0.5) && b[2] <= T(sy + kSubTile) - T(0.5)) rows |= 1u << i;
+      cols |= unsigned((b[1] >= T(sx) + T(0.5)) & (b[0] <= T(sx + kSubTile) - T(0.5))) << i;
+      rows |= unsigned((b[3] >= T(sy) + T(0.5)) & (b[2] <= T(sy + kSubTile) - T(0.5))) << i;
     }
-    for (int r = 0; r < kSubTilesPerSide; ++r)
-      if (rows >> r & 1u)
-        for (int i = 0; i < kSubTilesPerSide; ++i)
-          if (cols >> i & 1u) out[r * kSubTilesPerSide + i].push_back(k);
+    // bit j * 4 + i: row j and column i (row j's bit moved to bit 4 j, times the column bits)
+    unsigned mask = cols * ((rows & 1u) | (rows & 2u) << 3 | (rows & 4u) << 6 | (rows & 8u) << 9);
+    while (mask) {
+      const int q = __builtin_ctz(mask);
+      index[static_cast<size_t>(q) * L + count[q]++] = k;
+      mask &= mask - 1;
+    }
   }
 }
 
@@ -171,9 +190,10 @@ template <class T>
 struct TileScratch {
   std::vector<LaneRow<T>> acc, dpix;  // C rows each, with a run-time channel count
   std::vector<T> buf;
+  std::vector<LaneRow<T>> value_buf;  // the backward's value sums with a run-time channel count
   std::vector<uint8_t> touched;
   std::vector<TileGaussian<T>> list;
-  std::vector<int32_t> sub[kSubTilesPerTile];
+  SubTileLists sub;
 };
 
 // The pixel of lane l of the sub-tile whose first pixel is (sx, sy), or -1 outside the image.
@@ -230,8 +250,9 @@ template <class T, int kC>
   V* const acc = kC > 0 ? acc_fixed : &s.acc[0].v;
   for (int sy = y0; sy < y1; sy += kSubTile)
   for (int sx = x0; sx < x1; sx += kSubTile) {
-    const std::vector<int32_t>& sub = s.sub[(sy - y0) / kSubTile * kSubTilesPerSide + (sx - x0) / kSubTile];
-    const int L = static_cast<int>(sub.size());
+    const int q = (sy - y0) / kSubTile * kSubTilesPerSide + (sx - x0) / kSubTile;
+    const int32_t* const sub = s.sub.row(q);
+    const int L = s.sub.count[q];
     V cx, cy;
     lane_centres<T>(sx, sy, cx, cy);
     M live;  // lanes inside the image that have not stopped
@@ -286,8 +307,9 @@ template <class T, int kC>
 
 // Backward of one tile: re-walks each sub-tile's list backwards from its pixels' last contributors (the
 // original's renderCUDA backward, one lane per pixel), summing per-entry gradients over the lanes in `buf`
-// (stride 9 + C: mean2d 2, |mean2d| 2, conic 3, opacity, depth, values C), then adds them to the
-// per-Gaussian sums under striped locks.
+// (stride 9 + kC: mean2d 2, |mean2d| 2, conic 3, opacity, depth, and a fixed count of values), or with a
+// run-time channel count the values in `value_buf` (rows of whole vectors, so their vector loads and
+// stores do not straddle cache lines), then adds them to the per-Gaussian sums under striped locks.
 // value_grad += sum over the lanes where `pass` of w_l dL/dimage(pixel_l), for many channels: eight
 // vectors of channels stay in registers while the lanes are added (one sum would otherwise be loaded
 // and stored per lane), then vectors and single channels for the rest.
@@ -334,7 +356,8 @@ template <class T, int kC>
   std::vector<TileGaussian<T>>& list = s.list;
   static_assert(9 + kC <= kLanes, "buf's fixed-channel entries are summed as one vector of lanes");
   const int nc = kC > 0 ? kC : j.C;
-  const int S = 9 + nc;
+  const int S = 9 + kC;
+  const int VS = kC > 0 ? 0 : (nc + kLanes - 1) / kLanes;  // value_buf rows per entry
   const int tx = tile % cam.tiles_x(), ty = tile / cam.tiles_x();
   const int x0 = tx * kTileSize, y0 = ty * kTileSize;
   const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
@@ -343,6 +366,8 @@ template <class T, int kC>
   if (L == 0) return;
   subtile_lists(list, x0, y0, s.sub);
   buf.assign(static_cast<size_t>(L) * S, T(0));
+  if (kC == 0) s.value_buf.assign(static_cast<size_t>(L) * VS, LaneRow<T>{});
+  T* const value_sums = kC == 0 ? &s.value_buf.data()->v[0] : nullptr;  // entry k's at k * VS * kLanes
   touched.assign(L, 0);
   // dL/dimage per channel across the lanes (registers for RGB)
   V dpix_fixed[kC > 0 ? kC : 1];
@@ -373,7 +398,7 @@ template <class T, int kC>
       }
     }
     if (n_max == 0) continue;
-    const std::vector<int32_t>& sub = s.sub[(sy - y0) / kSubTile * kSubTilesPerSide + (sx - x0) / kSubTile];
+    const int32_t* const sub = s.sub.row((sy - y0) / kSubTile * kSubTilesPerSide + (sx - x0) / kSubTile);
     V Tr = T_final, last_alpha = V{}, rec_d = V{}, last_d = V{}, rec_dot = V{}, last_v_dot = V{};
     for (int jj = n_max - 1; jj >= 0; --jj) {
       const int k = sub[jj];
@@ -428,7 +453,7 @@ template <class T, int kC>
         const V sums = lane_sums(q);
         for (int i = 0; i < 9 + kC; ++i) e[i] += sums[i];
       }
-      if (kC == 0) add_lane_rows(w, pass, dL_dimage, pixel, nc, e + 9);
+      if (kC == 0) add_lane_rows(w, pass, dL_dimage, pixel, nc, value_sums + static_cast<size_t>(k) * VS * kLanes);
     }
   }
   for (int k = 0; k < L; ++k) {
@@ -441,8 +466,9 @@ template <class T, int kC>
       for (int c = 0; c < 9; ++c) gg[c] += e[c];
     }
     T* vg = j.value_grad + static_cast<size_t>(id) * nc;
+    const T* ev = kC > 0 ? e + 9 : value_sums + static_cast<size_t>(k) * VS * kLanes;
 #pragma omp simd
-    for (int c = 0; c < nc; ++c) vg[c] += e[9 + c];
+    for (int c = 0; c < nc; ++c) vg[c] += ev[c];
     j.locks.unlock(id);
   }
 }
@@ -492,6 +518,80 @@ std::pair<ForwardTileFn<T>, BackwardTileFn<T>> tile_kernels(int C) {
 std::atomic<int>& kernels_override() {
   static std::atomic<int> value{-1};
   return value;
+}
+
+// Runs a tile kernel over every tile of the image, on every thread, each with its own scratch. The order:
+// column by column along strips kStripTiles tiles high, so the tiles below a tile run a few tiles after
+// it (not a whole row of tiles later) and the Gaussians they share (their tile records, value rows and
+// gradient sums) are still in cache.
+constexpr int kStripTiles = 4;
+template <class T, class Job>
+void run_tiles(const SplatCamera<T>& cam, void (*tile_fn)(const Job&, int, TileScratch<T>&), const Job& job) {
+  const int tiles_x = cam.tiles_x(), tiles_y = cam.tiles_y();
+  std::vector<int32_t> order;
+  order.reserve(static_cast<size_t>(tiles_x) * tiles_y);
+  for (int y0 = 0; y0 < tiles_y; y0 += kStripTiles)
+    for (int x = 0; x < tiles_x; ++x)
+      for (int y = y0; y < std::min(y0 + kStripTiles, tiles_y); ++y) order.push_back(y * tiles_x + x);
+  const int n = static_cast<int>(order.size());
+#pragma omp parallel
+  {
+    TileScratch<T> scratch;
+#pragma omp for schedule(dynamic, 1)
+    for (int t = 0; t < n; ++t) tile_fn(job, order[t], scratch);
+  }
+}
+
+// Step 2 of the forward: st.ids grouped by tile (st.tile_begin/end), each tile's ids front to back (by
+// depth, ties by id). The sort runs on (depth, id) pairs held together (not ids that look their depth
+// up); the counting sort by tile runs on every thread, each over a slice of the depth order, with
+// per-thread offsets so that a tile's ids keep that order.
+template <class T>
+void bin_by_tile(SplatForwardState<T>& st) {
+  const int N = static_cast<int>(st.proj.size());
+  std::vector<std::pair<T, int32_t>> keyed;
+  keyed.reserve(N);
+  for (int i = 0; i < N; ++i)
+    if (st.proj[i].visible) keyed.emplace_back(st.proj[i].depth, i);
+  std::sort(keyed.begin(), keyed.end());
+  const int V = static_cast<int>(keyed.size());
+  const int tiles_x = st.cam.tiles_x(), n_tiles = tiles_x * st.cam.tiles_y();
+  st.tile_begin.assign(n_tiles, 0);
+  st.tile_end.assign(n_tiles, 0);
+  std::vector<int32_t> offset(static_cast<size_t>(omp_get_max_threads()) * n_tiles, 0);
+  // each thread's tiles in the slice's order: y then x over its rectangle
+  auto for_tiles = [&](int id, auto&& f) {
+    const ProjectedGaussian<T>& p = st.proj[id];
+    for (int y = p.rect_min[1]; y < p.rect_max[1]; ++y)
+      for (int x = p.rect_min[0]; x < p.rect_max[0]; ++x) f(y * tiles_x + x);
+  };
+#pragma omp parallel
+  {
+    const int t = omp_get_thread_num(), nt = omp_get_num_threads();
+    const int begin = static_cast<int>(static_cast<int64_t>(V) * t / nt);
+    const int end = static_cast<int>(static_cast<int64_t>(V) * (t + 1) / nt);
+    int32_t* const mine = offset.data() + static_cast<size_t>(t) * n_tiles;
+    for (int k = begin; k < end; ++k) for_tiles(keyed[k].second, [&](int tile) { ++mine[tile]; });
+#pragma omp barrier
+#pragma omp single
+    {
+      int32_t total = 0;
+      for (int tile = 0; tile < n_tiles; ++tile) {
+        st.tile_begin[tile] = total;
+        for (int u = 0; u < nt; ++u) {
+          const int32_t c = offset[static_cast<size_t>(u) * n_tiles + tile];
+          offset[static_cast<size_t>(u) * n_tiles + tile] = total;
+          total += c;
+        }
+        st.tile_end[tile] = total;
+      }
+      st.ids.resize(total);
+    }  // (the single's implied barrier: offsets and ids ready)
+    for (int k = begin; k < end; ++k) {
+      const int32_t id = keyed[k].second;
+      for_tiles(id, [&](int tile) { st.ids[mine[tile]++] = id; });
+    }
+  }
 }
 
 }  // namespace
@@ -579,34 +679,8 @@ void rasterize_forward_cpu(const SplatCamera<T>& cam, const SplatInputs<T>& in, 
       for (int c = 0; c < 3; ++c) st.clamped[3 * i + c] = cl[c];
     }
   }
-  // 2. depth order (ties by id), then a stable counting sort by tile: per-tile lists front to back
-  std::vector<int32_t> order;
-  order.reserve(N);
-  for (int i = 0; i < N; ++i)
-    if (st.proj[i].visible) order.push_back(i);
-  std::sort(order.begin(), order.end(), [&](int32_t a, int32_t b) {
-    return st.proj[a].depth < st.proj[b].depth || (st.proj[a].depth == st.proj[b].depth && a < b);
-  });
-  const int tiles_x = cam.tiles_x(), n_tiles = tiles_x * cam.tiles_y();
-  std::vector<int32_t> count(n_tiles + 1, 0);
-  for (int32_t id : order) {
-    const auto& p = st.proj[id];
-    for (int y = p.rect_min[1]; y < p.rect_max[1]; ++y)
-      for (int x = p.rect_min[0]; x < p.rect_max[0]; ++x) ++count[y * tiles_x + x];
-  }
-  st.tile_begin.assign(n_tiles, 0);
-  st.tile_end.assign(n_tiles, 0);
-  int32_t total = 0;
-  for (int t = 0; t < n_tiles; ++t) {
-    st.tile_begin[t] = st.tile_end[t] = total;
-    total += count[t];
-  }
-  st.ids.resize(total);
-  for (int32_t id : order) {
-    const auto& p = st.proj[id];
-    for (int y = p.rect_min[1]; y < p.rect_max[1]; ++y)
-      for (int x = p.rect_min[0]; x < p.rect_max[0]; ++x) st.ids[st.tile_end[y * tiles_x + x]++] = id;
-  }
+  // 2. per-tile lists front to back
+  bin_by_tile(st);
   // 3. blend per tile
   const size_t n_pix = static_cast<size_t>(cam.width) * cam.height;
   st.final_T.resize(n_pix);
@@ -616,12 +690,7 @@ void rasterize_forward_cpu(const SplatCamera<T>& cam, const SplatInputs<T>& in, 
   const ForwardTileJob<T> job{{cam, st, gaussians.data(), values, C, in.background}, image, alpha, depth,
                               st.final_T.data(), st.n_contrib.data()};
   const ForwardTileFn<T> forward_tile_fn = tile_kernels<T>(C).first;
-#pragma omp parallel
-  {
-    TileScratch<T> scratch;
-#pragma omp for schedule(dynamic, 1)
-    for (int t = 0; t < n_tiles; ++t) forward_tile_fn(job, t, scratch);
-  }
+  run_tiles(cam, forward_tile_fn, job);
 }
 
 template <class T>
@@ -632,7 +701,6 @@ void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>
   const bool sh = in.use_sh();
   const int C = sh ? 3 : in.channels;
   const int K = sh ? sh_coeff_count(in.sh_degree) : 0;
-  const int n_tiles = cam.tiles_x() * cam.tiles_y();
   const size_t n_pix = static_cast<size_t>(cam.width) * cam.height;
   std::vector<T> zero_image;
   if (!dL_dimage) {
@@ -657,12 +725,7 @@ void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>
   const BackwardTileJob<T> job{{cam, st, gaussians.data(), values, C, in.background}, dL_dimage, dL_dalpha, dL_ddepth,
                                geometry ? geom.data() : nullptr, value_grad, locks};
   const BackwardTileFn<T> backward_tile_fn = tile_kernels<T>(C).second;
-#pragma omp parallel
-  {
-    TileScratch<T> scratch;
-#pragma omp for schedule(dynamic, 1)
-    for (int t = 0; t < n_tiles; ++t) backward_tile_fn(job, t, scratch);
-  }
+  run_tiles(cam, backward_tile_fn, job);
   // per Gaussian: screen-space gradients -> 3D parameters (preprocess backward)
   const Vec3<T> campos = cam.center();
 #pragma omp parallel for schedule(static)

@@ -3,6 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
+
+#include <omp.h>
 
 #include "splat/reference_render.h"
 #include "splat_scene.h"
@@ -140,6 +144,54 @@ TEST(SplatReference, BlendingStopsBeforeTransmittanceFallsBelow1e4) {
   const auto [fast, ref] = s.render();
   EXPECT_NEAR(fast, expected, 1e-4);
   EXPECT_NEAR(ref, expected, 1e-5);  // opacities are the float 0.98f
+}
+
+// The per-tile lists of the forward state against a brute-force binning: every visible Gaussian whose tile
+// rectangle holds the tile, front to back, ties in depth by id. Half the Gaussians share the depth of another
+// (a copy moved sideways), on 1 to 3 threads, on an image of 10 x 7 tiles (the tiles are blended in strips of
+// rows, rasterize_cpu.cpp): the lists must not depend on the threads, nor the image (of the scene without
+// the copies: in double their depths differ by rounding, so the reference may order them otherwise).
+TEST(SplatTiles, ListsHoldEveryGaussianOfItsTileFrontToBack) {
+  const auto plain = test::random_scene(300, 150, 110, 5, /*use_sh=*/false, 21, 0.98);
+  auto s = plain;
+  for (int i = 1; i < s.n; i += 2) {  // the same camera z as Gaussian i - 1: the camera moves along its rotated axes
+    const Vec3d shift = transpose(s.cam.R) * Vec3d{0.05 * i / s.n, -0.03, 0.0};
+    for (int k = 0; k < 3; ++k) s.means[3 * i + k] = s.means[3 * (i - 1) + k] + shift[k];
+  }
+  const auto af = test::scene_arrays<float>(s);
+  const int threads_before = omp_get_max_threads();
+  for (int threads : {1, 2, 3}) {
+    SCOPED_TRACE(threads);
+    omp_set_num_threads(threads);
+    const size_t n_pix = static_cast<size_t>(s.cam.width) * s.cam.height;
+    std::vector<float> image(n_pix * s.channels), alpha(n_pix), depth(n_pix);
+    SplatForwardState<float> st;
+    rasterize_forward_cpu(test::cast_camera<float>(s.cam), af.inputs(s), image.data(), alpha.data(), depth.data(), st);
+    const int tiles_x = st.cam.tiles_x(), n_tiles = tiles_x * st.cam.tiles_y();
+    ASSERT_EQ(static_cast<int>(st.tile_begin.size()), n_tiles);
+    int ties = 0;
+    for (int tile = 0; tile < n_tiles; ++tile) {
+      std::vector<std::pair<float, int32_t>> expected;
+      for (int i = 0; i < s.n; ++i) {
+        const ProjectedGaussian<float>& p = st.proj[i];
+        const int x = tile % tiles_x, y = tile / tiles_x;
+        if (p.visible && p.rect_min[0] <= x && x < p.rect_max[0] && p.rect_min[1] <= y && y < p.rect_max[1])
+          expected.emplace_back(p.depth, i);
+      }
+      std::sort(expected.begin(), expected.end());
+      for (size_t k = 1; k < expected.size(); ++k) ties += expected[k].first == expected[k - 1].first;
+      const std::vector<int32_t> got(st.ids.begin() + st.tile_begin[tile], st.ids.begin() + st.tile_end[tile]);
+      std::vector<int32_t> want;
+      for (const auto& e : expected) want.push_back(e.second);
+      ASSERT_EQ(got, want) << "tile " << tile;
+    }
+    EXPECT_GT(ties, 50) << "the scene must have Gaussians of equal depth in one tile";
+    const Diff d = compare_with_reference(plain);
+    EXPECT_LT(d.image, 1e-5);
+    EXPECT_LT(d.alpha, 1e-5);
+    EXPECT_GT(d.coverage, 0.5);
+  }
+  omp_set_num_threads(threads_before);
 }
 
 }  // namespace
