@@ -119,6 +119,7 @@ class TimedModel : public AmgModel {
     inner_.set_image(rgb, h, w);
     encode_s += seconds_since(t0), ++crops;
   }
+  int input_size() const override { return inner_.input_size(); }
   void predict_points(const std::vector<Point2d>& pts, std::vector<float>& ious) override {
     const auto t0 = Clock::now();
     inner_.predict_points(pts, ious);

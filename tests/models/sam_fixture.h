@@ -24,6 +24,8 @@ inline const nlohmann::json& sam_config_json() {
   static const nlohmann::json j = nlohmann::json::parse(read_text_file(sam_fixture("config.json")));
   return j;
 }
+// The side of the model's square input (ResizeLongestSide's target length).
+inline int img_size() { return sam_config_json().at("image_encoder").at("img_size").get<int>(); }
 // Masks per prompt with multimask_output (the s / m / l outputs the AMG uses).
 inline int64_t num_multimask_outputs() { return sam_config_json().at("num_multimask_outputs").get<int64_t>(); }
 

@@ -109,7 +109,8 @@ TEST(SamAmgRun, FirstBatchMatchesDebugDump) {
   auto grid = build_point_grid(params.points_per_side);
   grid.resize(std::min(grid.size(), dump["points_per_batch"].get<size_t>()));
   std::vector<Point2d> pts;
-  for (const auto& g : grid) pts.push_back(resize_coords({g[0] * im.width, g[1] * im.height}, im.height, im.width));
+  const int side = cls::sam::testing::img_size();
+  for (const auto& g : grid) pts.push_back(resize_coords({g[0] * im.width, g[1] * im.height}, im.height, im.width, side));
   const auto expected_pts = dump["transformed_points"];
   ASSERT_EQ(pts.size(), expected_pts.size());
   for (size_t i = 0; i < pts.size(); ++i) {

@@ -11,7 +11,9 @@
 #include "models/sam_amg/mask_rle.h"
 #include "models/sam_amg/small_regions.h"
 #include "sam_amg_test_util.h"
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 using namespace cls::amg;
 
@@ -82,11 +84,47 @@ TEST(SamAmgUtils, CropBoxesAndGridsMatchFixture) {
 }
 
 TEST(SamAmgUtils, ResizeCoordsLongestSide) {
-  EXPECT_EQ(longest_side_shape(302, 403).height, 767);
-  EXPECT_EQ(longest_side_shape(302, 403).width, 1024);
-  const Point2d p = resize_coords({403.0, 151.0}, 302, 403);
+  EXPECT_EQ(longest_side_shape(302, 403, 1024).height, 767);
+  EXPECT_EQ(longest_side_shape(302, 403, 1024).width, 1024);
+  const Point2d p = resize_coords({403.0, 151.0}, 302, 403, 1024);
   EXPECT_DOUBLE_EQ(p[0], 1024.0);
   EXPECT_DOUBLE_EQ(p[1], 151.0 * 767.0 / 302.0);
+  // another input side and a portrait image: scale 512 / 403, so 302 columns -> int(383.7 + 0.5) = 384
+  EXPECT_EQ(longest_side_shape(403, 302, 512).height, 512);
+  EXPECT_EQ(longest_side_shape(403, 302, 512).width, 384);
+  const Point2d q = resize_coords({151.0, 403.0}, 403, 302, 512);
+  EXPECT_DOUBLE_EQ(q[0], 151.0 * 384.0 / 302.0);
+  EXPECT_DOUBLE_EQ(q[1], 512.0);
+}
+
+// The generator hands the model its points in the model's input frame, whatever that side is (the reference's
+// SamPredictor.transform is ResizeLongestSide(img_size)): a model of input side 512 and a portrait image of
+// 403 x 302 (h x w) scale 512 / 403, so the grid's last point ((1 - 1/(2n)) of each side) lands at
+// (1 - 1/(2n)) * 384 and (1 - 1/(2n)) * 512. No IoU passes, so nothing is upsampled.
+TEST(SamAmgUtils, PointsReachTheModelInItsInputFrame) {
+  class RecordingModel : public AmgModel {
+   public:
+    void set_image(const uint8_t*, int, int) override {}
+    int input_size() const override { return 512; }
+    void predict_points(const std::vector<Point2d>& points, std::vector<float>& ious) override {
+      seen.insert(seen.end(), points.begin(), points.end());
+      ious.assign(points.size() * 3, 0.0f);
+    }
+    void upsample_masks(const std::vector<int64_t>&, std::vector<float>&) override { ADD_FAILURE() << "no mask passes"; }
+    std::vector<Point2d> seen;
+  } model;
+  AmgParams params;
+  params.points_per_side = 4;
+  params.crop_n_layers = 0;
+  const int h = 403, w = 302;
+  const std::vector<uint8_t> rgb(static_cast<size_t>(h) * w * 3, 128);
+  const MaskLevels levels = generate_masks(model, rgb.data(), h, w, params, 1);
+  for (const auto& level : levels) EXPECT_TRUE(level.empty());
+  ASSERT_EQ(model.seen.size(), 16u);
+  double max_x = 0, max_y = 0;
+  for (const Point2d& p : model.seen) max_x = std::max(max_x, p[0]), max_y = std::max(max_y, p[1]);
+  EXPECT_NEAR(max_x, (1.0 - 1.0 / 8) * 384.0, 1e-9);
+  EXPECT_NEAR(max_y, (1.0 - 1.0 / 8) * 512.0, 1e-9);
 }
 
 TEST(SamAmgUtils, NearCropEdge) {

@@ -31,7 +31,7 @@ struct PromptEmbeddings {
 
 struct PromptEncoderImpl : torch::nn::Module {
   explicit PromptEncoderImpl(const SamConfig& cfg);
-  // points: coords [B,N,2] (1024 frame, any float dtype) + labels [B,N] (1 fg, 0 bg, -1 pad);
+  // points: coords [B,N,2] (model-input frame, any float dtype) + labels [B,N] (1 fg, 0 bg, -1 pad);
   // boxes [B,4] XYXY; masks [B,1,256,256] logits. Undefined tensors = prompt absent. A padding
   // point is appended to the points when there is no box (reference behaviour).
   PromptEmbeddings forward(const torch::Tensor& point_coords, const torch::Tensor& point_labels,

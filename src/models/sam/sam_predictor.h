@@ -1,8 +1,8 @@
 #pragma once
 // SamPredictor (segment_anything/predictor.py): encode an image once (set_image), then decode masks
-// for point / box / mask prompts given in original-image pixels (predict), or for a batch of
-// prompts already in the 1024 frame (predict_batch = the reference's predict_torch, used by the
-// automatic mask generator).
+// for point / box / mask prompts given in original-image pixels (predict), or for a batch of prompts
+// already in the model-input frame, img_size (1024 for the official models) on the longest side
+// (predict_batch = the reference's predict_torch, used by the automatic mask generator).
 #include <torch/torch.h>
 
 #include <array>
@@ -47,7 +47,7 @@ class SamPredictor {
   // predict(): coordinates are transformed in float64, then become float32 tensors as in the reference.
   SamPrediction predict(const SamPrompt& prompt, bool multimask_output = true, bool return_logits = false);
 
-  // predict_torch(): point_coords [B, N, 2] (1024 frame, float32 or float64 — arithmetic up to the
+  // predict_torch(): point_coords [B, N, 2] (model-input frame, float32 or float64 — arithmetic up to the
   // positional encoding happens in that dtype, as in the reference), point_labels [B, N] int,
   // boxes [B, 4], mask_input [B, 1, 256, 256]; undefined tensors = absent. upsample = false leaves
   // masks undefined (no postprocess_masks), for callers that upsample only the masks they keep.

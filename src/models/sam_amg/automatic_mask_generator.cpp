@@ -113,7 +113,7 @@ MaskLevels generate_masks(AmgModel& model, const uint8_t* rgb, int im_h, int im_
       const size_t b1 = std::min(points.size(), b0 + static_cast<size_t>(p.points_per_batch));
       const std::vector<Point2d> batch(points.begin() + b0, points.begin() + b1);
       std::vector<Point2d> transformed;
-      for (const Point2d& q : batch) transformed.push_back(resize_coords(q, ch, cw));
+      for (const Point2d& q : batch) transformed.push_back(resize_coords(q, ch, cw, model.input_size()));
       model.predict_points(transformed, ious);
       const size_t nb = batch.size(), plane = static_cast<size_t>(ch) * cw;
       if (ious.size() != nb * 3)

@@ -34,11 +34,14 @@ class AmgModel {
   virtual ~AmgModel() = default;
   // set_image on an RGB crop, HWC uint8, contiguous.
   virtual void set_image(const uint8_t* rgb, int height, int width) = 0;
+  // The side of the model's square input (image_encoder.img_size, 1024 for the official models): the
+  // generator scales its points to it (SamPredictor.transform = ResizeLongestSide(img_size)).
+  virtual int input_size() const = 0;
   // predict_torch(points[:, None, :], labels = 1, multimask_output=True, return_logits=True) for the
-  // image last set: `points_1024` are already transformed to the model's 1024 frame (float64, as
+  // image last set: `points_input` are already transformed to the model's input frame (float64, as
   // the AMG passes NumPy points). Fills iou_predictions [B, 3], float32, and keeps the low-res
   // mask logits of this batch for upsample_masks.
-  virtual void predict_points(const std::vector<Point2d>& points_1024, std::vector<float>& iou_predictions) = 0;
+  virtual void predict_points(const std::vector<Point2d>& points_input, std::vector<float>& iou_predictions) = 0;
   // The mask logits of the last predict_points at the crop size (postprocess_masks) for the masks
   // `indices` into the flattened [B * 3] outputs: fills mask_logits [indices.size(), h, w], float32.
   virtual void upsample_masks(const std::vector<int64_t>& indices, std::vector<float>& mask_logits) = 0;

@@ -28,14 +28,16 @@ void SamPredictorAmgModel::set_image(const uint8_t* rgb, int height, int width) 
   predictor_.set_image(rgb, height, width);
 }
 
-void SamPredictorAmgModel::predict_points(const std::vector<Point2d>& points_1024,
+int SamPredictorAmgModel::input_size() const { return predictor_.transform().target_length; }
+
+void SamPredictorAmgModel::predict_points(const std::vector<Point2d>& points_input,
                                           std::vector<float>& iou_predictions) {
   if (!predictor_.is_image_set()) throw Error("AMG: predict_points before set_image");
-  const int64_t b = static_cast<int64_t>(points_1024.size());
+  const int64_t b = static_cast<int64_t>(points_input.size());
   // float64 points, as the reference AMG hands NumPy coordinates to predict_torch.
   auto coords = torch::empty({b, 1, 2}, torch::kFloat64);
   auto* c = coords.data_ptr<double>();
-  for (int64_t i = 0; i < b; ++i) c[2 * i] = points_1024[i][0], c[2 * i + 1] = points_1024[i][1];
+  for (int64_t i = 0; i < b; ++i) c[2 * i] = points_input[i][0], c[2 * i + 1] = points_input[i][1];
   const torch::Device device = predictor_.device();
   coords = coords.to(device);
   const auto labels = torch::ones({b, 1}, torch::TensorOptions().dtype(torch::kInt32).device(device));

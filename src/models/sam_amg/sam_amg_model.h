@@ -16,7 +16,8 @@ class SamPredictorAmgModel : public AmgModel {
  public:
   explicit SamPredictorAmgModel(sam::SamPredictor& predictor) : predictor_(predictor) {}
   void set_image(const uint8_t* rgb, int height, int width) override;
-  void predict_points(const std::vector<Point2d>& points_1024, std::vector<float>& iou_predictions) override;
+  int input_size() const override;
+  void predict_points(const std::vector<Point2d>& points_input, std::vector<float>& iou_predictions) override;
   void upsample_masks(const std::vector<int64_t>& indices, std::vector<float>& mask_logits) override;
 
  private:
