@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <memory>
 #include <numeric>
 #include <stdexcept>
@@ -367,7 +368,7 @@ template <class T, int kC>
   subtile_lists(list, x0, y0, s.sub);
   buf.assign(static_cast<size_t>(L) * S, T(0));
   if (kC == 0) s.value_buf.assign(static_cast<size_t>(L) * VS, LaneRow<T>{});
-  T* const value_sums = kC == 0 ? &s.value_buf.data()->v[0] : nullptr;  // entry k's at k * VS * kLanes
+  T* const value_sums = kC == 0 ? reinterpret_cast<T*>(s.value_buf.data()) : nullptr;  // entry k's at k * VS * kLanes
   touched.assign(L, 0);
   // dL/dimage per channel across the lanes (registers for RGB)
   V dpix_fixed[kC > 0 ? kC : 1];
@@ -559,12 +560,13 @@ void bin_by_tile(SplatForwardState<T>& st) {
   st.tile_begin.assign(n_tiles, 0);
   st.tile_end.assign(n_tiles, 0);
   std::vector<int32_t> offset(static_cast<size_t>(omp_get_max_threads()) * n_tiles, 0);
-  // each thread's tiles in the slice's order: y then x over its rectangle
+  // the tiles of one Gaussian's rectangle, y then x
   auto for_tiles = [&](int id, auto&& f) {
     const ProjectedGaussian<T>& p = st.proj[id];
     for (int y = p.rect_min[1]; y < p.rect_max[1]; ++y)
       for (int x = p.rect_min[0]; x < p.rect_max[0]; ++x) f(y * tiles_x + x);
   };
+  std::exception_ptr failed;  // (an exception may not leave a parallel region)
 #pragma omp parallel
   {
     const int t = omp_get_thread_num(), nt = omp_get_num_threads();
@@ -585,13 +587,19 @@ void bin_by_tile(SplatForwardState<T>& st) {
         }
         st.tile_end[tile] = total;
       }
-      st.ids.resize(total);
-    }  // (the single's implied barrier: offsets and ids ready)
-    for (int k = begin; k < end; ++k) {
-      const int32_t id = keyed[k].second;
-      for_tiles(id, [&](int tile) { st.ids[mine[tile]++] = id; });
-    }
+      try {
+        st.ids.resize(total);
+      } catch (...) {
+        failed = std::current_exception();
+      }
+    }  // (the single's implied barrier: offsets, ids and `failed` ready)
+    if (!failed)
+      for (int k = begin; k < end; ++k) {
+        const int32_t id = keyed[k].second;
+        for_tiles(id, [&](int tile) { st.ids[mine[tile]++] = id; });
+      }
   }
+  if (failed) std::rethrow_exception(failed);
 }
 
 }  // namespace

@@ -159,7 +159,10 @@ TEST(SplatTiles, ListsHoldEveryGaussianOfItsTileFrontToBack) {
     for (int k = 0; k < 3; ++k) s.means[3 * i + k] = s.means[3 * (i - 1) + k] + shift[k];
   }
   const auto af = test::scene_arrays<float>(s);
-  const int threads_before = omp_get_max_threads();
+  struct RestoreThreads {  // also when an ASSERT leaves early
+    int count = omp_get_max_threads();
+    ~RestoreThreads() { omp_set_num_threads(count); }
+  } restore;
   for (int threads : {1, 2, 3}) {
     SCOPED_TRACE(threads);
     omp_set_num_threads(threads);
@@ -191,7 +194,6 @@ TEST(SplatTiles, ListsHoldEveryGaussianOfItsTileFrontToBack) {
     EXPECT_LT(d.alpha, 1e-5);
     EXPECT_GT(d.coverage, 0.5);
   }
-  omp_set_num_threads(threads_before);
 }
 
 }  // namespace
