@@ -108,9 +108,9 @@ LinearHeadFactors factor_linear_head(const at::Tensor& W, const at::Tensor& bias
 }
 
 DecodedCosines::DecodedCosines(LinearHeadDecoder decoder, const at::Tensor& directions)
-    : hidden_(std::move(decoder.hidden)) {
-  if (!hidden_) throw Error("relevance: the decoder has no hidden-layer function");
-  const LinearHeadFactors& f = decoder.last;
+    : decoder_(std::move(decoder)) {
+  if (!decoder_.hidden) throw Error("relevance: the decoder has no hidden-layer function");
+  const LinearHeadFactors& f = decoder_.last;
   if (!f.q.defined() || !f.r.defined()) throw Error("relevance: the decoder's last layer is not factorised");
   const int64_t D = f.q.size(0);
   if (!directions.defined() || directions.dim() != 2 || directions.size(1) != D)
@@ -118,24 +118,21 @@ DecodedCosines::DecodedCosines(LinearHeadDecoder decoder, const at::Tensor& dire
                 shape_of(directions) + " (another feature provider?)");
   at::NoGradGuard no_grad;
   const at::Tensor p = unit_rows(directions.detach().to(f.q.options()));
-  const auto on_device = f.r.options();
-  r_ = f.r;
-  c_ = f.c;
-  q_directions_ = p.matmul(f.q).to(on_device);
-  e_dot_ = p.matmul(f.e).to(on_device);
-  e_squared_ = f.e_squared;
+  q_directions_ = p.matmul(f.q).to(f.r.options());
+  e_dot_ = p.matmul(f.e).to(f.r.options());
 }
 
 at::Tensor DecodedCosines::operator()(const at::Tensor& latents) const {
   at::NoGradGuard no_grad;
-  const at::Tensor h = hidden_(latents).to(r_.device(), torch::kFloat32);
-  if (h.dim() != 2 || h.size(0) != latents.size(0) || h.size(1) != r_.size(1))
+  const LinearHeadFactors& f = decoder_.last;
+  const at::Tensor h = decoder_.hidden(latents).to(f.r.device(), torch::kFloat32);
+  if (h.dim() != 2 || h.size(0) != latents.size(0) || h.size(1) != f.r.size(1))
     throw Error("relevance: the decoder's hidden layers gave " + shape_of(h) + " for " + shape_of(latents) +
-                " latents; its last layer takes " + std::to_string(r_.size(1)) + " values");
+                " latents; its last layer takes " + std::to_string(f.r.size(1)) + " values");
   const auto blas = blas_threads_for_split(h);
-  const at::Tensor u = parallel_rows_linear(h, r_, c_);                // B x k
+  const at::Tensor u = parallel_rows_linear(h, f.r, f.c);                  // B x k
   const at::Tensor dots = parallel_rows_linear(u, q_directions_, e_dot_);  // B x P
-  const at::Tensor norm = (u.norm(2, {1}, /*keepdim=*/true).square() + e_squared_).sqrt();  // one pass over u
+  const at::Tensor norm = (u.norm(2, {1}, /*keepdim=*/true).square() + f.e_squared).sqrt();  // one pass over u
   return torch::where(norm > 0, dots / norm, torch::zeros_like(dots));
 }
 

@@ -78,10 +78,8 @@ class DecodedCosines {
   at::Tensor operator()(const at::Tensor& latents) const;
 
  private:
-  LatentDecoder hidden_;
-  at::Tensor r_, c_;              // k x H, k: u = h R^T + c
+  LinearHeadDecoder decoder_;        // u = h R^T + c with its last layer's factors
   at::Tensor q_directions_, e_dot_;  // P x k (Q^T p, p unit), P (<p, e>)
-  double e_squared_ = 0;          // |e|^2
 };
 
 // Pixels decoded per call of the decoder (bounds the MLP's intermediate memory). On the CPU 8192 x 512
