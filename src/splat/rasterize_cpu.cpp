@@ -368,7 +368,8 @@ template <class T, int kC>
   subtile_lists(list, x0, y0, s.sub);
   buf.assign(static_cast<size_t>(L) * S, T(0));
   if (kC == 0) s.value_buf.assign(static_cast<size_t>(L) * VS, LaneRow<T>{});
-  T* const value_sums = kC == 0 ? reinterpret_cast<T*>(s.value_buf.data()) : nullptr;  // entry k's at k * VS * kLanes
+  T* const value_sums = kC == 0 ? reinterpret_cast<T*>(s.value_buf.data()) : nullptr;
+  auto values_of = [&](int k) { return value_sums + static_cast<size_t>(k) * VS * kLanes; };  // entry k's sums
   touched.assign(L, 0);
   // dL/dimage per channel across the lanes (registers for RGB)
   V dpix_fixed[kC > 0 ? kC : 1];
@@ -454,7 +455,7 @@ template <class T, int kC>
         const V sums = lane_sums(q);
         for (int i = 0; i < 9 + kC; ++i) e[i] += sums[i];
       }
-      if (kC == 0) add_lane_rows(w, pass, dL_dimage, pixel, nc, value_sums + static_cast<size_t>(k) * VS * kLanes);
+      if (kC == 0) add_lane_rows(w, pass, dL_dimage, pixel, nc, values_of(k));
     }
   }
   for (int k = 0; k < L; ++k) {
@@ -467,7 +468,7 @@ template <class T, int kC>
       for (int c = 0; c < 9; ++c) gg[c] += e[c];
     }
     T* vg = j.value_grad + static_cast<size_t>(id) * nc;
-    const T* ev = kC > 0 ? e + 9 : value_sums + static_cast<size_t>(k) * VS * kLanes;
+    const T* ev = kC > 0 ? e + 9 : values_of(k);
 #pragma omp simd
     for (int c = 0; c < nc; ++c) vg[c] += ev[c];
     j.locks.unlock(id);
