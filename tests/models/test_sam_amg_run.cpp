@@ -13,6 +13,7 @@
 #include "core/blas_threads.h"
 #include "core/error.h"
 #include "core/npy.h"
+#include "models/sam/resize_longest_side.h"
 #include "models/sam/sam_predictor.h"
 #include "models/sam_amg/langsplat_post.h"
 #include "models/sam_amg/records_json.h"
@@ -109,8 +110,10 @@ TEST(SamAmgRun, FirstBatchMatchesDebugDump) {
   auto grid = build_point_grid(params.points_per_side);
   grid.resize(std::min(grid.size(), dump["points_per_batch"].get<size_t>()));
   std::vector<Point2d> pts;
-  const int side = cls::sam::testing::img_size();
-  for (const auto& g : grid) pts.push_back(resize_coords({g[0] * im.width, g[1] * im.height}, im.height, im.width, side));
+  for (const auto& g : grid) pts.push_back({g[0] * im.width, g[1] * im.height});
+  cls::sam::ResizeLongestSide transform;
+  transform.target_length = cls::sam::testing::img_size();
+  transform.apply_coords(pts.data()->data(), pts.size(), {im.height, im.width});
   const auto expected_pts = dump["transformed_points"];
   ASSERT_EQ(pts.size(), expected_pts.size());
   for (size_t i = 0; i < pts.size(); ++i) {

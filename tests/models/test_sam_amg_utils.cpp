@@ -83,20 +83,6 @@ TEST(SamAmgUtils, CropBoxesAndGridsMatchFixture) {
   EXPECT_EQ(build_all_layer_point_grids(32, 2, 2)[2].size(), 64u);  // hand case: int(32 / 2^2) = 8 per side
 }
 
-TEST(SamAmgUtils, ResizeCoordsLongestSide) {
-  EXPECT_EQ(longest_side_shape(302, 403, 1024).height, 767);
-  EXPECT_EQ(longest_side_shape(302, 403, 1024).width, 1024);
-  const Point2d p = resize_coords({403.0, 151.0}, 302, 403, 1024);
-  EXPECT_DOUBLE_EQ(p[0], 1024.0);
-  EXPECT_DOUBLE_EQ(p[1], 151.0 * 767.0 / 302.0);
-  // another input side and a portrait image: scale 512 / 403, so 302 columns -> int(383.7 + 0.5) = 384
-  EXPECT_EQ(longest_side_shape(403, 302, 512).height, 512);
-  EXPECT_EQ(longest_side_shape(403, 302, 512).width, 384);
-  const Point2d q = resize_coords({151.0, 403.0}, 403, 302, 512);
-  EXPECT_DOUBLE_EQ(q[0], 151.0 * 384.0 / 302.0);
-  EXPECT_DOUBLE_EQ(q[1], 512.0);
-}
-
 // The generator hands the model its points in the model's input frame, whatever that side is (the reference's
 // SamPredictor.transform is ResizeLongestSide(img_size)): a model of input side 512 and a portrait image of
 // 403 x 302 (h x w) scale 512 / 403, so the grid's last point ((1 - 1/(2n)) of each side) lands at

@@ -27,6 +27,21 @@ TEST(SamResize, PreprocessShapeRoundsLikeTheReference) {
   EXPECT_EQ(preprocess_shape(750, 1000, 1024), std::make_pair(768, 1024));
   EXPECT_EQ(preprocess_shape(1024, 10, 1024), std::make_pair(1024, 10));
   EXPECT_EQ(preprocess_shape(2, 3, 1024), std::make_pair(683, 1024));  // 682.67 + 0.5 -> 683
+  // another input side and a portrait image: scale 512 / 403, so 302 columns -> int(383.7 + 0.5) = 384
+  EXPECT_EQ(preprocess_shape(403, 302, 512), std::make_pair(512, 384));
+}
+
+TEST(SamResize, ApplyCoordsByHand) {
+  ResizeLongestSide t;  // 1024
+  double p[2] = {403.0, 151.0};
+  t.apply_coords(p, 1, {302, 403});
+  EXPECT_DOUBLE_EQ(p[0], 1024.0);
+  EXPECT_DOUBLE_EQ(p[1], 151.0 * 767.0 / 302.0);
+  t.target_length = 512;
+  double q[2] = {151.0, 403.0};
+  t.apply_coords(q, 1, {403, 302});
+  EXPECT_DOUBLE_EQ(q[0], 151.0 * 384.0 / 302.0);
+  EXPECT_DOUBLE_EQ(q[1], 512.0);
 }
 
 TEST(SamResize, PillowBilinearUpscaleByHand) {

@@ -73,16 +73,6 @@ bool is_box_near_crop_edge(const BoxXyxy& b, const CropBox& crop, int im_h, int 
   return false;
 }
 
-ResizedShape longest_side_shape(int h, int w, int target) {
-  const double scale = static_cast<double>(target) / std::max(h, w);
-  return {static_cast<int>(h * scale + 0.5), static_cast<int>(w * scale + 0.5)};
-}
-
-Point2d resize_coords(const Point2d& p, int h, int w, int target) {
-  const ResizedShape s = longest_side_shape(h, w, target);
-  return {p[0] * (static_cast<double>(s.width) / w), p[1] * (static_cast<double>(s.height) / h)};
-}
-
 float stability_score(const float* logits, int height, int width, float threshold, float offset) {
   const float hi = threshold + offset, lo = threshold - offset;
   int64_t inter = 0, uni = 0;

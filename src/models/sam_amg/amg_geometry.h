@@ -33,14 +33,6 @@ std::vector<CropBox> generate_crop_boxes(int image_h, int image_w, int n_layers,
 bool is_box_near_crop_edge(const BoxXyxy& box_in_crop, const CropBox& crop, int image_h, int image_w,
                            double atol = 20.0);
 
-// ResizeLongestSide(target_length): get_preprocess_shape and apply_coords (float64, as the AMG passes
-// numpy). target_length is the model's input side (AmgModel::input_size()).
-struct ResizedShape {
-  int height = 0, width = 0;
-};
-ResizedShape longest_side_shape(int height, int width, int target_length);
-Point2d resize_coords(const Point2d& p, int height, int width, int target_length);
-
 // calculate_stability_score for one mask of logits: #(logit > t + offset) / #(logit > t - offset)
 // in float32 (0/0 = NaN, as the reference).
 float stability_score(const float* logits, int height, int width, float mask_threshold, float offset);

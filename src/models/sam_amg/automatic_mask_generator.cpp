@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "models/sam/resize_longest_side.h"
 #include "models/sam_amg/box_nms.h"
 #include "models/sam_amg/small_regions.h"
 
@@ -94,6 +95,8 @@ MaskLevels generate_masks(AmgModel& model, const uint8_t* rgb, int im_h, int im_
   const auto grids = build_all_layer_point_grids(p.points_per_side, p.crop_n_layers, p.crop_n_points_downscale_factor);
   const auto crops = generate_crop_boxes(im_h, im_w, p.crop_n_layers, p.crop_overlap_ratio);
   const int n_threads = thread_count(threads);
+  sam::ResizeLongestSide transform;  // SamPredictor.transform: to the model's input frame
+  transform.target_length = model.input_size();
 
   std::array<std::vector<AmgCandidate>, kNumLevels> all;  // over crops
   for (const CropBox& crop : crops) {
@@ -112,8 +115,8 @@ MaskLevels generate_masks(AmgModel& model, const uint8_t* rgb, int im_h, int im_
     for (size_t b0 = 0; b0 < points.size(); b0 += p.points_per_batch) {
       const size_t b1 = std::min(points.size(), b0 + static_cast<size_t>(p.points_per_batch));
       const std::vector<Point2d> batch(points.begin() + b0, points.begin() + b1);
-      std::vector<Point2d> transformed;
-      for (const Point2d& q : batch) transformed.push_back(resize_coords(q, ch, cw, model.input_size()));
+      std::vector<Point2d> transformed = batch;
+      transform.apply_coords(transformed.data()->data(), transformed.size(), {ch, cw});
       model.predict_points(transformed, ious);
       const size_t nb = batch.size(), plane = static_cast<size_t>(ch) * cw;
       if (ious.size() != nb * 3)

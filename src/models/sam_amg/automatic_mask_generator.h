@@ -35,7 +35,7 @@ class AmgModel {
   // set_image on an RGB crop, HWC uint8, contiguous.
   virtual void set_image(const uint8_t* rgb, int height, int width) = 0;
   // The side of the model's square input (image_encoder.img_size, 1024 for the official models): the
-  // generator scales its points to it (SamPredictor.transform = ResizeLongestSide(img_size)).
+  // generator scales its points to it (SamPredictor.transform = sam::ResizeLongestSide(img_size)).
   virtual int input_size() const = 0;
   // predict_torch(points[:, None, :], labels = 1, multimask_output=True, return_logits=True) for the
   // image last set: `points_input` are already transformed to the model's input frame (float64, as
