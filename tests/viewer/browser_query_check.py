@@ -1,7 +1,19 @@
 #!/usr/bin/python3
 """Checks the viewer of `citylangsplat view` in a real browser: starts the server, opens the page in
-headless Chromium (software WebGL), jumps to a view, types a query as a person would, and checks that
-the splats that changed colour lie on the queried class in that view's label map.
+headless Chromium (software WebGL), checks the view it opens at, jumps to a view, types a query as a
+person would, and checks that the splats that changed colour lie on the queried class in that view's
+label map.
+
+The first view (before any input): the page must open through the first training camera (the views
+sorted by name, every --test-every-th from the first held out, as train-rgb splits them): the camera's
+position, orientation and projection must be that view's centre, R and intrinsics from /api/model, and
+the canvas its aspect ratio. The building must show in it: at least --min-first-centre of the central
+half (each axis) of the canvas differs from the page's empty background, and on the pixels where the
+view's label map has a city object (level 3 label > 0) the render matches the view's photo to a mean
+absolute difference of at most --max-first-error (0-255): the centre share catches a blank canvas, the
+photo a view of the wrong place (the old far, fogged overview covered 99% of the centre but differed by
+33). "hide far splats" must be on and hide some splats (the sample's sky), at most --max-hidden of
+them. The screenshot goes to --first-screenshot.
 
 Highlighted pixels are those whose colour changed between the render before and after the query by
 more than --min-change (max over R, G, B, 0-255): the page mixes 80% of a heat colour over a selected
@@ -27,11 +39,13 @@ import subprocess
 import sys
 import threading
 import time
+import urllib.request
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from headless_chromium import require_tools, start_browser  # noqa: E402
 
 SERVER_URL = re.compile(r"http://127\.0\.0\.1:\d+/")
+BACKGROUND = (0x20, 0x22, 0x26)  # the page's scene.background, where no splat covers the canvas
 
 
 class Failure(Exception):
@@ -55,11 +69,23 @@ def parse_args():
     p.add_argument("--min-change", type=int, default=40, help="colour change (0-255) that makes a pixel highlighted")
     p.add_argument("--timeout", type=float, default=180, help="seconds to wait for loading, and for the query")
     p.add_argument("--screenshot", help="write the full page after the query here (PNG)")
+    p.add_argument("--first-screenshot",
+                   help="write the full page as it opens here (PNG; default: --screenshot's name + _first.png)")
+    p.add_argument("--test-every", type=int, default=8, help="train-rgb's split: views k %% N == 0 by name are held out")
+    p.add_argument("--min-first-centre", type=float, default=0.6,
+                   help="least share of the first view's central pixels not showing the empty background")
+    p.add_argument("--max-first-error", type=float, default=15,
+                   help="largest mean absolute difference (0-255) between the first view's render and its photo "
+                        "on the city model's pixels")
+    p.add_argument("--max-hidden", type=float, default=0.1,
+                   help="largest share of the splats that 'hide far splats' may hide (and it must hide some)")
     p.add_argument("--keep-server", action="store_true", help="leave the server running at the end")
     p.add_argument("--server-url", help=argparse.SUPPRESS)  # use a running server (development against a mock)
     args = p.parse_args()
     if not args.server_url and not (args.binary and args.out):
         p.error("--binary and --out are required")
+    if args.first_screenshot is None and args.screenshot:
+        args.first_screenshot = os.path.splitext(args.screenshot)[0] + "_first.png"
     return args
 
 
@@ -143,6 +169,109 @@ def canvas_png(driver):
     return driver.find_element(By.CSS_SELECTOR, "#stage canvas").screenshot_as_png
 
 
+def get_url(url):
+    with urllib.request.urlopen(url, timeout=30) as response:
+        return response.read()
+
+
+def first_training_view(views, test_every):
+    """train-rgb's first training view: by name, the first whose index is not a multiple of test_every."""
+    by_name = sorted(views, key=lambda v: v["name"])
+    held_out = [v["name"] for k, v in enumerate(by_name) if test_every > 0 and k % test_every == 0]
+    marked = [v["name"] for v in by_name if v.get("test")]
+    if marked != held_out:
+        raise Failure(f"/api/model marks {marked} as test views; every {test_every}th by name is {held_out}")
+    train = [v for v in by_name if v["name"] not in held_out]
+    if not train:
+        raise Failure("/api/model has no training view")
+    return train[0]
+
+
+def camera_errors(cam, view):
+    """How far the page's camera is from the view: position, rotation (max |element|) and projection."""
+    x, y, z, w = cam["quaternion"]
+    # three.js camera-to-world rotation (looking down -z, y up); its columns must be the view's camera
+    # axes in world coordinates, R's rows (OpenCV: x right, y down, z forward) with y and z negated.
+    m = [[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+         [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+         [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]]
+    R = view["R"]
+    sign = (1, -1, -1)
+    rotation = max(abs(m[i][c] - sign[c] * R[3 * c + i]) for i in range(3) for c in range(3))
+    position = max(abs(a - b) for a, b in zip(cam["position"], view["center"]))
+    P = cam["projection"]  # column-major
+    w_, h_ = view["width"], view["height"]
+    want = {0: 2 * view["fx"] / w_, 5: 2 * view["fy"] / h_, 8: 1 - 2 * view["cx"] / w_, 9: 2 * view["cy"] / h_ - 1}
+    projection = max(abs(P[k] - v) for k, v in want.items())
+    return position, rotation, projection
+
+
+def check_first_view(driver, url, args, failures):
+    """The view the page opens at: the first training camera, showing the building."""
+    from PIL import Image, ImageChops, ImageStat
+    model = json.loads(get_url(url + "api/model"))
+    view = first_training_view(model["views"], args.test_every)
+    wait_frames(driver, 3, args.timeout)
+    png = canvas_png(driver)
+    if args.first_screenshot:
+        driver.save_screenshot(args.first_screenshot)
+        print(f"first-view screenshot: {args.first_screenshot}")
+    state = driver.execute_script("return window.viewerState")
+    cam = driver.execute_script("return window.viewerCamera ? window.viewerCamera() : null")
+    hide = driver.execute_script("const b = document.getElementById('farsplats-toggle');"
+                                 "return b ? b.getAttribute('aria-pressed') : null")
+    if hide != "true":
+        failures.append(f"'hide far splats' is not on by default (aria-pressed {hide!r})")
+    hidden = state.get("hidden") or 0
+    if not 0 < hidden <= args.max_hidden * model["gaussians"]:
+        failures.append(f"{hidden} of {model['gaussians']} splats hidden as far: expected some (the sky), "
+                        f"at most {100 * args.max_hidden:g}%")
+    print(f"first view: page {state.get('firstView')!r} (camera {cam and cam.get('view')!r}), "
+          f"first training view {view['name']!r}; far splats hidden: {state.get('hidden')}")
+    if not cam:
+        failures.append("the page has no window.viewerCamera(): cannot read its camera")
+    else:
+        if cam["view"] != view["name"] or state.get("view") != view["name"]:
+            failures.append(f"the page opens at {cam['view'] or 'a free camera'}, not the first training view "
+                            f"{view['name']}")
+        position, rotation, projection = camera_errors(cam, view)
+        scale = max(1.0, *(abs(c) for c in view["center"]))
+        print(f"first view's camera vs {view['name']}: position {position:.2e}, rotation {rotation:.2e}, "
+              f"projection {projection:.2e}")
+        if position > 1e-6 * scale or rotation > 1e-5 or projection > 1e-6:
+            failures.append(f"the first camera is not {view['name']}'s pose and intrinsics (position off by "
+                            f"{position:.3g}, rotation by {rotation:.3g}, projection by {projection:.3g})")
+
+    render = Image.open(io.BytesIO(png)).convert("RGB")
+    if abs(render.width / render.height / (view["width"] / view["height"]) - 1) > 0.02:
+        failures.append(f"the first canvas ({render.width} x {render.height}) does not show {view['name']}'s aspect "
+                        f"ratio ({view['width']} x {view['height']})")
+    # Non-background share of the central half: empty where nothing, or only far splats, cover it.
+    w, h = render.size
+    centre = render.crop((w // 4, h // 4, w - w // 4, h - h // 4))
+    diff = ImageChops.difference(centre, Image.new("RGB", centre.size, BACKGROUND))
+    r, g, b = diff.split()
+    filled = ImageChops.lighter(ImageChops.lighter(r, g), b).point(lambda v: 255 if v > 16 else 0)
+    filled_share = ImageStat.Stat(filled).mean[0] / 255
+    # The render against the photo on the city model's pixels: a training view reproduces its photo.
+    photo = Image.open(io.BytesIO(get_url(url + view["image"].lstrip("/")))).convert("RGB")
+    stem = os.path.splitext(view["name"])[0]
+    labels = Image.open(os.path.join(args.labels, stem, "level3.png")).convert("I").resize(photo.size, Image.NEAREST)
+    mask = Image.new("L", photo.size)
+    mask.putdata([255 if v > 0 else 0 for v in labels.getdata()])
+    object_share = ImageStat.Stat(mask).mean[0] / 255
+    error = ImageChops.difference(render.resize(photo.size, Image.BILINEAR), photo)
+    mean_error = sum(ImageStat.Stat(error, mask).mean) / 3 if object_share > 0 else float("inf")
+    print(f"first view: {100 * filled_share:.1f}% of the central pixels covered; city model on "
+          f"{100 * object_share:.1f}% of the photo, mean |render - photo| there {mean_error:.1f}")
+    if filled_share < args.min_first_centre:
+        failures.append(f"the first view's centre is {100 * (1 - filled_share):.0f}% empty background "
+                        f"(> {100 * (1 - args.min_first_centre):.0f}%): the building is not in view")
+    if mean_error > args.max_first_error:
+        failures.append(f"the first view does not show {view['name']}'s photo: mean |render - photo| {mean_error:.1f} "
+                        f"> {args.max_first_error:g} on the city model's pixels")
+
+
 def highlighted_on_class(before_png, after_png, labels, label_value, min_change):
     """(highlighted pixels, of them on the class) at the label map's resolution."""
     from PIL import Image, ImageChops
@@ -181,6 +310,7 @@ def check(args, url, failures):
         warning = driver.find_element(By.ID, "warning")
         if warning.is_displayed():
             print(f"warning banner: {warning.text}")
+        check_first_view(driver, url, args, failures)
 
         views = [o.get_attribute("value") for o in Select(driver.find_element(By.ID, "view-select")).options]
         if args.view not in views:
@@ -250,7 +380,7 @@ def main():
     proc = None
     try:
         if args.server_url:
-            url = args.server_url
+            url = args.server_url.rstrip("/") + "/"
         else:
             proc, url = start_server(args)
             print(f"server: {url}")

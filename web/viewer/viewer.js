@@ -13,11 +13,15 @@ const $ = (id) => document.getElementById(id);
 const CLICK_SLOP = 5; // pixels a press may move and still count as a click
 const FREE_FOV = 50;
 const THRESHOLD_RANGE = { cosine: [-1, 1], relevancy: [0, 1] };
+// Splats whose centres lie farther outside the scene's box than this share of its diagonal are
+// hidden by default: the sky and background that train-rgb grows far away would fog every view.
+const FAR_MARGIN = 0.5;
 
 // Test hooks (tests/viewer/browser_query_check.py). `frames` counts animation frames that show
 // everything up to date: the page redraws only on change, and a frame while Spark still sorts
-// the splats for a new camera does not count.
-const state = { ready: false, frames: 0, query: null, view: null };
+// the splats for a new camera does not count. `firstView`: the view the page opened at; `hidden`:
+// how many splats "hide far splats" hides.
+const state = { ready: false, frames: 0, query: null, view: null, firstView: null, hidden: 0 };
 window.viewerState = state;
 
 const stage = $("stage");
@@ -30,11 +34,22 @@ const spark = new SparkRenderer({ renderer });
 scene.add(spark);
 let controls = null; // made once the scene's up axis is known: OrbitControls fixes it at construction
 let fly = null;
+// Read-only test hook: the camera the page draws with (world position, quaternion x y z w, projection
+// column-major) and the canvas size, to compare with a view's pose and intrinsics.
+window.viewerCamera = () => ({
+  position: camera.position.toArray(),
+  quaternion: camera.quaternion.toArray(),
+  projection: camera.projectionMatrix.toArray(),
+  canvas: [renderer.domElement.width, renderer.domElement.height],
+  view: activeView?.name ?? null,
+});
 
 let model = null;
 let splats = null;
 let frusta = null;
 let cityMesh = null;
+let cityMeshData = null; // promise of /api/citymesh: its bounds are part of the scene's box
+let sceneBox = null; // THREE.Box3: the camera centres and the city model (sceneBoxOf)
 let activeView = null; // the view whose pose and intrinsics the camera has, or null (free camera)
 let current = null; // the applied query: {params, answer, scores}
 let querySeq = 0;
@@ -132,17 +147,38 @@ function sceneRadius() {
   return Math.max(new THREE.Vector3(...max).distanceTo(new THREE.Vector3(...min)) / 2, 1e-3);
 }
 
-function frameBounds() {
-  const center = sceneCenter();
+function frameBounds(center = sceneCenter(), radius = sceneRadius()) {
   // Look the way the photos were taken, from far enough to see the whole bounding sphere.
   const forward = new THREE.Vector3();
   for (const view of model.views) forward.add(viewForward(view));
   if (forward.lengthSq() === 0) forward.set(-1, -1, -1);
   forward.normalize();
-  const distance = (1.1 * sceneRadius()) / Math.sin(THREE.MathUtils.degToRad(FREE_FOV / 2));
+  const distance = (1.1 * radius) / Math.sin(THREE.MathUtils.degToRad(FREE_FOV / 2));
   camera.position.copy(center).addScaledVector(forward, -distance);
   controls.target.copy(center);
   camera.lookAt(center);
+}
+
+// The first view train-rgb trains on (views by name, every 8th held out: the server marks those
+// `test`); a scene of held-out views only opens at its first one.
+function firstTrainingView(views) {
+  const byName = [...views].sort((a, b) => (a.name < b.name ? -1 : a.name > b.name ? 1 : 0));
+  return byName.find((v) => !v.test) ?? byName[0] ?? null;
+}
+
+// Opens where a person sees the building: through the first training camera, else the whole city
+// model, else the bounding sphere of the bulk of the Gaussians.
+function frameFirst(cityBox) {
+  const view = firstTrainingView(model.views);
+  if (view) {
+    enterView(view);
+  } else if (cityBox) {
+    const sphere = cityBox.getBoundingSphere(new THREE.Sphere());
+    frameBounds(sphere.center, Math.max(sphere.radius, 1e-3));
+  } else {
+    frameBounds();
+  }
+  state.firstView = view?.name ?? null;
 }
 
 // Smoothly moves the camera to look at a sphere (an object of the answer).
@@ -251,13 +287,26 @@ function setThresholdRange(mode) {
 
 // ---- city model overlay
 
+// Fetched once, at load (its bounds) or by the toggle.
+function loadCityMesh() {
+  cityMeshData ??= api.getCityMesh();
+  return cityMeshData;
+}
+
+function boxOfVertices(data) {
+  const box = new THREE.Box3();
+  const point = new THREE.Vector3();
+  for (let o = 0; o + 2 < data.length; o += 6) box.expandByPoint(point.set(data[o], data[o + 1], data[o + 2]));
+  return box.isEmpty() ? null : box;
+}
+
 async function toggleCityMesh() {
   const button = $("citymesh-toggle");
   const show = button.getAttribute("aria-pressed") !== "true";
   button.setAttribute("aria-pressed", String(show));
   if (show && !cityMesh) {
     try {
-      const data = await api.getCityMesh();
+      const data = await loadCityMesh();
       const buffer = new THREE.InterleavedBuffer(data, 6);
       const geometry = new THREE.BufferGeometry();
       geometry.setAttribute("position", new THREE.InterleavedBufferAttribute(buffer, 3, 0));
@@ -268,12 +317,44 @@ async function toggleCityMesh() {
       cityMesh.renderOrder = 1; // after the splats, so it lies over them
       scene.add(cityMesh);
     } catch (error) {
+      cityMeshData = null; // a later click asks again
       button.setAttribute("aria-pressed", "false");
       showError(error);
       return;
     }
   }
   if (cityMesh) cityMesh.visible = show;
+  invalidate();
+}
+
+// ---- far splats
+
+// The scene's box: the camera centres and the city model where the page has them (the photos were
+// taken around what matters); else, or when they span no volume (one camera), also the server's
+// 1st-99th percentile box of the Gaussians' centres.
+function sceneBoxOf(views, cityBox) {
+  const box = new THREE.Box3();
+  for (const view of views) box.expandByPoint(new THREE.Vector3(...view.center));
+  if (cityBox) box.union(cityBox);
+  const size = box.getSize(new THREE.Vector3());
+  if (box.isEmpty() || Math.min(size.x, size.y, size.z) <= 0) {
+    box.union(new THREE.Box3(new THREE.Vector3(...model.bounds.min), new THREE.Vector3(...model.bounds.max)));
+  }
+  return box;
+}
+
+// Hides the splats whose centres lie outside the scene's box grown by FAR_MARGIN of its diagonal,
+// or shows all; a query's colours stay.
+function applyFarSplats() {
+  const hide = $("farsplats-toggle").getAttribute("aria-pressed") === "true";
+  const keep = hide ? sceneBox.clone().expandByScalar(FAR_MARGIN * sceneBox.min.distanceTo(sceneBox.max)) : null;
+  state.hidden = splats.hideOutside(keep);
+  $("farsplats-toggle").title = hide
+    ? `${state.hidden.toLocaleString()} of ${splats.count.toLocaleString()} splats lie far outside the scene ` +
+      "(its cameras and city model) and are hidden — click to show them"
+    : "Hide the splats far outside the scene (its cameras and city model), e.g. the sky";
+  if (current) applyScores();
+  else splats.clear();
   invalidate();
 }
 
@@ -323,6 +404,10 @@ function wireUi() {
   });
   $("fly-toggle").addEventListener("click", () => setFly(!fly.enabled));
   $("citymesh-toggle").addEventListener("click", toggleCityMesh);
+  $("farsplats-toggle").addEventListener("click", (e) => {
+    e.target.setAttribute("aria-pressed", String(e.target.getAttribute("aria-pressed") !== "true"));
+    if (splats) applyFarSplats();
+  });
   $("photo-toggle").addEventListener("click", (e) => {
     const show = e.target.getAttribute("aria-pressed") !== "true";
     e.target.setAttribute("aria-pressed", String(show));
@@ -393,6 +478,18 @@ async function main() {
   const started = performance.now();
   model = await api.getModel();
   fillControls();
+  // The city model's bounds frame a scene without views and bound the far splats; without them
+  // the page still works.
+  let cityBox = null;
+  if (model.city_mesh) {
+    try {
+      cityBox = boxOfVertices(await loadCityMesh());
+    } catch (error) {
+      cityMeshData = null;
+      console.warn(error);
+    }
+  }
+  sceneBox = sceneBoxOf(model.views, cityBox);
   const radius = sceneRadius();
   camera.near = radius * 1e-3;
   camera.far = radius * 1e3;
@@ -401,16 +498,18 @@ async function main() {
   fly = new FlyMode(camera, renderer.domElement, radius * 0.5);
   frusta = makeFrusta(model.views, radius * 0.08);
   scene.add(frusta);
-  frameBounds();
+  frameFirst(cityBox);
   wireUi();
   layout();
   renderer.setAnimationLoop(frame);
   setStatus(`loading ${model.gaussians.toLocaleString()} Gaussians…`);
   splats = new Splats(await api.getGaussians(model.gaussians));
+  applyFarSplats();
   scene.add(splats.mesh);
   invalidate();
   const seconds = ((performance.now() - started) / 1000).toFixed(1);
-  setStatus(`${model.gaussians.toLocaleString()} Gaussians · ${model.method} · ${model.provider} features · ${seconds} s`);
+  const hidden = state.hidden ? ` (${state.hidden.toLocaleString()} far ones hidden)` : "";
+  setStatus(`${model.gaussians.toLocaleString()} Gaussians${hidden} · ${model.method} · ${model.provider} features · ${seconds} s`);
 }
 
 main().catch((error) => {
