@@ -234,22 +234,23 @@ int main(int argc, char** argv) {
                  "LangSplat mask NMS (fast vs torch vs reference) at 1000x750 and the whole LangSplat AMG on a "
                  "1000x750 image with a randomly initialised SAM. Prints Markdown rows for docs/benchmarks.md.",
                  "");
-  args.option("threads", "2", "CPU threads (OpenMP and LibTorch)")
-      .option("masks", "200,400,600,800,1000", "mask counts for the NMS benchmark (empty: skip)")
-      .option("reference-max", "200", "largest mask count also timed with the slow reference")
-      .option("model", "vit_b", "SAM for the AMG benchmark: vit_b, vit_l, vit_h, or none to skip")
-      .option("points-per-side", "32", "AMG grid (LangSplat: 32)")
-      .option("fixture", "", "SAM fixture folder (config.json, weights.safetensors, test_image.npy, amg/): run its "
-                             "tiny model on its image instead of --model")
-      .option("run", "strict", "with --fixture: the reference run whose parameters to use (strict, relaxed)")
-      .option("device", "cpu", "where SAM runs: cpu or cuda (needs a CUDA build); the NMS benchmark stays on the CPU");
-  int threads = 0;
+  int threads = 2, reference_max = 200, points_per_side = 32;
+  std::string masks = "200,400,600,800,1000", model = "vit_b", fixture, run = "strict", device_name = "cpu";
+  args.bind("threads", threads, "CPU threads (OpenMP and LibTorch)")
+      .bind("masks", masks, "mask counts for the NMS benchmark (empty: skip)")
+      .bind("reference-max", reference_max, "largest mask count also timed with the slow reference")
+      .bind("model", model, "SAM for the AMG benchmark: vit_b, vit_l, vit_h, or none to skip")
+      .bind("points-per-side", points_per_side, "AMG grid (LangSplat: 32)")
+      .bind("fixture", fixture, "SAM fixture folder (config.json, weights.safetensors, test_image.npy, amg/): run its "
+                                "tiny model on its image instead of --model")
+      .bind("run", run, "with --fixture: the reference run whose parameters to use (strict, relaxed)")
+      .bind("device", device_name,
+            "where SAM runs: cpu or cuda (needs a CUDA build); the NMS benchmark stays on the CPU");
   torch::Device device(torch::kCPU);
   try {
     if (!args.parse(argc, argv)) return 0;
-    threads = args.get_int("threads");
     if (threads < 1) throw cls::UsageError("bench_amg: --threads must be positive");
-    device = cls::compute_device(args.get("device"));
+    device = cls::compute_device(device_name);
   } catch (const cls::UsageError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
@@ -257,12 +258,12 @@ int main(int argc, char** argv) {
   omp_set_num_threads(threads);
   at::set_num_threads(threads);
   try {
-    const auto sizes = cls::amg::parse_sizes(args.get("masks"));
-    if (!sizes.empty()) cls::amg::bench_mask_nms(sizes, threads, args.get_int("reference-max"));
-    if (!args.get("fixture").empty())
-      cls::amg::bench_fixture_amg(args.get("fixture"), args.get("run"), threads, device);
-    else if (args.get("model") != "none")
-      cls::amg::bench_amg(args.get("model"), args.get_int("points-per-side"), threads, device);
+    const auto sizes = cls::amg::parse_sizes(masks);
+    if (!sizes.empty()) cls::amg::bench_mask_nms(sizes, threads, reference_max);
+    if (!fixture.empty())
+      cls::amg::bench_fixture_amg(fixture, run, threads, device);
+    else if (model != "none")
+      cls::amg::bench_amg(model, points_per_side, threads, device);
   } catch (const cls::Error& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 1;

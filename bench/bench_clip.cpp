@@ -44,25 +44,25 @@ std::map<std::string, at::Tensor> random_state(const clip::ClipConfig& config) {
 
 int run(int argc, char** argv) {
   Args args("bench_clip", "CLIP crops/s and text encodes/s at real dimensions with random weights", "");
-  args.option("model", "ViT-B-16", "ViT-B-32 | ViT-B-16 | ViT-L-14")
-      .option("threads", "2", "CPU threads (at::set_num_threads)")
-      .option("batch", "32", "crops per image-encoder batch")
-      .option("batches", "3", "timed batches (after one warm-up batch)")
-      .option("texts", "64", "texts per timed text run (batches of --batch)")
-      .option("device", "cpu", "cpu | cuda")
-      .option("dtype", "float32", "float32 | float16 | bfloat16 (half types on CUDA only)");
+  std::string model_name = "ViT-B-16", device = "cpu", dt = "float32";
+  int threads = 2, batch = 32, batches = 3, n_texts = 64;
+  args.bind("model", model_name, "ViT-B-32 | ViT-B-16 | ViT-L-14")
+      .bind("threads", threads, "CPU threads (at::set_num_threads)")
+      .bind("batch", batch, "crops per image-encoder batch")
+      .bind("batches", batches, "timed batches (after one warm-up batch)")
+      .bind("texts", n_texts, "texts per timed text run (batches of --batch)")
+      .bind("device", device, "cpu | cuda")
+      .bind("dtype", dt, "float32 | float16 | bfloat16 (half types on CUDA only)");
   if (!args.parse(argc, argv)) return 0;
-  at::set_num_threads(args.get_int("threads"));
+  at::set_num_threads(threads);
   at::manual_seed(0);
-  const clip::ClipConfig config = clip::clip_preset(args.get("model"), clip::Activation::Gelu);
+  const clip::ClipConfig config = clip::clip_preset(model_name, clip::Activation::Gelu);
   clip::ClipOptions options;
-  options.device = c10::Device(args.get("device"));
-  const std::string dt = args.get("dtype");
+  options.device = c10::Device(device);
   options.dtype = dt == "float16" ? at::kHalf : dt == "bfloat16" ? at::kBFloat16 : at::kFloat;
-  const clip::ClipModel model(config, random_state(config), options, "random " + args.get("model"));
+  const clip::ClipModel model(config, random_state(config), options, "random " + model_name);
 
   // A 1000 x 750 image and `batch` elliptic masks of varied size, as SAM would give.
-  const int batch = args.get_int("batch"), batches = args.get_int("batches");
   cv::Mat rgb(750, 1000, CV_8UC3);
   cv::randu(rgb, 0, 256);
   std::vector<cv::Mat> masks;
@@ -88,7 +88,6 @@ int run(int argc, char** argv) {
 
   // Text: tokenise + encode, `texts` prompts in batches of `batch`.
   const clip::Tokenizer tokenizer;
-  const int n_texts = args.get_int("texts");
   std::vector<std::string> texts;
   for (int i = 0; i < n_texts; ++i) texts.push_back("a photo of building part number " + std::to_string(i));
   auto encode_texts = [&] {
@@ -106,13 +105,13 @@ int run(int argc, char** argv) {
   encode_texts();
   const double twall = seconds_since(tt0), tcpu = cpu_seconds() - tc0;
 
-  std::printf("model %s, device %s, dtype %s, threads %d, batch %d\n", args.get("model").c_str(),
-              args.get("device").c_str(), dt.c_str(), args.get_int("threads"), batch);
+  std::printf("model %s, device %s, dtype %s, threads %d, batch %d\n", model_name.c_str(), device.c_str(), dt.c_str(),
+              threads, batch);
   std::printf("crop preparation only: %.1f crops/s (%d crops of a 1000x750 image, 1 call each)\n", batch / crop_s, batch);
   std::printf("region crops (prepare + encode): %.1f crops/s wall, %.1f per CPU-second x threads (%d crops, %.2f s)\n",
-              crops / wall, crops / cpu * args.get_int("threads"), int(crops), wall);
+              crops / wall, crops / cpu * threads, int(crops), wall);
   std::printf("text encodes (tokenise + encode): %.1f texts/s wall, %.1f per CPU-second x threads (%d texts, %.2f s)\n",
-              n_texts / twall, n_texts / tcpu * args.get_int("threads"), n_texts, twall);
+              n_texts / twall, n_texts / tcpu * threads, n_texts, twall);
   return 0;
 }
 

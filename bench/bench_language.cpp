@@ -175,30 +175,30 @@ Timing bench_training(const SceneSpec& spec, int channels, const std::string& lo
 
 int bench_main(int argc, char** argv) {
   Args args("bench_language", "Language-field training ms/iteration and 1080p relevance-map FPS (CPU or CUDA)", "");
-  args.option("threads", "2", "OpenMP / ATen threads")
-      .option("channels", "128", "latent channels")
-      .option("train-scenes", "200000@800x600,50000@480x360", "training scenes, N@WxH comma-separated")
-      .option("loss", "l1", "training losses to time, comma-separated: l1, seg (train-language's), dense")
-      .option("query-scene", "200000@1920x1080", "the relevance-map scene, N@WxH (empty: none)")
-      .option("chunk", "65536", "pixels decoded per autoencoder call")
-      .option("matmul-precision", "highest", "float32 product precisions to time the decode with, comma-separated "
-              "(highest, high: TF32 on CUDA, medium)")
-      .option("repeats", "3", "timed repeats (after one warm-up); the median is reported")
-      .option("device", "cpu", "cpu or cuda (needs a CUDA build)");
+  int threads = 2, channels = 128, chunk_pixels = 65536, repeats = 3;
+  std::string train_scene_text = "200000@800x600,50000@480x360", query_scene_text = "200000@1920x1080";
+  std::string device_name = "cpu";
+  std::vector<std::string> losses = {"l1"}, precisions = {"highest"};
+  args.bind("threads", threads, "OpenMP / ATen threads")
+      .bind("channels", channels, "latent channels")
+      .bind("train-scenes", train_scene_text, "training scenes, N@WxH comma-separated")
+      .bind("loss", losses, "training losses to time, comma-separated: l1, seg (train-language's), dense")
+      .bind("query-scene", query_scene_text, "the relevance-map scene, N@WxH (empty: none)")
+      .bind("chunk", chunk_pixels, "pixels decoded per autoencoder call")
+      .bind("matmul-precision", precisions, "float32 product precisions to time the decode with, comma-separated "
+                                            "(highest, high: TF32 on CUDA, medium)")
+      .bind("repeats", repeats, "timed repeats (after one warm-up); the median is reported")
+      .bind("device", device_name, "cpu or cuda (needs a CUDA build)");
   if (!args.parse(argc, argv)) return 0;
-  const at::Device device = compute_device(args.get("device"));
-  const int threads = args.get_int("threads");
+  const at::Device device = compute_device(device_name);
   omp_set_num_threads(threads);
   at::set_num_threads(threads);
-  const int channels = args.get_int("channels");
-  const int repeats = std::max(1, args.get_int("repeats"));
-  const std::vector<SceneSpec> train_scenes = parse_scenes(args.get("train-scenes"));
-  const std::vector<SceneSpec> query_scenes = parse_scenes(args.get("query-scene"));  // checked before the timing
-  const std::vector<std::string> losses = split_commas(args.get("loss"));
+  repeats = std::max(1, repeats);
+  const std::vector<SceneSpec> train_scenes = parse_scenes(train_scene_text);
+  const std::vector<SceneSpec> query_scenes = parse_scenes(query_scene_text);  // checked before the timing
   for (const std::string& l : losses)
     if (l != "l1" && l != "seg" && l != "dense")
       throw UsageError("bench_language: --loss takes l1, seg or dense, got '" + l + "'");
-  const std::vector<std::string> precisions = split_commas(args.get("matmul-precision"));
   for (const std::string& p : precisions)
     if (p != "highest" && p != "high" && p != "medium")
       throw UsageError("bench_language: --matmul-precision takes highest, high or medium, got '" + p + "'");
@@ -228,7 +228,7 @@ int bench_main(int argc, char** argv) {
   latents = (latents / latents.norm(2, {1}, true)).to(device);
   at::Tensor query = at::randn({config.input_dim}, gen);
   query = (query / query.norm()).to(device);
-  const int64_t chunk = std::max(1, args.get_int("chunk"));
+  const int64_t chunk = std::max(1, chunk_pixels);
   at::Tensor rendered, relevance;
   const Timing render = time_it(repeats, device, [&] {
     at::NoGradGuard no_grad;

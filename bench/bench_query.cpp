@@ -59,22 +59,24 @@ GaussianModel make_model(int n, int latent) {
 
 int bench_main(int argc, char** argv) {
   Args args("bench_query", "relevance maps per second (render latents + decode + cosine/relevancy), CPU or CUDA", "");
-  args.option("threads", "2", "threads (OpenMP rasterizer and LibTorch)")
-      .option("gaussians", "200000", "number of Gaussians")
-      .option("iters", "2", "timed views per size (after one warm-up)")
-      .option("sizes", "480x360,1920x1080", "view sizes WxH, comma-separated")
-      .option("chunk", "0", "pixels decoded per decoder call (0: the device's, " + std::to_string(kDecodeChunkPixels) +
-              " on the CPU, " + std::to_string(kDecodeChunkPixelsGpu) + " on a GPU)")
-      .option("device", "cpu", "cpu or cuda (needs a CUDA build)");
+  int threads = 2, gaussians = 200000, iters = 2;
+  int64_t chunk = 0;
+  std::string sizes_text = "480x360,1920x1080", device_name = "cpu";
+  args.bind("threads", threads, "threads (OpenMP rasterizer and LibTorch)")
+      .bind("gaussians", gaussians, "number of Gaussians")
+      .bind("iters", iters, "timed views per size (after one warm-up)")
+      .bind("sizes", sizes_text, "view sizes WxH, comma-separated")
+      .bind("chunk", chunk, "pixels decoded per decoder call (0: the device's, " + std::to_string(kDecodeChunkPixels) +
+                                " on the CPU, " + std::to_string(kDecodeChunkPixelsGpu) + " on a GPU)")
+      .bind("device", device_name, "cpu or cuda (needs a CUDA build)");
   if (!args.parse(argc, argv)) return 0;
-  const int threads = args.get_int("threads");
   omp_set_num_threads(threads);
   at::set_num_threads(threads);
   torch::NoGradGuard no_grad;
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
   const int latent = 128;
-  const at::Device device = compute_device(args.get("device"));
-  GaussianModel g = make_model(args.get_int("gaussians"), latent);
+  const at::Device device = compute_device(device_name);
+  GaussianModel g = make_model(gaussians, latent);
   for (at::Tensor* t : {&g.means, &g.log_scales, &g.quats, &g.opacity_logits}) *t = t->to(device);
   torch::manual_seed(1);
   const at::Tensor latents = torch::rand({g.size(), latent}).to(device);
@@ -85,19 +87,17 @@ int bench_main(int argc, char** argv) {
   const auto sync = [&] {
     if (device.is_cuda()) torch::cuda::synchronize();
   };
-  const int64_t chunk = args.get_int("chunk");
   std::printf("%lld Gaussians, latent %d, decoder %d -> 256 -> 512, 1 text + 4 canonical phrases, %d threads, %s, "
               "chunks of %lld pixels\n",
               static_cast<long long>(g.size()), latent, latent, threads, device.str().c_str(),
               static_cast<long long>(chunk > 0 ? chunk : decode_chunk_pixels(device)));
 
-  std::stringstream sizes(args.get("sizes"));
+  std::stringstream sizes(sizes_text);
   for (std::string size; std::getline(sizes, size, ',');) {
     int W = 0, H = 0;
     if (std::sscanf(size.c_str(), "%dx%d", &W, &H) != 2 || W <= 0 || H <= 0) throw UsageError("--sizes: bad size " + size);
     PinholeCamera cam{0.8 * W, 0.8 * W, 0.5 * W, 0.5 * H, W, H};
     Pose pose;  // identity: the Gaussians were placed in this camera's frustum
-    const int iters = args.get_int("iters");
     double render_s = 0, total_s = 0, map_cpu = 0;
     for (int it = -1; it < iters; ++it) {
       const auto t0 = Clock::now();

@@ -119,12 +119,10 @@ int main(int argc, char** argv) {
                  "the 100 LoD2 buildings and the citygml4j LoD3 building, and the parse time of the largest "
                  "sample file. Prints Markdown rows for docs/benchmarks.md.",
                  "");
-  args.option("threads", "2", "OpenMP threads").option("repeats", "5", "repeats of the 4 views");
-  int threads = 0, repeats = 0;
+  int threads = 2, repeats = 5;
+  args.bind("threads", threads, "OpenMP threads").bind("repeats", repeats, "repeats of the 4 views");
   try {
     if (!args.parse(argc, argv)) return 0;
-    threads = args.get_int("threads");
-    repeats = args.get_int("repeats");
     if (threads < 1 || repeats < 1) throw cls::UsageError("bench_raycast: --threads and --repeats must be positive");
   } catch (const cls::UsageError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

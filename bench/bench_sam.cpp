@@ -36,24 +36,24 @@ std::vector<uint8_t> synthetic_image(int h, int w) {
 
 int run(int argc, char** argv) {
   Args args("bench_sam", "SAM image encoder time per 1000x750 image (random weights)", "");
-  args.option("models", "vit_b,vit_h", "comma-separated architectures (vit_b, vit_l, vit_h)")
-      .option("threads", "2", "LibTorch intra-op threads")
-      .option("repeats", "3", "timed runs per model (after one warm-up run)")
-      .option("repeats-h", "1", "timed runs for vit_h (slow on few cores)")
-      .option("width", "1000", "image width")
-      .option("height", "750", "image height");
+  std::string model_names = "vit_b,vit_h";
+  int threads = 2, repeats_default = 3, repeats_h = 1, w = 1000, h = 750;
+  args.bind("models", model_names, "comma-separated architectures (vit_b, vit_l, vit_h)")
+      .bind("threads", threads, "LibTorch intra-op threads")
+      .bind("repeats", repeats_default, "timed runs per model (after one warm-up run)")
+      .bind("repeats-h", repeats_h, "timed runs for vit_h (slow on few cores)")
+      .bind("width", w, "image width")
+      .bind("height", h, "image height");
   if (!args.parse(argc, argv)) return 0;
-  const int threads = args.get_int("threads");
   torch::set_num_threads(threads);
-  const int w = args.get_int("width"), h = args.get_int("height");
   const auto image = synthetic_image(h, w);
   std::printf("image %dx%d -> 1024 longest side, %d threads\n", w, h, threads);
   std::printf("%-6s %10s %8s %12s %12s %14s\n", "model", "params(M)", "runs", "build (s)", "s/image", "CPU-norm s/img");
-  std::stringstream models(args.get("models"));
+  std::stringstream models(model_names);
   std::string name;
   while (std::getline(models, name, ',')) {
     const auto cfg = sam::sam_config_by_name(name);
-    const int repeats = name == "vit_h" ? args.get_int("repeats-h") : args.get_int("repeats");
+    const int repeats = name == "vit_h" ? repeats_h : repeats_default;
     auto t0 = Clock::now();
     sam::SamPredictor predictor{sam::Sam(cfg)};
     const double build = seconds_since(t0);

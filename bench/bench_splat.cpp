@@ -164,22 +164,23 @@ Timing run_autograd(const Scene& s, bool use_sh, int channels, int iters, const 
 
 int bench_main(int argc, char** argv) {
   Args args("bench_splat", "Gaussian rasterizer forward/backward time (CPU kernels or CUDA)", "");
-  args.option("threads", "2", "OpenMP threads")
-      .option("gaussians", "200000", "number of Gaussians")
-      .option("width", "800", "image width")
-      .option("height", "600", "image height")
-      .option("channels", "128", "feature channels of the second run")
-      .option("iters", "5", "timed iterations per configuration (after one warm-up)")
-      .option("device", "cpu", "cpu (the kernels directly) or cuda (autograd functions; needs a CUDA build)");
+  int threads = 2, gaussians = 200000, width = 800, height = 600, channels = 128, iters = 5;
+  std::string device_name = "cpu";
+  args.bind("threads", threads, "OpenMP threads")
+      .bind("gaussians", gaussians, "number of Gaussians")
+      .bind("width", width, "image width")
+      .bind("height", height, "image height")
+      .bind("channels", channels, "feature channels of the second run")
+      .bind("iters", iters, "timed iterations per configuration (after one warm-up)")
+      .bind("device", device_name, "cpu (the kernels directly) or cuda (autograd functions; needs a CUDA build)");
   if (!args.parse(argc, argv)) return 0;
-  const at::Device device = compute_device(args.get("device"));
-  omp_set_num_threads(args.get_int("threads"));
-  const int channels = args.get_int("channels");
-  const Scene s = make_scene(args.get_int("gaussians"), args.get_int("width"), args.get_int("height"), channels);
+  const at::Device device = compute_device(device_name);
+  omp_set_num_threads(threads);
+  const Scene s = make_scene(gaussians, width, height, channels);
   std::printf("scene: %d Gaussians, %dx%d, %s, %d threads\n", s.n, s.cam.width, s.cam.height, device.str().c_str(),
-              args.get_int("threads"));
+              threads);
   if (device.is_cuda()) {
-    const Timing t = run_autograd(s, true, 3, args.get_int("iters"), device, true);
+    const Timing t = run_autograd(s, true, 3, iters, device, true);
     std::printf("%-14s forward+loss %8.2f ms  backward %8.2f ms  iteration %8.2f ms\n", "RGB L1+D-SSIM", t.forward_ms,
                 t.backward_ms, t.forward_ms + t.backward_ms);
   }
@@ -187,12 +188,12 @@ int bench_main(int argc, char** argv) {
     const bool use_sh = pass == 0;
     const std::string what = use_sh ? "RGB (SH deg 3)" : std::to_string(channels) + " channels";
     if (device.is_cuda()) {
-      const Timing t = run_autograd(s, use_sh, channels, args.get_int("iters"), device, false);
+      const Timing t = run_autograd(s, use_sh, channels, iters, device, false);
       std::printf("%-14s forward %8.2f ms  backward %8.2f ms  forward+backward %8.2f ms  max |image - CPU| %.2e\n",
                   what.c_str(), t.forward_ms, t.backward_ms, t.forward_ms + t.backward_ms, t.max_image_diff);
       continue;
     }
-    const Timing t = run(s, use_sh, channels, args.get_int("iters"));
+    const Timing t = run(s, use_sh, channels, iters);
     std::printf("%-14s forward %8.2f ms  backward %8.2f ms  forward+backward %8.2f ms  CPU %8.1f ms  "
                 "(%.0f tile instances)\n",
                 what.c_str(), t.forward_ms, t.backward_ms, t.forward_ms + t.backward_ms, t.cpu_ms, t.instances);

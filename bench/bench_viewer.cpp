@@ -63,15 +63,13 @@ struct Stats {
 
 int bench_main(int argc, char** argv) {
   Args args("bench_viewer", "latency of a viewer text query over N Gaussians (in process and over HTTP)", "");
-  args.option("threads", "2", "threads (LibTorch)")
-      .option("gaussians", "1000000", "number of Gaussians")
-      .option("objects", "20000", "city objects the Gaussians belong to")
-      .option("queries", "10", "distinct query texts (each timed cold, i.e. with its text encoding, and warm)");
+  int threads = 2, objects = 20000, queries = 10;
+  int64_t n = 1000000;
+  args.bind("threads", threads, "threads (LibTorch)")
+      .bind("gaussians", n, "number of Gaussians")
+      .bind("objects", objects, "city objects the Gaussians belong to")
+      .bind("queries", queries, "distinct query texts (each timed cold, i.e. with its text encoding, and warm)");
   if (!args.parse(argc, argv)) return 0;
-  const int threads = static_cast<int>(args.get_int("threads"));
-  const int64_t n = args.get_int("gaussians");
-  const int objects = static_cast<int>(args.get_int("objects"));
-  const int queries = static_cast<int>(args.get_int("queries"));
   omp_set_num_threads(threads);
   at::set_num_threads(threads);
 

@@ -121,8 +121,8 @@ for b in $buildings; do
       elif [ "$photos" = "$v" ] && [ "$e" = 0 ]; then  # other photos: their own baseline
         run "$scene" "$work/$b/run-$prefix$e-off" --align off --baseline langsplat
       else
-        run "$scene" "$work/$b/run-$prefix$e-off" --align off --no-baseline
-        [ "$e" = 0 ] || run "$scene" "$work/$b/run-$prefix$e-align" --align auto --no-baseline
+        run "$scene" "$work/$b/run-$prefix$e-off" --align off --baseline none
+        [ "$e" = 0 ] || run "$scene" "$work/$b/run-$prefix$e-align" --align auto --baseline none
       fi
     done
   done

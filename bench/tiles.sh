@@ -42,7 +42,7 @@ scale=$(python3 -c "import json,sys; t=json.load(open(sys.argv[1]))['tiles']; pr
   "$work/tiles/tiles.json")
 untiled_rgb=$(python3 -c "print(round($rgb * $scale))")
 untiled_language=$(python3 -c "print(round($language * $scale))")
-common=(--models synthetic --autoencoder-epochs 20 --no-baseline)
+common=(--models synthetic --autoencoder-epochs 20 --baseline none)
 
 start=$SECONDS
 if [ "$executor" = slurm ]; then

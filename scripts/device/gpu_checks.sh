@@ -5,7 +5,7 @@
 # Steps: splat_tests (the CUDA rasterizer against the CPU path), query_tests (relevance cosines on CUDA
 # against the CPU path), language_tests (the language loss's CUDA kernel against its reference),
 # models_tests (CLIP/SAM fixture parity on CUDA), bench_* (rasterizer, CLIP, language field, relevance
-# maps, SAM AMG on the GPU), run (`run --models tiny` on the bundled example), query_gpu (after run:
+# maps, SAM AMG on the GPU), run (`run --models clip-tiny` on the bundled example), query_gpu (after run:
 # `query --device cuda` on its model against run's CPU query, scripts/device/compare_query.py), train_rgb
 # (densification, the cap and resuming on the GPU), suite (every test program carried, 16 at a time, one
 # OpenMP thread each), profile_splat / profile_language (every kernel's duration under Nsight Compute: one
@@ -106,7 +106,7 @@ for s in "${steps[@]}"; do
       step "$s" 90 "$B/bench/bench_amg" --device cuda --masks '' --fixture "$ROOT/tests/fixtures/sam" --threads 16 ;;
     run)
       make_example
-      step run_tiny 300 "$B/citylangsplat" run /tmp/example --models tiny
+      step run_tiny 300 "$B/citylangsplat" run /tmp/example --models clip-tiny
       cat /tmp/example/citylangsplat/run.json >> "$LOG" 2>&1 ;;
     query_gpu)  # `query --device cuda` on the run step's model, against the query that run made on the CPU
       Q=/tmp/example/citylangsplat/query/citylangsplat

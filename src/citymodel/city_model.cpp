@@ -28,10 +28,20 @@ std::string file_head(const std::string& path, size_t bytes) {
 
 }  // namespace
 
-int parse_lod_option(const std::string& text) {
-  if (text == "highest" || text == "0") return 0;
-  if (text == "1" || text == "2" || text == "3") return text[0] - '0';
-  throw UsageError("--lod must be 1, 2, 3 or highest, got '" + text + "'");
+Codec<int> lod_codec() {
+  Codec<int> c = default_codec<int>();
+  c.text = [](const int& lod) { return lod == 0 ? std::string("highest") : std::to_string(lod); };
+  c.parse = [](const std::string& text) {
+    if (text == "highest" || text == "0") return 0;
+    if (text == "1" || text == "2" || text == "3") return text[0] - '0';
+    throw std::invalid_argument("must be 1, 2, 3 or highest, not '" + text + "'");
+  };
+  c.from_json = [](const nlohmann::json& j) {
+    const int lod = j.get<int>();
+    if (lod < 0 || lod > 3) throw std::invalid_argument("must be 1, 2, 3 or 0 (highest), not " + j.dump());
+    return lod;
+  };
+  return c;
 }
 
 Taxonomy load_taxonomy(const CityModelOptions& options) {

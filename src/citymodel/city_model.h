@@ -5,6 +5,7 @@
 
 #include "citymodel/semantic_mesh.h"
 #include "citymodel/taxonomy.h"
+#include "core/option_codec.h"
 
 namespace cls {
 
@@ -14,8 +15,9 @@ struct CityModelOptions {
   std::string taxonomy_path;  // "" = the built-in taxonomy
 };
 
-// "1", "2", "3", "highest" (or "0") -> the LoD number; cls::UsageError otherwise.
-int parse_lod_option(const std::string& text);
+// --lod as an option: "1", "2", "3", "highest" (or "0") <-> the LoD number (0 = the highest available);
+// in JSON the number.
+Codec<int> lod_codec();
 // The user's taxonomy file, or the built-in one.
 Taxonomy load_taxonomy(const CityModelOptions& options);
 

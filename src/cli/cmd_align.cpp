@@ -1,6 +1,7 @@
 // citylangsplat align: refine the city-to-scene similarity from the scene's own geometry (ICP).
 #include <ATen/ATen.h>
 
+#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -58,52 +59,49 @@ int cmd_align(int argc, char** argv) {
             "rigid first, then (unless --rigid) with the scale from 4x --finest down. Prints the point-to-mesh "
             "distances before and after and the change applied; writes the refined transform to --out. See "
             "docs/alignment.md for the capture range.");
-  args.option("scene", "", "scene directory (COLMAP or Pix4D; required)");
-  add_city_mesh_options(args);
-  args.option("out", "", "where to write the refined transform JSON (required)")
-      .option("gaussians", "", "also fit the centres of this 3DGS PLY's Gaussians (train-rgb's point_cloud.ply)")
-      .option("min-opacity", "0.5", "with --gaussians: only Gaussians at least this opaque")
-      .flag("rigid", "keep the scale (6 DoF: rotation and translation only)")
-      .option("capture", "2", "first pairing gate in metres of the city model: how far off the start may be")
-      .option("finest", "0.1", "last pairing gate in metres (the gates halve from --capture down to it)")
-      .option("iterations", "50", "at most this many iterations per gate")
-      .option("distance", "0.5", "threshold of the printed share of points near the mesh, in metres", "d")
-      .option("truth", "", "a known true transform (e.g. synth --city-error's city/transform_true.json): print "
-                           "how far the given and the refined transforms are from it")
-      .flag("json", "print exactly one JSON object on stdout");
-  if (!args.parse(argc, argv)) return 0;
-  if (!args.has("scene")) throw UsageError("align: --scene is required (see --help)");
-  if (!args.has("out")) throw UsageError("align: --out is required (see --help)");
+  std::string scene_dir, out, gaussians, truth_path;
+  CityMeshOptions city_options;
   IcpOptions icp;
-  icp.rigid = args.flag_set("rigid");
-  icp.capture = args.get_double("capture");
-  icp.finest = args.get_double("finest");
-  icp.max_iterations = args.get_int("iterations");
+  double min_opacity = 0.5, threshold = 0.5;
+  bool json = false;
+  args.bind("scene", scene_dir, "scene directory (COLMAP or Pix4D)").required();
+  city_options.bind(args)
+      .bind("out", out, "where to write the refined transform JSON")
+      .required()
+      .bind("gaussians", gaussians, "also fit the centres of this 3DGS PLY's Gaussians (train-rgb's point_cloud.ply)")
+      .bind("min-opacity", min_opacity, "with --gaussians: only Gaussians at least this opaque")
+      .flag("rigid", icp.rigid, "keep the scale (6 DoF: rotation and translation only)")
+      .bind("capture", icp.capture, "first pairing gate in metres of the city model: how far off the start may be")
+      .bind("finest", icp.finest, "last pairing gate in metres (the gates halve from --capture down to it)")
+      .bind("iterations", icp.max_iterations, "at most this many iterations per gate")
+      .bind("distance", threshold, "threshold of the printed share of points near the mesh, in metres")
+      .short_name("d")
+      .bind("truth", truth_path, "a known true transform (e.g. synth --city-error's city/transform_true.json): print "
+                                 "how far the given and the refined transforms are from it")
+      .flag("json", json, "print exactly one JSON object on stdout");
+  if (!args.parse(argc, argv)) return 0;
   const std::string problem = icp_options_problem(icp);
   if (!problem.empty()) throw UsageError("align: " + problem + " (--capture, --finest, --iterations)");
-  const double threshold = args.get_double("distance");
   if (!(threshold >= 0) || !std::isfinite(threshold)) throw UsageError("align: --distance must be a non-negative number");
-  const double min_opacity = args.get_double("min-opacity");
   if (!(min_opacity >= 0 && min_opacity <= 1)) throw UsageError("align: --min-opacity must be in [0, 1]");
-  const CityMeshOptions city_options = city_mesh_options(args, "align");
 
-  const Scene scene = load_scene_without_images(args.get("scene"));
+  const Scene scene = load_scene_without_images(scene_dir);
   std::vector<Vec3d> points = sparse_points(scene);
   const size_t sparse = points.size();
-  if (args.has("gaussians")) {
-    const auto centres = gaussian_centres(args.get("gaussians"), min_opacity);
+  if (!gaussians.empty()) {
+    const auto centres = gaussian_centres(gaussians, min_opacity);
     points.insert(points.end(), centres.begin(), centres.end());
   }
   const SceneCityModel city = load_city_mesh_inputs(city_options, "align");
-  const bool has_truth = args.has("truth");
-  const CityTransform truth = has_truth ? read_city_transform(args.get("truth")) : CityTransform{};
+  const bool has_truth = !truth_path.empty();
+  const CityTransform truth = has_truth ? read_city_transform(truth_path) : CityTransform{};
 
   const AlignmentRefinement r = refine_alignment(points, city, icp, threshold);
-  write_city_transform(args.get("out"), r.refined);
+  write_city_transform(out, r.refined);
   const TransformDifference change = transform_difference(r.refined, city.transform, city.mesh);
   const double unit = city.transform.scale();  // scene units per metre of the city model
 
-  if (args.flag_set("json")) {
+  if (json) {
     nlohmann::json stages = nlohmann::json::array();
     for (const auto& s : r.icp.stages)
       stages.push_back({{"gate", s.gate / unit}, {"scale", s.scale}, {"iterations", s.iterations}, {"pairs", s.pairs},
@@ -112,7 +110,7 @@ int cmd_align(int argc, char** argv) {
                         {"rigid", icp.rigid},          {"threshold", threshold},
                         {"before", stats_json(r.before)}, {"after", stats_json(r.after)},
                         {"stages", stages},            {"conditioning", r.icp.conditioning},
-                        {"change", difference_json(change)}, {"out", args.get("out")}};
+                        {"change", difference_json(change)}, {"out", out}};
     if (has_truth)
       j["error_to_truth"] = {{"before", difference_json(transform_difference(city.transform, truth, city.mesh))},
                              {"after", difference_json(transform_difference(r.refined, truth, city.mesh))}};
@@ -134,7 +132,7 @@ int cmd_align(int argc, char** argv) {
       std::printf("error to truth     before: %s\n", describe(transform_difference(city.transform, truth, city.mesh)).c_str());
       std::printf("                   after:  %s\n", describe(transform_difference(r.refined, truth, city.mesh)).c_str());
     }
-    std::printf("wrote %s\n", args.get("out").c_str());
+    std::printf("wrote %s\n", out.c_str());
   }
   if (r.icp.conditioning < kIcpWeakConditioning)
     log_warn(cat("align: the paired surfaces leave part of the motion unconstrained (conditioning ",

@@ -1,4 +1,5 @@
 // citylangsplat align-check: how well a scene's sparse points lie on the city mesh.
+#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -21,28 +22,29 @@ int cmd_align_check(int argc, char** argv) {
             "city model's units (metres): the share within -d, median and mean. A low share means the "
             "model and the scene are misaligned (check --city-transform) before any training. Exits with status "
             "5 when the share is below --min-fraction, so a script can stop before training.");
-  args.option("scene", "", "scene directory (COLMAP or Pix4D; required)");
-  add_city_mesh_options(args);
-  args.option("distance", "0.5", "threshold in metres of the city model", "d")
-      .option("min-fraction", cat(kMisalignedFraction),
-              "the least share of sparse points within --distance for the scene to count as aligned (else exit 5)")
-      .flag("json", "print exactly one JSON object on stdout");
+  std::string scene_dir;
+  CityMeshOptions city_options;
+  double threshold = 0.5, min_fraction = kMisalignedFraction;
+  bool json = false;
+  args.bind("scene", scene_dir, "scene directory (COLMAP or Pix4D)").required();
+  city_options.bind(args)
+      .bind("distance", threshold, "threshold in metres of the city model")
+      .short_name("d")
+      .bind("min-fraction", min_fraction,
+            "the least share of sparse points within --distance for the scene to count as aligned (else exit 5)")
+      .flag("json", json, "print exactly one JSON object on stdout");
   if (!args.parse(argc, argv)) return 0;
-  if (!args.has("scene")) throw UsageError("align-check: --scene is required (see --help)");
-  const double threshold = args.get_double("distance");
   if (!(threshold >= 0) || !std::isfinite(threshold))
     throw UsageError("align-check: --distance must be a non-negative number");
-  const double min_fraction = args.get_double("min-fraction");
   if (!(min_fraction >= 0 && min_fraction <= 1)) throw UsageError("align-check: --min-fraction must be in [0, 1]");
-  const CityMeshOptions city_options = city_mesh_options(args, "align-check");
 
-  const Scene scene = load_scene_without_images(args.get("scene"));
+  const Scene scene = load_scene_without_images(scene_dir);
   const SceneCityModel city = load_city_mesh_inputs(city_options, "align-check");
 
   const AlignmentStats s = check_alignment(scene, city, threshold);
   const bool aligned = s.fraction_within >= min_fraction;
 
-  if (args.flag_set("json")) {
+  if (json) {
     const nlohmann::json j = {{"points", s.points},       {"triangles", city.mesh.num_triangles()},
                               {"threshold", s.threshold}, {"fraction_within", s.fraction_within},
                               {"median", s.median},       {"mean", s.mean},

@@ -21,30 +21,28 @@ const char* const kUsage =
     "'citylangsplat citymodel <stats|export> --help' shows the options and defaults.\n";
 
 // Options every subcommand shares: the model, its LoD and the taxonomy.
-void add_model_options(Args& args) {
-  args.positional("FILE", "CityGML (.gml/.xml), CityJSON (.json) or CityJSONSeq (.jsonl) file")
-      .option("lod", "highest", "level of detail: 1, 2, 3 or highest")
-      .option("taxonomy", "", "taxonomy JSON (source types -> classes); the built-in one if not given");
-}
+struct ModelOptions {
+  std::string file;
+  CityModelOptions model;
 
-CityModelOptions model_options(const Args& args) {
-  CityModelOptions o;
-  o.lod = parse_lod_option(args.get("lod"));
-  o.taxonomy_path = args.get("taxonomy");
-  return o;
-}
+  Args& bind(Args& args) {
+    return args.positional("FILE", file, "CityGML (.gml/.xml), CityJSON (.json) or CityJSONSeq (.jsonl) file")
+        .bind("lod", model.lod, "level of detail: 1, 2, 3 or highest", lod_codec())
+        .bind("taxonomy", model.taxonomy_path, "taxonomy JSON (source types -> classes); the built-in one if not given");
+  }
+};
 
 int run_stats(int argc, char** argv) {
   Args args("citymodel stats", "Print the semantic classes of a city model with triangle counts, areas "
                                "(square source units) and object counts.");
-  add_model_options(args);
-  args.flag("json", "print exactly one JSON object on stdout instead of a table");
+  ModelOptions options;
+  bool json = false;
+  options.bind(args).flag("json", json, "print exactly one JSON object on stdout instead of a table");
   if (!args.parse(argc, argv)) return 0;
-  const CityModelOptions options = model_options(args);
-  const Taxonomy taxonomy = load_taxonomy(options);
-  const SemanticMesh mesh = load_city_model(args.get("FILE"), taxonomy, options.lod);
+  const Taxonomy taxonomy = load_taxonomy(options.model);
+  const SemanticMesh mesh = load_city_model(options.file, taxonomy, options.model.lod);
   const MeshStats stats = compute_mesh_stats(mesh, taxonomy);
-  const std::string text = args.flag_set("json") ? mesh_stats_json(stats) + "\n" : mesh_stats_table(stats);
+  const std::string text = json ? mesh_stats_json(stats) + "\n" : mesh_stats_table(stats);
   std::fwrite(text.data(), 1, text.size(), stdout);
   return 0;
 }
@@ -52,19 +50,20 @@ int run_stats(int argc, char** argv) {
 int run_export(int argc, char** argv) {
   Args args("citymodel export", "Write the semantic mesh as a binary little-endian PLY: float vertices, "
                                 "faces with RGB of their level-1 class, class ids per level and building index.");
-  add_model_options(args);
-  args.option("out", "", "output PLY file (required)")
-      .option("city-transform", "", "JSON similarity from the model's CRS into the scene frame; "
-                                    "without it vertices are local (source minus the origin in the header)");
+  ModelOptions options;
+  std::string out, transform_path;
+  options.bind(args)
+      .bind("out", out, "output PLY file")
+      .required()
+      .bind("city-transform", transform_path, "JSON similarity from the model's CRS into the scene frame; "
+                                              "without it vertices are local (source minus the origin in the header)");
   if (!args.parse(argc, argv)) return 0;
-  if (!args.has("out")) throw UsageError("citymodel export: --out is required (see --help)");
-  const CityModelOptions options = model_options(args);
-  const Taxonomy taxonomy = load_taxonomy(options);
+  const Taxonomy taxonomy = load_taxonomy(options.model);
   // Everything is read and validated before anything is written.
   CityTransform transform;
-  if (args.has("city-transform")) transform = read_city_transform(args.get("city-transform"));
-  const SemanticMesh mesh = load_city_model(args.get("FILE"), taxonomy, options.lod);
-  write_mesh_ply(args.get("out"), mesh, taxonomy, args.has("city-transform") ? &transform : nullptr);
+  if (!transform_path.empty()) transform = read_city_transform(transform_path);
+  const SemanticMesh mesh = load_city_model(options.file, taxonomy, options.model.lod);
+  write_mesh_ply(out, mesh, taxonomy, transform_path.empty() ? nullptr : &transform);
   return 0;
 }
 

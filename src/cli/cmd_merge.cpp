@@ -6,6 +6,7 @@
 #include "core/args.h"
 #include "core/error.h"
 #include "core/exit_codes.h"
+#include "core/run_layout.h"
 #include "tiles/tile_merge.h"
 
 namespace cls {
@@ -16,15 +17,17 @@ int cmd_merge(int argc, char** argv) {
             "Merge the language fields of every tile into one model in the district's frame: each tile keeps the "
             "Gaussians whose centre lies in its own cell of the partition (no duplicates at the seams). Writes "
             "OUT/language/<method>/ (open it with query, evaluate, render or view) and OUT/merge.json.");
-  args.positional("TILES", "tiles directory whose run-tiles finished").option("out", "", "output directory (required)");
+  fs::path tiles, out;
+  args.positional("TILES", tiles, "tiles directory whose run-tiles finished")
+      .bind("out", out, "output directory")
+      .required();
   if (!args.parse(argc, argv)) return kExitOk;
-  if (!args.has("out")) throw UsageError("merge: --out is required");
-  const nlohmann::json r = merge_tiles(args.get("TILES"), args.get("out"));
+  const nlohmann::json r = merge_tiles(tiles, out);
   for (const auto& [method, m] : r["methods"].items())
     std::printf("%s: %lld Gaussians from %zu tiles, %lld in another tile's cell (a plain union: %lld): %s\n",
                 method.c_str(), m["gaussians"].get<long long>(), m["tiles"].size(),
                 m["in_another_tiles_cell"].get<long long>(), m["naive_union_in_another_tiles_cell"].get<long long>(),
-                (fs::path(args.get("out")) / "language" / method).string().c_str());
+                RunLayout(out).language(method).string().c_str());
   return kExitOk;
 }
 

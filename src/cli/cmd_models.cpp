@@ -35,10 +35,12 @@ std::string names_text() {
 
 int models_list(int argc, char** argv) {
   Args args("models list", "Show the known model files, their sources and checksums, and which are present.");
-  args.option("models-dir", "", "directory searched first (then $CITYLANGSPLAT_MODELS, then the XDG cache)")
-      .flag("json", "print one JSON object instead of text");
+  std::string models_dir;
+  bool json = false;
+  args.bind("models-dir", models_dir, "directory searched first (then $CITYLANGSPLAT_MODELS, then the XDG cache)")
+      .flag("json", json, "print one JSON object instead of text");
   if (!args.parse(argc, argv)) return 0;
-  const auto dirs = model_search_dirs(args.get("models-dir"));
+  const auto dirs = model_search_dirs(models_dir);
   nlohmann::json out = {{"search_dirs", nlohmann::json::array()}, {"models", nlohmann::json::array()}};
   for (const auto& d : dirs) out["search_dirs"].push_back(d.string());
   for (const KnownModel& m : known_models()) {
@@ -54,7 +56,7 @@ int models_list(int argc, char** argv) {
                              {"path", found ? found->string() : ""},
                              {"description", m.description}});
   }
-  if (args.flag_set("json")) {
+  if (json) {
     std::printf("%s\n", out.dump().c_str());
     return 0;
   }
@@ -75,15 +77,18 @@ int models_list(int argc, char** argv) {
 
 int models_download(int argc, char** argv) {
   Args args("models download", "Download known model files into the model cache, resuming and verifying checksums.");
-  args.positional("NAME", "model names (see 'citylangsplat models list')", true, true)
-      .option("models-dir", "", "download into this directory (default: $CITYLANGSPLAT_MODELS, else the XDG cache)")
-      .option("mirror", "", "fetch <mirror>/<file name> instead of the official URL (e.g. file:///media/usb/models)")
-      .flag("no-progress", "do not show progress");
+  std::vector<std::string> names;
+  std::string models_dir, mirror;
+  bool progress = true;
+  args.bind("models-dir", models_dir, "download into this directory (default: $CITYLANGSPLAT_MODELS, else the XDG cache)")
+      .bind("mirror", mirror, "fetch <mirror>/<file name> instead of the official URL (e.g. file:///media/usb/models)")
+      .flag("no-progress", progress, "do not show progress", false)
+      .rest("NAME", names, "model names (see 'citylangsplat models list')");
   if (!args.parse(argc, argv)) return 0;
-  const fs::path dir = model_download_dir(args.get("models-dir"));
-  const auto dirs = model_search_dirs(args.get("models-dir"));
+  const fs::path dir = model_download_dir(models_dir);
+  const auto dirs = model_search_dirs(models_dir);
   std::vector<const KnownModel*> models;
-  for (const auto& name : args.rest()) {
+  for (const auto& name : names) {
     const KnownModel* m = find_known_model(name);
     if (!m) throw UsageError("models download: unknown model '" + name + "' (known: " + names_text() + ")");
     models.push_back(m);
@@ -94,12 +99,12 @@ int models_download(int argc, char** argv) {
       continue;
     }
     DownloadRequest req;
-    req.url = args.get("mirror").empty() ? m->url : args.get("mirror") + "/" + m->file_name;
+    req.url = mirror.empty() ? m->url : mirror + "/" + m->file_name;
     req.dest = dir / m->file_name;
     req.expected_size = m->size;
     req.sha256 = m->sha256;
     req.label = m->name;
-    req.progress = !args.flag_set("no-progress");
+    req.progress = progress;
     DownloadResult r;
     try {
       r = download_file(req);
@@ -122,22 +127,22 @@ int models_download(int argc, char** argv) {
 
 int models_check(int argc, char** argv) {
   Args args("models check", "Check a weight file's tensor names and shapes against a model, without loading it.");
-  args.positional("FILE", "safetensors, torch.save zip or TorchScript archive")
-      .option("model", "", "known model name (see 'models list') or architecture: ViT-B-32, ViT-B-16, ViT-L-14, vit_b, vit_l, vit_h");
+  std::string file, arch;
+  args.positional("FILE", file, "safetensors, torch.save zip or TorchScript archive")
+      .bind("model", arch, "known model name (see 'models list') or architecture: ViT-B-32, ViT-B-16, ViT-L-14, vit_b, vit_l, vit_h")
+      .required();
   if (!args.parse(argc, argv)) return 0;
-  std::string arch = args.get("model");
-  if (arch.empty()) throw UsageError("models check: --model is required");
   if (const KnownModel* m = find_known_model(arch)) arch = m->arch;
   WeightFile w;
   std::string what;
   if (arch.rfind("ViT-", 0) == 0) {
-    w = load_clip_checkpoint(args.get("FILE"), clip_arch(arch));
+    w = load_clip_checkpoint(file, clip_arch(arch));
     what = "CLIP " + arch;
   } else {
-    w = load_sam_checkpoint(args.get("FILE"), sam_arch(arch));
+    w = load_sam_checkpoint(file, sam_arch(arch));
     what = "SAM " + arch;
   }
-  std::printf("%s: %zu tensors match %s\n", args.get("FILE").c_str(), w.size(), what.c_str());
+  std::printf("%s: %zu tensors match %s\n", file.c_str(), w.size(), what.c_str());
   return 0;
 }
 

@@ -20,24 +20,25 @@ int cmd_raycast(int argc, char** argv) {
             "levels from one cast. Writes OUT/<image>/level1.png, level2.png, level3.png (uint16, 0 = no "
             "label, k = class k-1 of OUT/legend.json), building.png (uint16 building index + 1), "
             "coverage.png (uint8 0/255), depth.pfm (z-depth, 0 where nothing is hit), preview.png.");
-  args.option("scene", "", "scene directory (COLMAP or Pix4D; required)");
-  add_city_mesh_options(args);
-  args.option("resolution", "1", "divide the image size by 1, 2, 4 or 8 (as the training images)", "r")
-      .option("out", "", "output directory (required)");
+  std::string scene_dir;
+  fs::path out;
+  SceneOptions scene_options;
+  CityMeshOptions city_options;
+  args.bind("scene", scene_dir, "scene directory (COLMAP or Pix4D)").required();
+  city_options.bind(args)
+      .bind("resolution", scene_options.resolution_factor,
+            "divide the image size by 1, 2, 4 or 8 (as the training images)")
+      .short_name("r")
+      .bind("out", out, "output directory")
+      .required();
   if (!args.parse(argc, argv)) return 0;
-  if (!args.has("scene")) throw UsageError("raycast: --scene is required (see --help)");
-  if (!args.has("out")) throw UsageError("raycast: --out is required (see --help)");
-  const int factor = args.get_int("resolution");
+  const int factor = scene_options.resolution_factor;
   if (factor != 1 && factor != 2 && factor != 4 && factor != 8)
     throw UsageError("raycast: --resolution must be 1, 2, 4 or 8");
-  const CityMeshOptions city_options = city_mesh_options(args, "raycast");
 
   // Read and validate every input before the first file is written.
-  SceneOptions scene_options;
-  scene_options.resolution_factor = factor;
-  const Scene scene = load_scene(args.get("scene"), scene_options);
-  if (scene.views.empty()) fail(args.get("scene"), "the scene has no views");
-  const fs::path out = args.get("out");
+  const Scene scene = load_scene(scene_dir, scene_options);
+  if (scene.views.empty()) fail(scene_dir, "the scene has no views");
   label_map_dirs(scene, out);  // rejects image names that would leave OUT, before any file is written
   const SceneCityModel city = load_city_mesh_inputs(city_options, "raycast");
   const LabelExportSummary summary = export_label_maps(scene, city, out);

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/exit_codes.h"
 #include "core/log.h"
+#include "pipeline/pipeline_config.h"
 #include "tiles/local_executor.h"
 #include "tiles/slurm_executor.h"
 #include "tiles/tile_status.h"
@@ -19,46 +20,38 @@ namespace cls {
 namespace fs = std::filesystem;
 
 int cmd_run_tiles(int argc, char** argv) {
-  const RunTilesSettings d;
   Args args("run-tiles",
             "Run the pipeline on every tile of a `tile` directory: features per tile, then ONE autoencoder on "
             "SAM features sampled from all tiles (latents of different tiles must mean the same to be merged), "
             "then photometric and language training per tile. --executor slurm submits an sbatch array per "
             "phase (several past the cluster's MaxArraySize), chained with afterok dependencies, and returns "
             "(add --wait to wait); --executor local runs the same tasks here, --jobs at a time. A rerun submits only the tasks that have not finished "
-            "(TILES/status); `citylangsplat tiles status TILES` shows progress, TILES/logs has a log per task.");
-  args.positional("TILES", "tiles directory (`citylangsplat tile --out`)")
-      .option("executor", "local", "local or slurm")
-      .option("jobs", "1", "local: tasks at a time")
-      .option("partition", "", "slurm: partition (default: the cluster's)")
-      .option("array-limit", "0", "slurm: at most this many tasks of an array at once (0: no limit)")
-      .option("cpus-per-task", "0", "slurm: CPUs per task (0: the cluster's default)")
-      .option("time", "", "slurm: time limit per task (sbatch --time)")
-      .option("retries", "1", "attempts after a failed task (an interrupted or cancelled one is not retried)")
-      .flag("wait", "slurm: wait until the submitted jobs have left the queue, then report")
-      .option("models", d.models, "as run --models: auto, real, tiny or synthetic")
-      .option("resolution", "1", "as run --resolution", "r")
-      .option("rgb-iterations", "0", "as run (0: the models' default)")
-      .option("language-iterations", "0", "as run (0: the models' default)")
-      .option("autoencoder-epochs", "0", "as run (0: the models' default)")
-      .option("autoencoder-samples", std::to_string(d.autoencoder_samples),
-              "SAM features the shared autoencoder trains on, drawn at random from all tiles")
-      .flag("no-baseline", "do not train the LangSplat baseline");
-  if (!args.parse(argc, argv)) return kExitOk;
-  const fs::path tiles_dir = fs::absolute(args.get("TILES"));
-  const TilePlan plan = read_tiles_dir(tiles_dir);
-
+            "(TILES/status); `citylangsplat tiles status TILES` shows progress, TILES/logs has a log per task. "
+            "The options after --wait are `run`'s, for every tile.");
+  fs::path tiles_arg;
+  std::string executor = "local";
+  LocalExecutorOptions local;
+  SlurmExecutorOptions slurm;
+  int retries = 1;
+  bool wait = false;
   RunTilesSettings s;
-  s.models = args.get("models");
-  s.resolution = static_cast<int>(args.get_int("resolution"));
-  s.rgb_iterations = static_cast<int>(args.get_int("rgb-iterations"));
-  s.language_iterations = static_cast<int>(args.get_int("language-iterations"));
-  s.autoencoder_epochs = static_cast<int>(args.get_int("autoencoder-epochs"));
-  s.autoencoder_samples = args.get_int("autoencoder-samples");
-  s.baseline = !args.flag_set("no-baseline");
-  if (s.rgb_iterations < 0 || s.language_iterations < 0 || s.autoencoder_epochs < 0 || s.autoencoder_samples < 1)
-    throw UsageError("run-tiles: counts must not be negative (and --autoencoder-samples >= 1)");
-  const int retries = static_cast<int>(args.get_int("retries"));
+  args.positional("TILES", tiles_arg, "tiles directory (`citylangsplat tile --out`)")
+      .bind("executor", executor, "local or slurm", choice_codec({"local", "slurm"}))
+      .bind("jobs", local.jobs, "local: tasks at a time")
+      .bind("partition", slurm.partition, "slurm: partition (default: the cluster's)")
+      .bind("array-limit", slurm.array_limit, "slurm: at most this many tasks of an array at once (0: no limit)")
+      .bind("cpus-per-task", slurm.cpus_per_task, "slurm: CPUs per task (0: the cluster's default)")
+      .bind("time", slurm.time_limit, "slurm: time limit per task (sbatch --time)")
+      .bind("retries", retries, "attempts after a failed task (an interrupted or cancelled one is not retried)")
+      .flag("wait", wait, "slurm: wait until the submitted jobs have left the queue, then report")
+      .bind("autoencoder-samples", s.autoencoder_samples,
+            "SAM features the shared autoencoder trains on, drawn at random from all tiles");
+  pipeline_options().declare(args, s.pipeline, is_shared_by_tiles);
+  if (!args.parse(argc, argv)) return kExitOk;
+  pipeline_options().apply(args, s.pipeline, is_shared_by_tiles);
+  const fs::path tiles_dir = fs::absolute(tiles_arg);
+  const TilePlan plan = read_tiles_dir(tiles_dir);
+  if (s.autoencoder_samples < 1) throw UsageError("run-tiles: --autoencoder-samples must be >= 1");
   if (retries < 0) throw UsageError("run-tiles: --retries must be >= 0");
   const std::vector<SubmittedJob> earlier = submitted_jobs(tiles_dir);
   const auto queued = slurm_queue_rows(earlier);
@@ -69,28 +62,19 @@ int cmd_run_tiles(int argc, char** argv) {
   if (write_run_settings(tiles_dir, s)) log_info("run-tiles: new settings: every task runs (finished stages are reused)");
   const std::string binary = fs::read_symlink("/proc/self/exe").string();
 
-  const std::string executor = args.get("executor");
   if (executor == "local") {
-    LocalExecutorOptions o;
-    o.binary = binary;
-    o.jobs = static_cast<int>(args.get_int("jobs"));
-    o.retries = retries;
-    if (o.jobs < 1) throw UsageError("run-tiles: --jobs must be >= 1");
-    const int code = run_tiles_locally(tiles_dir, plan, o);
+    local.binary = binary;
+    local.retries = retries;
+    if (local.jobs < 1) throw UsageError("run-tiles: --jobs must be >= 1");
+    const int code = run_tiles_locally(tiles_dir, plan, local);
     std::printf("%s", tiles_status_text(tiles_dir).c_str());
     return code == 0 ? kExitOk : kExitError;
   }
-  if (executor != "slurm") throw UsageError("run-tiles: --executor must be local or slurm, not '" + executor + "'");
-  SlurmExecutorOptions o;
-  o.binary = binary;
-  o.partition = args.get("partition");
-  o.array_limit = static_cast<int>(args.get_int("array-limit"));
-  o.cpus_per_task = static_cast<int>(args.get_int("cpus-per-task"));
-  o.time_limit = args.get("time");
-  o.retries = retries;
-  const std::vector<SubmittedJob> jobs = submit_tiles_to_slurm(tiles_dir, plan, o);
+  slurm.binary = binary;
+  slurm.retries = retries;
+  const std::vector<SubmittedJob> jobs = submit_tiles_to_slurm(tiles_dir, plan, slurm);
   if (jobs.empty()) std::printf("run-tiles: every task has finished; nothing submitted\n");
-  if (!args.flag_set("wait")) {
+  if (!wait) {
     std::printf("Submitted; follow with: citylangsplat tiles status %s\n", tiles_dir.string().c_str());
     return kExitOk;
   }

@@ -26,21 +26,22 @@ using CameraKey = std::tuple<int, int, int, std::vector<double>, double>;
 
 int scene_info(int argc, char** argv) {
   Args args("scene info", "Summarize a scene: views, cameras and their models, sparse points, image sizes.");
-  args.positional("DIR", "scene directory (COLMAP model in sparse/0, sparse or DIR; or a Pix4D project)")
-      .flag("json", "print one JSON object instead of text")
-      .option("resolution", "1", "3DGS-style downscaling factor: 1, 2, 4 or 8", "r")
-      .option("width", "0", "downscale to this image width instead (0 = off)")
-      .flag("skip-image-check", "do not check that every image file exists")
-      .flag("verify-images", "decode every image (undistorted, downscaled) to find corrupt files before a long job");
-  if (!args.parse(argc, argv)) return 0;
-  if (args.flag_set("verify-images") && args.flag_set("skip-image-check"))
-    throw UsageError("scene info: --verify-images and --skip-image-check exclude each other");
+  std::string dir;
   SceneOptions options;
-  options.resolution_factor = args.get_int("resolution");
-  options.target_width = args.get_int("width");
-  options.check_images = !args.flag_set("skip-image-check");
-  const Scene scene = load_scene(args.get("DIR"), options);
-  if (args.flag_set("verify-images")) {
+  bool json = false, verify_images = false;
+  args.positional("DIR", dir, "scene directory (COLMAP model in sparse/0, sparse or DIR; or a Pix4D project)")
+      .flag("json", json, "print one JSON object instead of text")
+      .bind("resolution", options.resolution_factor, "3DGS-style downscaling factor: 1, 2, 4 or 8")
+      .short_name("r")
+      .bind("width", options.target_width, "downscale to this image width instead (0 = off)")
+      .flag("skip-image-check", options.check_images, "do not check that every image file exists", false)
+      .flag("verify-images", verify_images,
+            "decode every image (undistorted, downscaled) to find corrupt files before a long job");
+  if (!args.parse(argc, argv)) return 0;
+  if (verify_images && !options.check_images)
+    throw UsageError("scene info: --verify-images and --skip-image-check exclude each other");
+  const Scene scene = load_scene(dir, options);
+  if (verify_images) {
     // One image at a time: a large scene never sits in memory.
     ImageLoader loader;
     Progress progress("verify images", scene.views.size(), "images");
@@ -60,7 +61,7 @@ int scene_info(int argc, char** argv) {
     ++sizes[{{c.width, c.height}, {v.camera.width, v.camera.height}}];
   }
 
-  if (args.flag_set("json")) {
+  if (json) {
     nlohmann::json sizes_json = nlohmann::json::array();
     for (const auto& [s, n] : sizes)
       sizes_json.push_back({{"source", {s.first[0], s.first[1]}}, {"loaded", {s.second[0], s.second[1]}}, {"views", n}});
@@ -90,13 +91,12 @@ int scene_info(int argc, char** argv) {
 
 int scene_convert(int argc, char** argv) {
   Args args("scene convert", "Write a scene's cameras and poses as a COLMAP model (lossless for COLMAP input).");
-  args.positional("DIR", "scene directory (COLMAP model or Pix4D project)")
-      .option("out", "", "output model directory (cameras, images, points3D are written into it)")
-      .option("format", "bin", "output format: bin or txt");
+  std::string dir, out, format = "bin";
+  args.positional("DIR", dir, "scene directory (COLMAP model or Pix4D project)")
+      .bind("out", out, "output model directory (cameras, images, points3D are written into it)")
+      .required()
+      .bind("format", format, "output format: bin or txt", choice_codec({"bin", "txt"}));
   if (!args.parse(argc, argv)) return 0;
-  const std::string dir = args.get("DIR"), out = args.get("out"), format = args.get("format");
-  if (out.empty()) throw UsageError("scene convert: --out is required");
-  if (format != "bin" && format != "txt") throw UsageError("scene convert: --format must be bin or txt, not '" + format + "'");
 
   ColmapModel model;
   const std::string model_dir = find_colmap_model(dir);

@@ -1,6 +1,7 @@
 // citylangsplat tiles status|task: progress of run-tiles, and one task of it (what the executors run).
 #include <cstdio>
 #include <filesystem>
+#include <string>
 
 #include "cli/commands.h"
 #include "core/args.h"
@@ -16,9 +17,9 @@ namespace {
 
 int tiles_status(int argc, char** argv) {
   Args args("tiles status", "Tasks finished per phase, the tiles still missing, and the Slurm jobs of the last run-tiles.");
-  args.positional("TILES", "tiles directory");
+  fs::path dir;
+  args.positional("TILES", dir, "tiles directory");
   if (!args.parse(argc, argv)) return kExitOk;
-  const fs::path dir = args.get("TILES");
   std::printf("%s", tiles_status_text(dir).c_str());
   return tiles_finished(dir, read_tiles_dir(dir)) ? kExitOk : kExitError;
 }
@@ -27,12 +28,15 @@ int tiles_task(int argc, char** argv) {
   Args args("tiles task",
             "Run one task of run-tiles in this process (what the task scripts under TILES/jobs run): "
             "PHASE features|autoencoder|train, INDEX the tile (0 for the autoencoder).");
-  args.positional("TILES", "tiles directory").positional("PHASE", "features, autoencoder or train").positional("INDEX", "task index");
+  fs::path dir;
+  std::string phase, index;
+  args.positional("TILES", dir, "tiles directory")
+      .positional("PHASE", phase, "features, autoencoder or train")
+      .positional("INDEX", index, "task index");
   if (!args.parse(argc, argv)) return kExitOk;
-  const std::string index = args.get("INDEX");
   if (index.empty() || index.find_first_not_of("0123456789") != std::string::npos || index.size() > 6)
     throw UsageError("tiles task: INDEX must be a task number, got '" + index + "'");
-  return run_tile_task(args.get("TILES"), parse_tile_phase(args.get("PHASE")), std::stoi(index));
+  return run_tile_task(dir, parse_tile_phase(phase), std::stoi(index));
 }
 
 }  // namespace

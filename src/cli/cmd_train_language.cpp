@@ -14,60 +14,32 @@
 namespace cls {
 
 int cmd_train_language(int argc, char** argv) {
-  const LanguageTrainOptions d;
   Args args("train-language",
             "Train the language field (one latent per Gaussian and level 1-3) on a frozen photometric model under "
             "the coverage-aware SAM + CityGML loss (paper 3.3), or LangSplat's objective with --baseline langsplat.");
-  args.option("scene", "", "scene directory (COLMAP or Pix4D) the features were computed for")
-      .option("model", "", "photometric model: train-rgb's point_cloud.ply or any 3DGS PLY (geometry stays frozen)")
-      .option("features", "", "features stage output directory (per-view *_s.npy / *_f.npy / *_gml_*.npy)")
-      .option("autoencoder", "", "the shared autoencoder (train-autoencoder output, .safetensors)")
-      .option("out", "", "output model directory (model.json, point_cloud.ply, latents, autoencoder, checkpoints/)")
-      .option("iterations", std::to_string(d.iterations), "iterations per level")
-      .option("lr", "0.0025", "Adam learning rate of the latents (LangSplat's)")
-      .option("lambda-sam", "1.0", "weight of the SAM term inside CityGML coverage")
-      .option("lambda-citygml", "0.5", "weight of the CityGML term inside coverage")
-      .option("baseline", "", "'langsplat': LangSplat's objective (plain L1 to the SAM targets, no CityGML term); "
-                              "'langsplat-original': the same with LangSplat's normalised splatting (give it the "
-                              "autoencoder of `autoencoder --preset langsplat`)")
-      .flag("normalize-latents", "LangSplat's splatting: each Gaussian's latent divided by its norm before it is "
-                                 "splatted (default: raw latents; docs/language.md measures both)")
-      .option("checkpoint-every", std::to_string(d.checkpoint_every), "iterations between checkpoints (0 = only on interrupt)")
-      .flag("resume", "continue from OUT/checkpoints/language.safetensors if present")
-      .option("seed", std::to_string(d.seed), "seed of the view order")
-      .option("test-every", "8", "leave every this-th view (sorted by name) out of training, as train-rgb: the views "
-                                 "`evaluate` scores in 2D (0 = train on all)")
-      .option("resolution", "1", "3DGS-style downscaling factor of the scene's images (must match the features)", "r")
-      .option("device", d.device, "auto, cpu or cuda");
-  if (!args.parse(argc, argv)) return 0;
-  for (const char* required : {"scene", "model", "features", "autoencoder", "out"})
-    if (!args.has(required)) throw UsageError(std::string("train-language: --") + required + " is required");
-
+  std::string scene_dir, baseline;
+  int resolution = 1;
   LanguageTrainOptions o;
-  o.geometry_ply = args.get("model");
-  o.features_dir = args.get("features");
-  o.autoencoder_path = args.get("autoencoder");
-  o.out_dir = args.get("out");
-  o.iterations = args.get_int("iterations");
-  o.lr = args.get_double("lr");
-  o.lambda_sam = args.get_double("lambda-sam");
-  o.lambda_citygml = args.get_double("lambda-citygml");
-  const std::string baseline = args.get("baseline");
-  if (!baseline.empty() && baseline != "langsplat" && baseline != "langsplat-original")
-    throw UsageError("train-language: --baseline takes 'langsplat' or 'langsplat-original', got '" + baseline + "'");
+  o.test_every = 8;  // train-rgb's split
+  args.bind("scene", scene_dir, "scene directory (COLMAP or Pix4D) the features were computed for").required();
+  language_train_options().declare(args, o);
+  args.bind("baseline", baseline,
+            "'langsplat': LangSplat's objective (plain L1 to the SAM targets, no CityGML term); "
+            "'langsplat-original': the same with LangSplat's normalised splatting (give it the autoencoder of "
+            "`autoencoder --preset langsplat`)",
+            choice_codec({"", "langsplat", "langsplat-original"}))
+      .bind("resolution", resolution, "3DGS-style downscaling factor of the scene's images (must match the features)")
+      .short_name("r");
+  if (!args.parse(argc, argv)) return 0;
+  language_train_options().apply(args, o);
   o.baseline = !baseline.empty();
-  o.normalize_latents = args.flag_set("normalize-latents") || baseline == "langsplat-original";
-  o.checkpoint_every = args.get_int("checkpoint-every");
-  o.resume = args.flag_set("resume");
-  o.seed = static_cast<uint64_t>(args.get_int("seed"));
-  o.test_every = args.get_int("test-every");
+  if (baseline == "langsplat-original") o.normalize_latents = true;
   if (o.test_every < 0) throw UsageError("train-language: --test-every must be >= 0");
-  o.device = args.get("device");
 
   SceneOptions so;
-  so.resolution_factor = args.get_int("resolution");
+  so.resolution_factor = resolution;
   so.check_images = false;  // training reads only cameras and features, never the images
-  const Scene scene = load_scene(args.get("scene"), so);
+  const Scene scene = load_scene(scene_dir, so);
 
   const LanguageTrainReport r = train_language(scene, o);
   if (r.interrupted) {

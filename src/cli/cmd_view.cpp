@@ -3,6 +3,7 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <string>
 #include <thread>
 
 #include "cli/commands.h"
@@ -22,30 +23,29 @@ int cmd_view(int argc, char** argv) {
             "(click one to see its photo), a text box whose queries recolour the Gaussians by relevance and list\n"
             "the city objects (CityGML/CityJSON ids) that answer, and the city model's triangles on request.\n"
             "Prints the URL; Ctrl-C stops. See docs/viewer.md.");
-  args.positional("OUT", "a `run` output directory or a language model directory (model.json)")
-      .option("port", "8080", "TCP port (0: any free port)")
-      .option("host", "127.0.0.1", "address to bind; anything but loopback makes the model readable from the network")
-      .option("method", "citylangsplat", "which language model of a run directory: citylangsplat or langsplat")
-      .option("scene", "", "scene directory for cameras and photos (empty: the run's, or the one recorded with the model)")
-      .option("assets", CLS_WEB_ASSETS, "the page's folder (web/viewer of the source tree)")
-      .option("vendor", CLS_WEB_VENDOR, "npm's node_modules with three and the splat renderer (scripts/install_web.sh)");
+  fs::path out, assets = CLS_WEB_ASSETS, vendor = CLS_WEB_VENDOR;
+  int port = 8080;
+  std::string host = "127.0.0.1", method = "citylangsplat", scene;
+  args.positional("OUT", out, "a `run` output directory or a language model directory (model.json)")
+      .bind("port", port, "TCP port (0: any free port)")
+      .bind("host", host, "address to bind; anything but loopback makes the model readable from the network")
+      .bind("method", method, "which language model of a run directory: citylangsplat or langsplat")
+      .bind("scene", scene, "scene directory for cameras and photos (empty: the run's, or the one recorded with the model)")
+      .bind("assets", assets, "the page's folder (web/viewer of the source tree)")
+      .bind("vendor", vendor, "npm's node_modules with three and the splat renderer (scripts/install_web.sh)");
   if (!args.parse(argc, argv)) return 0;
 
-  const fs::path out = args.get("OUT");
   if (!fs::is_directory(out)) fail(out.string(), "not a directory (a `run` output or a language model)");
-  const fs::path assets = args.get("assets"), vendor = args.get("vendor");
   if (!fs::exists(assets / "index.html")) fail((assets / "index.html").string(), "missing (--assets: web/viewer)");
   if (!fs::is_directory(vendor / "three"))
     fail((vendor / "three").string(), "missing: install the page's npm packages with `bash scripts/install_web.sh`");
-  const int port = static_cast<int>(args.get_int("port"));
   if (port < 0 || port > 65535) throw UsageError("view: --port must be 0..65535");
-  const std::string host = args.get("host");
   if (host != "127.0.0.1" && host != "localhost" && host != "::1")
     log_warn("view: binding " + host + ": anyone who can reach this address can read the model and its photos");
 
-  const fs::path model_dir = viewer_model_dir(out, args.get("method"));
+  const fs::path model_dir = viewer_model_dir(out, method);
   log_info("view: loading " + model_dir.string());
-  const std::string scene = args.get("scene").empty() ? run_scene_dir(out) : args.get("scene");
+  if (scene.empty()) scene = run_scene_dir(out);
   ViewerModel model(model_dir, scene);
   ViewerServerOptions options;
   options.out = out;

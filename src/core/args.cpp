@@ -1,6 +1,6 @@
 #include "core/args.h"
 
-#include <cstdlib>
+#include <cctype>
 #include <iostream>
 #include <sstream>
 
@@ -10,30 +10,84 @@ namespace cls {
 
 Args::Args(std::string command, std::string summary, std::string program)
     : command_(std::move(command)), summary_(std::move(summary)), program_(std::move(program)) {
-  flag("help", "show this help and exit", "h");
+  specs_.push_back({"help", "h", "", "show this help and exit", true, false, {}});
 }
 
-Args& Args::option(const std::string& name, const std::string& def, const std::string& help,
-                   const std::string& short_name) {
-  specs_.push_back({name, short_name, def, help, false});
-  values_[name] = def;
+Args& Args::add_option(const std::string& name, const std::string& def, const std::string& help, bool is_flag,
+                       Assign assign) {
+  for (const Spec& s : specs_)
+    if (s.name == name) throw std::logic_error(command_ + ": option --" + name + " declared twice");
+  specs_.push_back({name, "", def, help, is_flag, false, std::move(assign)});
+  last_is_positional_ = false;
   return *this;
 }
 
-Args& Args::flag(const std::string& name, const std::string& help, const std::string& short_name) {
-  specs_.push_back({name, short_name, "", help, true});
+Args& Args::add_positional(const std::string& name, const std::string& help, bool repeated, Assign assign) {
+  positionals_.push_back({name, help, true, repeated, std::move(assign)});
+  last_is_positional_ = true;
   return *this;
 }
 
-Args& Args::positional(const std::string& name, const std::string& help, bool required, bool repeated) {
-  positionals_.push_back({name, help, required, repeated});
+Args& Args::flag(const std::string& name, bool& field, const std::string& help, bool value) {
+  return add_option(name, "", help, true, [&field, value](const std::string&) { field = value; });
+}
+
+Args& Args::rest(const std::string& name, std::vector<std::string>& values, const std::string& help) {
+  return add_positional(name, help, true, [&values](const std::string& s) { values.push_back(s); });
+}
+
+Args& Args::declare(const std::string& name, const std::string& def, const std::string& help, bool is_flag) {
+  return add_option(name, def, help, is_flag, {});
+}
+
+Args& Args::declare_positional(const std::string& name, const std::string& help) {
+  return add_positional(name, help, false, {});
+}
+
+Args& Args::required() {
+  if (last_is_positional_) positionals_.back().required = true;
+  else specs_.back().required = true;
   return *this;
+}
+
+Args& Args::optional() {
+  if (!last_is_positional_) throw std::logic_error(command_ + ": optional() follows a positional");
+  positionals_.back().required = false;
+  return *this;
+}
+
+Args& Args::short_name(const std::string& letter) {
+  if (last_is_positional_) throw std::logic_error(command_ + ": short_name() follows an option");
+  specs_.back().short_name = letter;
+  return *this;
+}
+
+Args& Args::default_text(const std::string& text) {
+  if (last_is_positional_) throw std::logic_error(command_ + ": default_text() follows an option");
+  specs_.back().def = text;
+  return *this;
+}
+
+const std::string& Args::given_value(const std::string& name) const {
+  static const std::string empty;
+  const auto it = given_.find(name);
+  return it == given_.end() ? empty : it->second;
 }
 
 const Args::Spec* Args::find_spec(const std::string& token) const {
   for (const auto& s : specs_)
     if (token == "--" + s.name || (!s.short_name.empty() && token == "-" + s.short_name)) return &s;
   return nullptr;
+}
+
+void Args::assign(const std::string& what, const Assign& to, const std::string& value) const {
+  try {
+    to(value);
+  } catch (const UsageError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw UsageError(command_ + ": " + what + " " + e.what());
+  }
 }
 
 bool Args::parse(int argc, char** argv) {
@@ -44,9 +98,11 @@ bool Args::parse(int argc, char** argv) {
 
 bool Args::parse(const std::vector<std::string>& args) {
   size_t pos_index = 0;
+  std::vector<std::pair<const Pos*, std::string>> positional_values;
   for (size_t i = 0; i < args.size(); ++i) {
     std::string tok = args[i];
-    if (tok.size() > 1 && tok[0] == '-' && !(tok.size() > 1 && (std::isdigit(tok[1]) || tok[1] == '.'))) {
+    // "-2.5" is a value (a negative number), not an option.
+    if (tok.size() > 1 && tok[0] == '-' && !(std::isdigit(static_cast<unsigned char>(tok[1])) || tok[1] == '.')) {
       std::string value;
       bool inline_value = false;
       const auto eq = tok.find('=');
@@ -63,30 +119,36 @@ bool Args::parse(const std::vector<std::string>& args) {
       }
       if (s->is_flag) {
         if (inline_value) throw UsageError(command_ + ": option --" + s->name + " takes no value");
-        values_[s->name] = "1";
-      } else {
-        if (!inline_value) {
-          if (i + 1 >= args.size()) throw UsageError(command_ + ": option --" + s->name + " needs a value");
-          value = args[++i];
-        }
-        values_[s->name] = value;
+        value = "1";
+      } else if (!inline_value) {
+        if (i + 1 >= args.size()) throw UsageError(command_ + ": option --" + s->name + " needs a value");
+        value = args[++i];
       }
+      given_[s->name] = value;
       continue;
     }
     if (pos_index >= positionals_.size())
       throw UsageError(command_ + ": unexpected argument '" + tok + "' (see --help)");
     const Pos& p = positionals_[pos_index];
-    if (p.repeated) {
-      rest_.push_back(tok);
-      if (!values_.count(p.name)) values_[p.name] = tok;
-    } else {
-      values_[p.name] = tok;
+    positional_values.emplace_back(&p, tok);
+    if (!p.repeated) {
+      given_[p.name] = tok;
       ++pos_index;
     }
   }
-  for (const auto& p : positionals_)
-    if (p.required && !values_.count(p.name))
-      throw UsageError(command_ + ": missing argument " + p.name + " (see --help)");
+  for (const Pos& p : positionals_) {
+    bool present = false;
+    for (const auto& [pos, value] : positional_values) present = present || pos == &p;
+    if (p.required && !present) throw UsageError(command_ + ": missing argument " + p.name + " (see --help)");
+  }
+  for (const Spec& s : specs_)
+    if (s.required && !given(s.name)) throw UsageError(command_ + ": --" + s.name + " is required (see --help)");
+  // Fields are written once everything was read, in the order of the command line's positionals and the
+  // declaration's options, so that the first error reported does not depend on the arguments' order.
+  for (const auto& [p, value] : positional_values)
+    if (p->assign) assign(p->name + ":", p->assign, value);
+  for (const Spec& s : specs_)
+    if (s.assign && given(s.name)) assign("--" + s.name, s.assign, given_value(s.name));
   return true;
 }
 
@@ -104,39 +166,11 @@ std::string Args::help() const {
   for (const auto& sp : specs_) {
     s << "  " << (sp.short_name.empty() ? "" : "-" + sp.short_name + ", ") << "--" << sp.name
       << (sp.is_flag ? "" : " VALUE") << "\n      " << sp.help;
-    if (!sp.is_flag) s << (sp.def.empty() ? " (no default)" : " (default: " + sp.def + ")");
+    if (sp.required) s << " (required)";
+    else if (!sp.is_flag) s << (sp.def.empty() ? " (no default)" : " (default: " + sp.def + ")");
     s << "\n";
   }
   return s.str();
-}
-
-const std::string& Args::get(const std::string& name) const {
-  static const std::string empty;
-  auto it = values_.find(name);
-  return it == values_.end() ? empty : it->second;
-}
-
-bool Args::has(const std::string& name) const {
-  auto it = values_.find(name);
-  return it != values_.end() && !it->second.empty();
-}
-
-bool Args::flag_set(const std::string& name) const { return has(name); }
-
-int Args::get_int(const std::string& name) const {
-  const std::string& v = get(name);
-  char* end = nullptr;
-  const long r = std::strtol(v.c_str(), &end, 10);
-  if (v.empty() || *end != '\0') throw UsageError(command_ + ": --" + name + " expects an integer, got '" + v + "'");
-  return static_cast<int>(r);
-}
-
-double Args::get_double(const std::string& name) const {
-  const std::string& v = get(name);
-  char* end = nullptr;
-  const double r = std::strtod(v.c_str(), &end);
-  if (v.empty() || *end != '\0') throw UsageError(command_ + ": --" + name + " expects a number, got '" + v + "'");
-  return r;
 }
 
 }  // namespace cls

@@ -25,7 +25,7 @@ namespace cls {
 //          OpenCLIP's GELU), "models_dir": DIR?, "points_per_side": 32, "batch_size": 32,
 //          "device": "auto" | "cpu" | "cuda"}
 //   clip-tiny: {"provider": "clip-tiny", "seed": 1, "device": ...}
-// "auto" picks CUDA where LibTorch has it (clip-tiny ran on an H100 in `run --models tiny`, and the
+// "auto" picks CUDA where LibTorch has it (clip-tiny ran on an H100 in `run --models tiny`, now `clip-tiny`, and the
 // CLIP/SAM parity tests pass there; docs/benchmarks.md, "GPU").
 std::unique_ptr<FeatureProvider> make_clip_provider(const nlohmann::json& spec, const Taxonomy& taxonomy);
 

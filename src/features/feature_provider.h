@@ -1,7 +1,7 @@
 #pragma once
 // Where features come from (paper 3.1-3.2). One interface, two implementations:
 //  - "clip": SAM automatic masks (LangSplat's AMG, levels default/s/m/l) and CLIP ViT image/text
-//    features, from real weights (models/) or, for smoke tests, tiny random models (`--models tiny`);
+//    features, from real weights (models/) or, for smoke tests, tiny random models (`--models clip-tiny`);
 //  - "synthetic": deterministic stand-ins for tests and the mechanics benchmark: segments from the
 //    label maps (connected components per level, grid tiles where M = 0), features = a fixed random
 //    unit vector per class plus per-segment noise, text features = the class vector of a taxonomy
@@ -41,7 +41,7 @@ struct RegionMask {
 class FeatureProvider {
  public:
   virtual ~FeatureProvider() = default;
-  virtual std::string name() const = 0;      // "clip", "clip-tiny", "synthetic"
+  virtual std::string name() const = 0;      // its name in the registry (provider_registry.h)
   virtual nlohmann::json spec() const = 0;   // recorded in features.json; make_feature_provider(spec) re-creates it
   virtual int dim() const = 0;               // feature dimension D (512 for ViT-B)
   // SAM branch: seg maps and one feature per segment.
@@ -54,12 +54,14 @@ class FeatureProvider {
 
 // From a spec: {"provider": "synthetic", "seed": 1, "dim": 512, "sam_noise": ..., ...} or
 // {"provider": "clip", "clip": "<weights path>", "sam": "<weights path>", ...} or
-// {"provider": "clip-tiny", "seed": 1}. cls::Error / UsageError with what to do on bad specs or
-// missing weights (the message says how to get them: `citylangsplat models download ...`).
+// {"provider": "clip-tiny", "seed": 1}; "provider" is a name of the registry (provider_registry.h).
+// cls::Error / UsageError with what to do on bad specs or missing weights (the message says how to get
+// them: `citylangsplat models download ...`).
 std::unique_ptr<FeatureProvider> make_feature_provider(const nlohmann::json& spec, const Taxonomy& taxonomy);
 
-// What every output of a provider other than real CLIP says about itself ("" for "clip"): features that
-// are not CLIP's make a benchmark of the mechanics, never a result of the method.
+// What every output of a provider other than real CLIP says about itself ("" for "clip" and for names
+// the registry does not know): features that are not CLIP's make a benchmark of the mechanics, never a
+// result of the method.
 std::string provider_warning(const std::string& provider_name);
 
 }  // namespace cls

@@ -44,6 +44,24 @@ bool cached(const ViewJob& job) {
 
 }  // namespace
 
+const OptionList<FeatureStageOptions>& feature_stage_options() {
+  using O = FeatureStageOptions;
+  static const OptionList<O> list = [] {
+    OptionList<O> o;
+    o.add("labels", &O::labels_dir, "label map directory of `citylangsplat raycast`", OptionRole::Location).required()
+        .add("out", &O::out_dir, "output directory", OptionRole::Location).required()
+        .add("alpha", &O::alpha, "text-guidance weight alpha of the fusion, in [0, 1]")
+        .add("regions", &O::region_mode,
+             "CityGML regions: class (one per level and class, the paper) or instance (one per connected object "
+             "within a building)",
+             OptionRole::Setting, enum_codec<RegionMode>({{"class", RegionMode::Class}, {"instance", RegionMode::Instance}}))
+        .add("min-region-pixels", &O::min_region_pixels, "skip CityGML regions smaller than this")
+        .add("overwrite", &O::overwrite, "recompute every view, cached or not", OptionRole::Control);
+    return o;
+  }();
+  return list;
+}
+
 int run_feature_stage(const Scene& scene, FeatureProvider& provider, const Taxonomy& taxonomy,
                       const FeatureStageOptions& options) {
   if (options.alpha < 0 || options.alpha > 1) throw UsageError("features: alpha must be in [0, 1]");

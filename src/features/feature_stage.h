@@ -7,6 +7,7 @@
 #include <string>
 
 #include "citymodel/taxonomy.h"
+#include "core/option_list.h"
 #include "features/feature_provider.h"
 #include "scene/scene.h"
 
@@ -22,6 +23,9 @@ struct FeatureStageOptions {
   bool overwrite = false;            // recompute cached views
   int min_region_pixels = 16;        // CityGML regions with fewer pixels are skipped (-1 in the seg map)
 };
+
+// The options of the stage (`features`; run's fingerprint of the stage takes their settings).
+const OptionList<FeatureStageOptions>& feature_stage_options();
 
 // Returns the number of views computed (0 when every view was cached). Stops early, leaving
 // features.json unwritten, when interrupt_requested() (core/interrupt.h) turns true between views.

@@ -13,6 +13,7 @@
 #include "core/log.h"
 #include "core/npy.h"
 #include "core/progress.h"
+#include "core/strings.h"
 #include "models/weights/npy_tensor.h"
 #include "models/weights/weight_file.h"
 
@@ -99,6 +100,76 @@ at::Tensor read_sam_features(const std::vector<fs::path>& files, int input_dim, 
   if (max_samples > 0) return seen >= max_samples ? reservoir : reservoir.slice(0, 0, seen).contiguous();
   if (parts.empty()) return at::empty({0, input_dim}, at::kFloat);
   return at::cat(parts, 0);
+}
+
+namespace {
+
+// Layer sizes: a comma-separated list of positive integers.
+Codec<std::vector<int>> dims_codec() {
+  Codec<std::vector<int>> c;
+  c.text = [](const std::vector<int>& v) {
+    std::string s;
+    for (size_t i = 0; i < v.size(); ++i) s += (i ? "," : "") + std::to_string(v[i]);
+    return s;
+  };
+  c.parse = [](const std::string& text) {
+    std::vector<int> dims;
+    for (const std::string& item : split_commas(text)) {
+      const int d = default_codec<int>().parse(item);
+      if (d <= 0) throw std::invalid_argument("sizes must be positive, got '" + text + "'");
+      dims.push_back(d);
+    }
+    if (dims.empty()) throw std::invalid_argument("must list at least one size");
+    return dims;
+  };
+  c.to_json = [](const std::vector<int>& v) { return nlohmann::json(v); };
+  c.from_json = [](const nlohmann::json& j) { return j.get<std::vector<int>>(); };
+  return c;
+}
+
+// --features: the one directory of a command line (tiles give several in code).
+Codec<std::vector<std::filesystem::path>> one_dir_codec() {
+  Codec<std::vector<std::filesystem::path>> c;
+  c.text = [](const std::vector<std::filesystem::path>& v) { return v.empty() ? std::string() : v.front().string(); };
+  c.parse = [](const std::string& s) { return std::vector<std::filesystem::path>{s}; };
+  c.to_json = [](const std::vector<std::filesystem::path>& v) {
+    nlohmann::json j = nlohmann::json::array();
+    for (const auto& p : v) j.push_back(p.string());
+    return j;
+  };
+  c.from_json = [](const nlohmann::json& j) {
+    std::vector<std::filesystem::path> v;
+    for (const auto& p : j) v.emplace_back(p.get<std::string>());
+    return v;
+  };
+  return c;
+}
+
+}  // namespace
+
+const OptionList<AutoencoderStageOptions>& autoencoder_options() {
+  using O = AutoencoderStageOptions;
+  using R = OptionRole;
+  static const OptionList<O> list = [] {
+    OptionList<O> o;
+    o.add("features", &O::features_dirs, "features directory (the features stage's output)", R::Location, one_dir_codec())
+        .required()
+        .add("out", &O::out, "the model file to write, e.g. OUT/autoencoder.safetensors", R::Location)
+        .required()
+        .add("epochs", [](O& x) -> int& { return x.train.epochs; }, "training epochs")
+        .add("batch-size", [](O& x) -> int& { return x.train.batch_size; }, "mini-batch size (>= 2)")
+        .add("lr", [](O& x) -> double& { return x.train.lr; }, "Adam learning rate")
+        .add("lambda-cos", [](O& x) -> double& { return x.train.lambda_cos; }, "weight of the cosine term")
+        .add("holdout", [](O& x) -> double& { return x.train.holdout_fraction; },
+             "fraction of features held out for the reported cosine")
+        .add("encoder-dims", [](O& x) -> std::vector<int>& { return x.config.encoder_dims; },
+             "encoder layer sizes after the input; the last is the latent", R::Setting, dims_codec())
+        .add("decoder-dims", [](O& x) -> std::vector<int>& { return x.config.decoder_dims; },
+             "decoder layer sizes; the last must be the feature size", R::Setting, dims_codec())
+        .add("seed", [](O& x) -> uint64_t& { return x.train.seed; }, "seed of initialisation, split and shuffling");
+    return o;
+  }();
+  return list;
 }
 
 AutoencoderReport run_autoencoder_stage(const AutoencoderStageOptions& o) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/option_list.h"
 #include "language/autoencoder.h"
 
 namespace cls {
@@ -37,6 +38,10 @@ struct AutoencoderStageOptions {
   AutoencoderConfig config;
   AutoencoderTrainOptions train;  // train.seed also seeds the initialisation
 };
+
+// The options of `autoencoder`, declared once (one features directory; input_dim follows decoder-dims);
+// their settings make run's fingerprint of the stage.
+const OptionList<AutoencoderStageOptions>& autoencoder_options();
 
 // Reads every directory, keeps max_samples rows, trains (progress per epoch), writes `out` atomically and then `out`.json:
 // {"samples", "rows_read", "train_samples", "holdout_samples", "files", "train_loss", "holdout_cosine" (null when

@@ -9,6 +9,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "core/run_layout.h"
 #include "language/provenance.h"
 #include "models/weights/safetensors.h"
 #include "splat/ply_gaussians.h"
@@ -20,14 +21,14 @@ namespace {
 
 const char* const kLevelNames[3] = {"level1", "level2", "level3"};
 
-std::string file_in(const std::string& dir, const char* name) { return (fs::path(dir) / name).string(); }
 
 }  // namespace
 
 void save_language_model(const std::string& dir, const LanguageModel& model) {
   const int64_t n = model.gaussians.size();
   const int latent = model.autoencoder.config().latent_dim();
-  const std::string latents_path = file_in(dir, "latents.safetensors");
+  const LanguageModelFiles files{dir};
+  const std::string latents_path = files.latents().string();
   std::vector<SafetensorsEntry> entries;
   for (int l = 0; l < 3; ++l) {
     const at::Tensor& t = model.latents[l];
@@ -41,19 +42,20 @@ void save_language_model(const std::string& dir, const LanguageModel& model) {
   // Geometry first and model.json last: a model.json marks a complete directory.
   GaussianModel geometry = model.gaussians;
   geometry.features = at::Tensor();  // the latents live in latents.safetensors
-  write_gaussians_ply(file_in(dir, "point_cloud.ply"), geometry);
+  write_gaussians_ply(files.geometry().string(), geometry);
   write_safetensors(latents_path, entries, {{"format", "citylangsplat-latents"}});
-  model.autoencoder.save(file_in(dir, "autoencoder.safetensors"));
-  if (!model.objects.objects.empty()) write_city_objects(file_in(dir, "city_objects.json"), model.objects);
+  model.autoencoder.save(files.autoencoder().string());
+  if (!model.objects.objects.empty()) write_city_objects(files.city_objects().string(), model.objects);
   nlohmann::json info = model.info.is_object() ? model.info : nlohmann::json::object();
   info["levels"] = {1, 2, 3};
   info["gaussians"] = n;
   info["latent_dim"] = latent;
-  write_text_atomic(fs::path(dir) / "model.json", info.dump(2) + "\n");
+  write_text_atomic(files.model_json(), info.dump(2) + "\n");
 }
 
 LanguageModel load_language_model(const std::string& dir) {
-  const std::string json_path = file_in(dir, "model.json");
+  const LanguageModelFiles files{dir};
+  const std::string json_path = files.model_json().string();
   if (!fs::exists(json_path)) fail(json_path, "missing (not a language model directory, or an unfinished one)");
   nlohmann::json info;
   try {
@@ -63,15 +65,15 @@ LanguageModel load_language_model(const std::string& dir) {
   }
   if (!info.is_object()) fail(json_path, "not a JSON object");
 
-  const std::string ply_path = file_in(dir, "point_cloud.ply");
+  const std::string ply_path = files.geometry().string();
   if (!fs::exists(ply_path)) fail(ply_path, "missing");
   GaussianModel gaussians = read_gaussians_ply(ply_path);
   gaussians.features = at::Tensor();
-  const std::string ae_path = file_in(dir, "autoencoder.safetensors");
+  const std::string ae_path = files.autoencoder().string();
   if (!fs::exists(ae_path)) fail(ae_path, "missing");
   LanguageModel model{std::move(gaussians), {}, Autoencoder::load(ae_path), std::move(info), {}};
 
-  const std::string latents_path = file_in(dir, "latents.safetensors");
+  const std::string latents_path = files.latents().string();
   if (!fs::exists(latents_path)) fail(latents_path, "missing");
   const WeightFile file = read_safetensors(latents_path);
   const int64_t n = model.gaussians.size();
@@ -89,7 +91,7 @@ LanguageModel load_language_model(const std::string& dir) {
   if (model.info.contains("gaussians") && model.info["gaussians"] != n)
     fail(json_path, "records " + model.info["gaussians"].dump() + " Gaussians but point_cloud.ply has " +
                         std::to_string(n));
-  const std::string objects_path = file_in(dir, "city_objects.json");
+  const std::string objects_path = files.city_objects().string();
   if (fs::exists(objects_path)) {
     model.objects = read_city_objects(objects_path);
     const GaussianExtra* object = model.gaussians.extra(kObjectProperty);

@@ -33,6 +33,7 @@
 #include "core/log.h"
 #include "core/metrics_log.h"
 #include "core/progress.h"
+#include "core/run_layout.h"
 #include "features/view_features.h"
 #include "language/language_loss.h"
 #include "language/language_model.h"
@@ -204,6 +205,43 @@ void attach_city_objects(LanguageModel& model, const Scene& scene, const fs::pat
 
 }  // namespace
 
+const OptionList<LanguageTrainOptions>& language_train_options() {
+  using O = LanguageTrainOptions;
+  using R = OptionRole;
+  static const OptionList<O> list = [] {
+    OptionList<O> o;
+    o.add("model", &O::geometry_ply,
+          "photometric model: train-rgb's point_cloud.ply or any 3DGS PLY (geometry stays frozen)", R::Location)
+        .required()
+        .add("features", &O::features_dir, "features stage output directory (per-view *_s.npy / *_f.npy / *_gml_*.npy)",
+             R::Location)
+        .required()
+        .add("autoencoder", &O::autoencoder_path, "the shared autoencoder (`autoencoder` output, .safetensors)",
+             R::Location)
+        .required()
+        .add("out", &O::out_dir, "output model directory (model.json, point_cloud.ply, latents, autoencoder, checkpoints/)",
+             R::Location)
+        .required()
+        .add("iterations", &O::iterations, "iterations per level")
+        .add("lr", &O::lr, "Adam learning rate of the latents (LangSplat's)")
+        .add("lambda-sam", &O::lambda_sam, "weight of the SAM term inside CityGML coverage")
+        .add("lambda-citygml", &O::lambda_citygml, "weight of the CityGML term inside coverage")
+        .add("normalize-latents", &O::normalize_latents,
+             "LangSplat's splatting: each Gaussian's latent divided by its norm before it is splatted (default: raw "
+             "latents; docs/language.md measures both)")
+        .add("checkpoint-every", &O::checkpoint_every, "iterations between checkpoints (0 = only on interrupt)",
+             R::Control)
+        .add("resume", &O::resume, "continue from OUT/checkpoints/language.safetensors if present", R::Control)
+        .add("seed", &O::seed, "seed of the view order")
+        .add("test-every", &O::test_every,
+             "leave every this-th view (sorted by name) out of training, as train-rgb: the views `evaluate` scores in "
+             "2D (0 = train on all)")
+        .add("device", &O::device, "auto, cpu or cuda", R::Control);
+    return o;
+  }();
+  return list;
+}
+
 LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   if (o.iterations < 1) throw UsageError("--iterations must be at least 1");
@@ -244,7 +282,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
   const std::vector<ViewTargets> views = load_targets(scene, o, autoencoder, device);
   const int nviews = int(views.size());
   const nlohmann::json config = run_config(o, n, latent, views.size());
-  const std::string checkpoint_path = (fs::path(o.out_dir) / "checkpoints" / "language.safetensors").string();
+  const std::string checkpoint_path = (RunLayout::checkpoints(o.out_dir) / "language.safetensors").string();
 
   TrainState s;
   Adam adam(0.9, 0.999, 1e-15);

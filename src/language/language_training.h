@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 
+#include "core/option_list.h"
 #include "language/autoencoder.h"
 #include "scene/scene.h"
 
@@ -41,6 +42,9 @@ struct LanguageTrainReport {
   double final_loss[3] = {0, 0, 0};
   bool interrupted = false;  // stopped by a signal after writing a checkpoint
 };
+
+// The options of `train-language`, declared once; their settings make run's fingerprint of the stage.
+const OptionList<LanguageTrainOptions>& language_train_options();
 
 LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOptions& options);
 

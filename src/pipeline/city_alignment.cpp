@@ -19,11 +19,11 @@ constexpr double kAlignCoarseLoss = 0.01;
 }  // namespace
 
 CityAlignment align_city_model(const Scene& scene, SceneCityModel& city, const std::string& mode, double threshold,
-                               const std::filesystem::path& out_dir) {
+                               const std::filesystem::path& refined_transform) {
   CityAlignment a;
   a.record = {{"mode", mode}, {"applied", false}};
   // A transform refined by an earlier run stays only while it is the one used.
-  std::filesystem::remove(out_dir / "align" / "transform.json");
+  std::filesystem::remove(refined_transform);
   if (mode == "off") return a;
   if (scene.points.empty() && mode == "refine")
     fail(scene.root, "--align refine: the scene has no sparse points to refine the city transform with");
@@ -71,7 +71,7 @@ CityAlignment align_city_model(const Scene& scene, SceneCityModel& city, const s
     }
   }
   a.applied = true;
-  a.transform = out_dir / "align" / "transform.json";
+  a.transform = refined_transform;
   std::filesystem::create_directories(a.transform.parent_path());
   write_city_transform(a.transform.string(), r.refined);
   a.record["applied"] = true;

@@ -1,6 +1,7 @@
 #pragma once
 // `run --align`: refine the city transform from the scene's sparse points before the label maps
-// (docs/alignment.md). The refined transform is written to OUT/align/transform.json and used from then on.
+// (docs/alignment.md). The refined transform is written to the run's align transform
+// (RunLayout::align_transform) and used from then on.
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -25,6 +26,6 @@ struct CityAlignment {
 // "off", "refine" (always apply; a failed refinement or a scene without points is an error) or "auto"
 // (see kAlignApplyMetres; a failed refinement is a warning). Updates `city` when applied.
 CityAlignment align_city_model(const Scene& scene, SceneCityModel& city, const std::string& mode, double threshold,
-                               const std::filesystem::path& out_dir);
+                               const std::filesystem::path& refined_transform);
 
 }  // namespace cls

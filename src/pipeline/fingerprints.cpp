@@ -10,7 +10,7 @@ namespace cls {
 namespace fs = std::filesystem;
 namespace {
 
-uint64_t views_fingerprint(const Scene& scene, uint64_t h) {
+uint64_t hash_views(const Scene& scene, uint64_t h) {
   for (const SceneView& v : scene.views) {
     const PinholeCamera& c = v.camera;
     char buf[512];
@@ -28,19 +28,15 @@ uint64_t views_fingerprint(const Scene& scene, uint64_t h) {
 
 }  // namespace
 
-std::string labels_fingerprint(const PipelineConfig& config, const Scene& scene) {
-  uint64_t h = fnv1a64(read_text_file(config.city));
-  if (!config.city_transform.empty()) h = fnv1a64(read_text_file(config.city_transform), h);
-  if (!config.city_options.taxonomy_path.empty()) h = fnv1a64(read_text_file(config.city_options.taxonomy_path), h);
-  h = fnv1a64(std::to_string(config.city_options.lod), h);
-  return hex64(views_fingerprint(scene, h));
-}
+std::string views_fingerprint(const Scene& scene) { return hex64(hash_views(scene, fnv1a64("views"))); }
 
 std::string images_fingerprint(const Scene& scene) {
-  uint64_t h = views_fingerprint(scene, fnv1a64("images"));
+  uint64_t h = hash_views(scene, fnv1a64("images"));
   for (const SceneView& v : scene.views) h = fnv1a64(read_text_file(v.image_path), h);
   return hex64(h);
 }
+
+std::string file_fingerprint(const fs::path& file) { return file.empty() ? "" : file_fnv1a64_hex(file); }
 
 std::string features_fingerprint(const fs::path& features_dir) {
   const std::string text = read_text_file(features_dir / "features.json");

@@ -1,76 +1,129 @@
 #include "pipeline/pipeline_config.h"
 
+#include <algorithm>
+
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/run_layout.h"
+#include "pipeline/pipeline.h"
 
 namespace cls {
 namespace fs = std::filesystem;
 
-ModelsChoice parse_models_choice(const std::string& name) {
-  if (name == "auto") return ModelsChoice::Auto;
-  if (name == "real") return ModelsChoice::Real;
-  if (name == "tiny") return ModelsChoice::Tiny;
-  if (name == "synthetic") return ModelsChoice::Synthetic;
-  if (name == "image-segments") return ModelsChoice::ImageSegments;
-  throw UsageError("run: --models must be auto, real, tiny, synthetic or image-segments, not '" + name + "'");
-}
+const std::vector<std::string> kBaselines = {"langsplat", "langsplat-original"};
 
-const char* models_choice_name(ModelsChoice choice) {
-  switch (choice) {
-    case ModelsChoice::Auto: return "auto";
-    case ModelsChoice::Real: return "real";
-    case ModelsChoice::Tiny: return "tiny";
-    case ModelsChoice::Synthetic: return "synthetic";
-    case ModelsChoice::ImageSegments: return "image-segments";
-  }
-  return "?";
+ProviderChoice PipelineConfig::auto_features() {
+  ProviderChoice c;
+  c.models = kAutoModels;
+  return c;
 }
 
 void PipelineConfig::validate() const {
   if (resolution != 1 && resolution != 2 && resolution != 4 && resolution != 8)
     throw UsageError("run: --resolution must be 1, 2, 4 or 8");
-  if (regions != "class" && regions != "instance") throw UsageError("run: --regions must be class or instance");
   if (rgb_iterations < 0 || language_iterations < 0 || autoencoder_epochs < 0)
-    throw UsageError("run: iteration and epoch counts must not be negative (0: the feature source's default)");
+    throw UsageError("run: iteration and epoch counts must not be negative (0: the feature provider's schedule)");
   if (!(alpha >= 0 && alpha <= 1)) throw UsageError("run: --alpha must be in [0, 1]");
-  if (models == ModelsChoice::ImageSegments && resolution != 1)
+  if (features.models == "image-segments" && resolution != 1)
     throw UsageError("run: --models image-segments reads the full-resolution ground truth: use -r 1");
   if (!(align_distance >= 0)) throw UsageError("run: --align-distance must be >= 0");
-  if (align != "off" && align != "refine" && align != "auto") throw UsageError("run: --align must be off, refine or auto");
   if (city.empty())
     throw UsageError("run: no city model: give --city, or a scene.json / --config with \"city_model\"");
   if (!rgb_model.empty() && !fs::exists(rgb_model)) fail(rgb_model, "--rgb-model: file not found");
-  if (!autoencoder.empty() && baseline_original)
+  const bool original = std::find(baselines.begin(), baselines.end(), "langsplat-original") != baselines.end();
+  if (!autoencoder.empty() && original)
     throw UsageError("run: --baseline langsplat-original trains its own autoencoder: not with --autoencoder (tiles)");
-  if (!autoencoder.empty() && !stop_after_features && !fs::exists(autoencoder))
+  if (!autoencoder.empty() && stop_after != "features" && !fs::exists(autoencoder))
     fail(autoencoder, "--autoencoder: file not found");
 }
 
-nlohmann::json PipelineConfig::to_json() const {
-  return {{"scene", scene_dir.string()},
-          {"out", out_dir.string()},
-          {"city_model", city},
-          {"city_transform", city_transform},
-          {"taxonomy", city_options.taxonomy_path},
-          {"lod", city_options.lod},
-          {"resolution", resolution},
-          {"align_distance", align_distance},
-          {"align", align},
-          {"models", models_choice_name(models)},
-          {"clip", clip_weights},
-          {"sam", sam_weights},
-          {"alpha", alpha},
-          {"regions", regions},
-          {"rgb_model", rgb_model},
-          {"rgb_iterations", rgb_iterations},
-          {"language_iterations", language_iterations},
-          {"autoencoder_epochs", autoencoder_epochs},
-          {"lambda_sam", lambda_sam},
-          {"lambda_citygml", lambda_citygml},
-          {"baseline", baseline},
-          {"baseline_original", baseline_original},
-          {"autoencoder", autoencoder},
-          {"stop_after_features", stop_after_features}};
+namespace {
+
+// --baseline: a comma-separated list of kBaselines, or none.
+Codec<std::vector<std::string>> baselines_codec() {
+  Codec<std::vector<std::string>> c = default_codec<std::vector<std::string>>();
+  const auto check = [](std::vector<std::string> names) {
+    if (names.size() == 1 && names[0] == "none") return std::vector<std::string>{};
+    for (const std::string& n : names)
+      if (std::find(kBaselines.begin(), kBaselines.end(), n) == kBaselines.end())
+        throw std::invalid_argument("takes " + one_of(kBaselines) + " (comma-separated) or none, not '" + n + "'");
+    return names;
+  };
+  c.text = [text = c.text](const std::vector<std::string>& v) { return v.empty() ? std::string("none") : text(v); };
+  c.parse = [check, parse = c.parse](const std::string& s) { return check(parse(s)); };
+  c.from_json = [check, from = c.from_json](const nlohmann::json& j) { return check(from(j)); };
+  return c;
+}
+
+std::string schedule_help(int Schedule::*count) {
+  std::string s;
+  for (const FeatureProviderInfo& p : feature_providers())
+    s += (s.empty() ? "" : ", ") + p.name + " " + std::to_string(p.schedule.*count);
+  return "0: the feature provider's (" + s + ")";
+}
+
+OptionList<PipelineConfig> make_pipeline_options() {
+  using C = PipelineConfig;
+  using R = OptionRole;
+  OptionList<C> o;
+  o.add("scene", &C::scene_dir, "scene directory (COLMAP or Pix4D, images under SCENE_DIR/images)", R::Location)
+      .positional("SCENE_DIR").per_scene()
+      .add("out", &C::out_dir, "output directory", R::Location).default_text("SCENE_DIR/citylangsplat").per_scene()
+      .add("city", &C::city, "city model: CityGML, CityJSON or CityJSONSeq (overrides the config)", R::Location)
+      .per_scene()
+      .add("city-transform", &C::city_transform, "city transform JSON (overrides the config; identity if none)",
+           R::Location)
+      .per_scene()
+      .add("lod", [](C& c) -> int& { return c.city_options.lod; }, "level of detail: 1, 2, 3 or highest (overrides the config)",
+           R::Setting, lod_codec())
+      .per_scene()
+      .add("taxonomy", [](C& c) -> std::string& { return c.city_options.taxonomy_path; },
+           "taxonomy JSON (overrides the config; the built-in one if none)", R::Location)
+      .per_scene()
+      .add("resolution", &C::resolution, "divide the image size by 1, 2, 4 or 8").short_name("r")
+      .add("align-distance", &C::align_distance, "alignment check: distance threshold in city-model metres")
+      .add("align", &C::align,
+           "refine the city transform from the sparse points before raycasting (as `align`): refine, off, or auto "
+           "(refine, and use it when it moves the model by more than 5 cm)",
+           R::Setting, choice_codec({"off", "refine", "auto"}))
+      .include(provider_options(), &C::features, {"models", "clip", "sam"})
+      .add("alpha", &C::alpha, "text-guidance weight of the CityGML features, in [0, 1]")
+      .add("regions", &C::regions, "CityGML regions: class (one per class and view) or instance", R::Setting,
+           choice_codec({"class", "instance"}))
+      .add("rgb-model", &C::rgb_model, "import this 3DGS PLY instead of training the photometric model", R::Location)
+      .per_scene()
+      .add("rgb-iterations", &C::rgb_iterations, "photometric iterations; " + schedule_help(&Schedule::rgb_iterations))
+      .add("language-iterations", &C::language_iterations,
+           "language iterations per level; " + schedule_help(&Schedule::language_iterations))
+      .add("autoencoder-epochs", &C::autoencoder_epochs,
+           "autoencoder epochs; " + schedule_help(&Schedule::autoencoder_epochs))
+      .add("lambda-sam", &C::lambda_sam, "weight of the SAM term in covered pixels")
+      .add("lambda-citygml", &C::lambda_citygml, "weight of the CityGML term")
+      .add("baseline", &C::baselines,
+           "baselines beside CityLangSplat, comma-separated: langsplat (LangSplat's objective on the shared "
+           "autoencoder), langsplat-original (LangSplat as published: its 3-d autoencoder and settings, "
+           "normalised splatting), or none",
+           R::Setting, baselines_codec())
+      .add("autoencoder", &C::autoencoder,
+           "use this autoencoder (e.g. the one shared by all tiles, docs/scale.md) instead of training one",
+           R::Location)
+      .per_scene()
+      .add("stop-after", &C::stop_after,
+           "stop after this step (" + one_of(pipeline_step_names()) + "), or none",
+           R::Control, [] {
+             std::vector<std::string> names = pipeline_step_names();
+             names.insert(names.begin(), "none");
+             return choice_codec(names);
+           }())
+      .per_scene();
+  return o;
+}
+
+}  // namespace
+
+const OptionList<PipelineConfig>& pipeline_options() {
+  static const OptionList<PipelineConfig> list = make_pipeline_options();
+  return list;
 }
 
 void read_scene_config(const fs::path& file, PipelineConfig& config) {
@@ -95,6 +148,22 @@ void read_scene_config(const fs::path& file, PipelineConfig& config) {
     if (!j["lod"].is_number_integer()) fail(file.string(), "\"lod\" must be an integer (0 = highest)");
     config.city_options.lod = j["lod"].get<int>();
   }
+}
+
+}  // namespace cls
+
+namespace cls {
+
+bool is_scene_config_option(const OptionList<PipelineConfig>::Binding& b) {
+  return b.name == "city" || b.name == "city-transform" || b.name == "lod" || b.name == "taxonomy";
+}
+
+void apply_scene_config(const Args& args, const fs::path& config_file, PipelineConfig& config) {
+  const fs::path file = config_file.empty() ? SceneFiles{config.scene_dir}.config() : config_file;
+  if (!config_file.empty() && !fs::exists(file)) fail(file.string(), "config file not found");
+  if (!fs::exists(file)) return;
+  read_scene_config(file, config);
+  pipeline_options().apply(args, config, is_scene_config_option);  // the command line over the file
 }
 
 }  // namespace cls

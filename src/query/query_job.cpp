@@ -17,6 +17,7 @@
 #include "core/log.h"
 #include "core/npy.h"
 #include "core/progress.h"
+#include "core/run_layout.h"
 #include "core/strings.h"
 #include "features/feature_provider.h"
 #include "language/language_model.h"
@@ -100,34 +101,30 @@ json write_object_ranking(const LanguageModel& model, const std::string& text, c
 
 }  // namespace
 
-json run_query(const QueryOptions& o) {
+namespace {
+
+// The texts trimmed; cls::UsageError for none or an empty one.
+std::vector<std::string> query_texts(const QueryOptions& o) {
   if (o.texts.empty()) throw UsageError("query: give at least one query text");
   std::vector<std::string> texts;
   for (const auto& t : o.texts) {
     if (trim_space(t).empty()) throw UsageError("query: a query text is empty");
     texts.push_back(trim_space(t));
   }
-  const int fixed_level = parse_query_level(o.level, "query: --level");
+  return texts;
+}
+
+}  // namespace
+
+json run_query(const QueryOptions& o) {
+  query_texts(o);
+  parse_query_level(o.level, "query: --level");
   if (o.use_top_k && o.top_k < 0) throw UsageError("query: --top-k must not be negative");
   if (!fs::is_directory(o.model_dir)) fail(o.model_dir, "not a directory (expected a language model: model.json, point_cloud.ply, latents.safetensors, autoencoder.safetensors)");
 
   at::NoGradGuard no_grad;
   LanguageModel model = load_language_model(o.model_dir);
-  if (o.objects && model.objects.objects.empty())
-    fail(o.model_dir, "has no city object per Gaussian (city_objects.json): train it again from label maps of this "
-                      "version's `raycast` (they write objects.json and object.npy), or query without --objects");
-  // Rendering, decoding and scoring run on `device`; the model's CPU tensors stay for writing PLYs.
-  const c10::Device device = parse_device(o.device);
-  model.autoencoder.to(device);
-  GaussianModel geometry_on_device = model.gaussians;
-  for (at::Tensor* t : {&geometry_on_device.means, &geometry_on_device.log_scales, &geometry_on_device.quats,
-                        &geometry_on_device.opacity_logits})
-    *t = t->to(device);
-  std::array<at::Tensor, 3> latents_on_device;
-  for (int l = 0; l < 3; ++l) latents_on_device[l] = model.latents[l].to(device);
-  const std::string model_json = (fs::path(o.model_dir) / "model.json").string();
-  const fs::path out = o.out_dir.empty() ? fs::path(o.model_dir) / "query" : fs::path(o.out_dir);
-
+  const std::string model_json = LanguageModelFiles{o.model_dir}.model_json().string();
   // The views of the maps, resolved before any work so that a wrong name fails early.
   Scene scene;
   std::vector<const SceneView*> views;
@@ -140,12 +137,35 @@ json run_query(const QueryOptions& o) {
     scene = load_scene(scene_dir, scene_options);
     views = find_views(scene, o.views, "query");
   }
+  // The text side: the model's own provider.
+  const auto provider = model_provider(model, model_json, model_taxonomy(model.info, model_json, o.taxonomy_path));
+  return run_query(model, *provider, views, o);
+}
+
+json run_query(LanguageModel& model, FeatureProvider& provider, const std::vector<const SceneView*>& views,
+               const QueryOptions& o) {
+  const std::vector<std::string> texts = query_texts(o);
+  const int fixed_level = parse_query_level(o.level, "query: --level");
+  if (o.use_top_k && o.top_k < 0) throw UsageError("query: --top-k must not be negative");
+  at::NoGradGuard no_grad;
+  if (o.objects && model.objects.objects.empty())
+    fail(o.model_dir, "has no city object per Gaussian (city_objects.json): train it again from label maps of this "
+                      "version's `raycast` (they write objects.json and object.npy), or query without --objects");
+  check_provider_fits(model, provider, LanguageModelFiles{o.model_dir}.model_json().string());
+  // Rendering, decoding and scoring run on `device`; the model's CPU tensors stay for writing PLYs.
+  const c10::Device device = parse_device(o.device);
+  model.autoencoder.to(device);
+  GaussianModel geometry_on_device = model.gaussians;
+  for (at::Tensor* t : {&geometry_on_device.means, &geometry_on_device.log_scales, &geometry_on_device.quats,
+                        &geometry_on_device.opacity_logits})
+    *t = t->to(device);
+  std::array<at::Tensor, 3> latents_on_device;
+  for (int l = 0; l < 3; ++l) latents_on_device[l] = model.latents[l].to(device);
+  const fs::path out = o.out_dir.empty() ? LanguageModelFiles{o.model_dir}.queries() : fs::path(o.out_dir);
   fs::create_directories(out);
 
-  // The text side: the model's own provider and encoder.
-  const auto provider = model_provider(model, model_json, model_taxonomy(model.info, model_json, o.taxonomy_path));
-  const at::Tensor text_features = provider->text_features(texts).to(device, torch::kFloat32);  // K x D
-  const at::Tensor query_latents = model.autoencoder.encode(text_features);               // K x L
+  const at::Tensor text_features = provider.text_features(texts).to(device, torch::kFloat32);  // K x D
+  const at::Tensor query_latents = model.autoencoder.encode(text_features);                // K x L
   const std::vector<std::string> slugs = unique_slugs(texts);
   const int64_t K = static_cast<int64_t>(texts.size());
 
@@ -189,8 +209,8 @@ json run_query(const QueryOptions& o) {
 
   // Relevance maps per view: one render + decode per (view, level) for all texts of that level.
   json views_done = json::array();
-  if (o.maps) {
-    const at::Tensor canonical = provider->text_features(canonical_phrases()).to(device, torch::kFloat32);
+  if (!views.empty()) {
+    const at::Tensor canonical = provider.text_features(canonical_phrases()).to(device, torch::kFloat32);
     const LinearHeadDecoder decoder = linear_head_decoder(model.autoencoder);
     std::map<int, std::vector<int64_t>> texts_of_level;
     for (int64_t k = 0; k < K; ++k) texts_of_level[level_of[k]].push_back(k);
@@ -221,7 +241,7 @@ json run_query(const QueryOptions& o) {
 
   json result{{"model", fs::absolute(o.model_dir).string()},
               {"method", model.info.value("method", "")},
-              {"provider", provider->spec()},
+              {"provider", provider.spec()},
               {"level_requested", o.level},
               {"device", device.str()},
               {"gaussians", model.gaussians.size()},
@@ -229,7 +249,7 @@ json run_query(const QueryOptions& o) {
               {"scores_file", "scores.ply"},
               {"canonical_phrases", canonical_phrases()},
               {"views", views_done}};
-  if (o.maps)
+  if (!views.empty())
     result["maps"] = {{"colormap", "turbo (OpenCV COLORMAP_TURBO): dark blue = range low, dark red = range high"},
                       {"legend", "maps/legend_turbo.png"},
                       {"cosine_range", {kCosineRange[0], kCosineRange[1]}},

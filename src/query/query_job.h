@@ -9,6 +9,10 @@
 // their Gaussians (OUT/objects_<slug>.json and .csv, the top rows printed). See docs/query.md.
 #include <nlohmann/json.hpp>
 
+#include "features/feature_provider.h"
+#include "language/language_model.h"
+#include "scene/scene.h"
+
 #include <string>
 #include <vector>
 
@@ -35,8 +39,15 @@ struct QueryOptions {
 constexpr double kCosineRange[2] = {0.0, 1.0};
 constexpr double kRelevancyRange[2] = {0.0, 1.0};
 
-// Runs the queries and returns what it wrote to OUT/query.json. cls::UsageError for bad options
-// (empty text, unknown level or view names), cls::Error naming the file for a broken model dir.
+// Runs the queries and returns what it wrote to OUT/query.json: the model, its scene's views and its
+// feature provider read from options.model_dir. cls::UsageError for bad options (empty text, unknown
+// level or view names), cls::Error naming the file for a broken model dir.
 nlohmann::json run_query(const QueryOptions& options);
+
+// The same on a loaded model (its autoencoder moves to options.device), with the provider its features
+// came from and the views of the relevance maps (none: no maps); options.model_dir names the model in the
+// record and in errors. What `run` calls with the scene and provider it already holds.
+nlohmann::json run_query(LanguageModel& model, FeatureProvider& provider, const std::vector<const SceneView*>& views,
+                         const QueryOptions& options);
 
 }  // namespace cls

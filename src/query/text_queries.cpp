@@ -60,11 +60,15 @@ std::unique_ptr<FeatureProvider> model_provider(const LanguageModel& model, cons
   if (!model.info.contains("provider") || !model.info["provider"].is_object())
     fail(model_json, "no \"provider\" spec recorded (the feature provider the model was trained with)");
   auto provider = make_feature_provider(model.info["provider"], taxonomy);
-  const int D = model.autoencoder.config().input_dim;
-  if (provider->dim() != D)
-    fail(model_json, "provider '" + provider->name() + "' gives " + std::to_string(provider->dim()) +
-                         "-d features, the autoencoder expects " + std::to_string(D));
+  check_provider_fits(model, *provider, model_json);
   return provider;
+}
+
+void check_provider_fits(const LanguageModel& model, const FeatureProvider& provider, const std::string& model_json) {
+  const int D = model.autoencoder.config().input_dim;
+  if (provider.dim() != D)
+    fail(model_json, "provider '" + provider.name() + "' gives " + std::to_string(provider.dim()) +
+                         "-d features, the autoencoder expects " + std::to_string(D));
 }
 
 LevelScores score_levels(const std::array<at::Tensor, 3>& latents, const at::Tensor& query_latent) {

@@ -32,6 +32,8 @@ int parse_query_level(const std::string& level, const std::string& what);
 // size. cls::Error naming `model_json` when the spec is missing or the sizes differ.
 std::unique_ptr<FeatureProvider> model_provider(const LanguageModel& model, const std::string& model_json,
                                                 const Taxonomy& taxonomy);
+// cls::Error naming model_json when the provider's features are not the size the model's autoencoder takes.
+void check_provider_fits(const LanguageModel& model, const FeatureProvider& provider, const std::string& model_json);
 
 // Per-Gaussian scores of one query latent at each level (gaussian_scores, on the CPU), their maxima, and
 // LangSplat's choice: the level with the highest maximum score (ties: the lower level).

@@ -14,6 +14,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/run_layout.h"
 #include "core/strings.h"
 #include "core/image_file.h"
 #include "core/log.h"
@@ -148,7 +149,7 @@ Queries prepare_queries(const LanguageModel& model, const std::string& model_dir
   Queries q;
   q.texts = texts;
   q.slugs = unique_slugs(texts);
-  const std::string model_json = (fs::path(model_dir) / "model.json").string();
+  const std::string model_json = LanguageModelFiles{model_dir}.model_json().string();
   const auto provider = model_provider(model, model_json, model_taxonomy(model.info, model_json, taxonomy_path));
   q.features = provider->text_features(texts).to(torch::kFloat32);
   q.canonical = provider->text_features(canonical_phrases()).to(torch::kFloat32);
@@ -177,11 +178,11 @@ LabelSources find_label_sources(const RenderOptions& o, const Scene& scene, cons
   }
   if (!o.taxonomy_path.empty()) taxonomy = Taxonomy::load(o.taxonomy_path);
   else if (s.map_dirs.empty() && model.language)
-    taxonomy = model_taxonomy(model.language->info, (fs::path(o.model) / "model.json").string(), "");
+    taxonomy = model_taxonomy(model.language->info, LanguageModelFiles{o.model}.model_json().string(), "");
   if (!o.labels_dir.empty()) check_label_legend(o.labels_dir, taxonomy);
   for (const SemanticClass& c : taxonomy.classes) s.colours.push_back(c.color);
 
-  s.gt_path = o.gt_points.empty() ? (fs::path(scene.root) / "gt" / "points.ply").string() : o.gt_points;
+  s.gt_path = o.gt_points.empty() ? SceneFiles{scene.root}.gt_points().string() : o.gt_points;
   if (!o.gt_points.empty() && !fs::exists(o.gt_points)) fail(o.gt_points, "no such labelled point cloud");
   if (fs::exists(s.gt_path)) {
     s.gt = read_labelled_points(s.gt_path);
@@ -232,10 +233,16 @@ json render_views(const RenderOptions& o) {
   SceneOptions scene_options;
   scene_options.resolution_factor = o.resolution;
   scene_options.check_images = false;  // a missing photo only drops that view's comparison
-  const Scene scene = load_scene(scene_dir, scene_options);
+  return render_views(model, load_scene(scene_dir, scene_options), o);
+}
+
+json render_views(const RenderModel& model, const Scene& scene, const RenderOptions& o) {
+  check_options(o);
+  at::NoGradGuard no_grad;
+  const std::string& scene_dir = scene.root;
   const auto views = pick_views(scene, o);
 
-  const bool gt_exists = !o.gt_points.empty() || fs::exists(fs::path(scene_dir) / "gt" / "points.ply");
+  const bool gt_exists = !o.gt_points.empty() || fs::exists(SceneFiles{scene_dir}.gt_points());
   const Wanted want = parse_what(o.what, model.language.has_value(), !o.labels_dir.empty() || gt_exists);
   LabelSources labels;
   json notes = json::array();

@@ -6,6 +6,9 @@
 // described by OUT/render.json. See docs/render.md.
 #include <nlohmann/json.hpp>
 
+#include "render/render_model.h"
+#include "scene/scene.h"
+
 #include <string>
 #include <vector>
 
@@ -36,5 +39,10 @@ std::vector<std::string> split_what(const std::string& what);
 // to OUT). cls::UsageError for bad options (unknown view or --what item, a language output asked of a
 // photometric model), cls::Error naming the file for unreadable inputs.
 nlohmann::json render_views(const RenderOptions& options);
+
+// The same on a loaded model and scene (options.model names the model in the record and finds a language
+// model's taxonomy; options.scene_dir and resolution are the scene's business here). What `run` calls
+// with the scene it already holds.
+nlohmann::json render_views(const RenderModel& model, const Scene& scene, const RenderOptions& options);
 
 }  // namespace cls

@@ -4,6 +4,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/run_layout.h"
 #include "query/text_queries.h"
 #include "splat/model_layout.h"
 #include "splat/ply_gaussians.h"
@@ -35,10 +36,10 @@ RenderModel load_render_model(const std::string& path) {
     m.ply = path;
   } else if (!fs::is_directory(p)) {
     fail(path, "no such file or directory (expected a 3DGS PLY or a model directory)");
-  } else if (fs::is_regular_file(p / "model.json")) {
+  } else if (fs::is_regular_file(LanguageModelFiles{p}.model_json())) {
     m.kind = "language";
     m.language = load_language_model(path);
-    m.ply = (p / "point_cloud.ply").string();
+    m.ply = LanguageModelFiles{p}.geometry().string();
     m.gaussians = m.language->gaussians;
     m.recorded_scene = recorded_scene(m.language->info);
     return m;

@@ -15,6 +15,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/metrics_log.h"
+#include "core/run_layout.h"
 #include "eval/evaluation_tables.h"
 #include "report/html.h"
 #include "report/svg_chart.h"
@@ -28,9 +29,8 @@ namespace {
 // Per-view image grids show the first views only: a page of hundreds of images helps nobody.
 constexpr size_t kMaxViews = 12;
 
-// The stages in `run`'s order, for a run.json that does not list them ("stages").
-const char* const kStageOrder[] = {"labels", "features", "autoencoder", "train-rgb", "render", "train-language",
-                                   "query", "evaluate"};
+// The run's files relative to its directory, as the page links them.
+const RunLayout kRun;
 
 // A stage's record: run.json[name], or for a stage run once per method ("train-language/langsplat",
 // docs/pipeline.md) run.json["train-language"]["langsplat"]; null when absent.
@@ -224,13 +224,17 @@ void header(Page& page, const json& run) {
 }
 
 void stages(Page& page, const json& run) {
+  // In the order they ran (run_record.h); a run.json without that list (hand-made, or older than it)
+  // shows every record that has a status, by name.
   std::vector<std::string> names;
   if (run.contains("stages") && run["stages"].is_array()) {
     for (const json& s : run["stages"])
       if (s.is_string()) names.push_back(s);
   } else {
-    for (const char* s : kStageOrder)
-      if (run.contains(s)) names.push_back(s);
+    const auto has_status = [](const json& v) { return v.is_object() && v.contains("status"); };
+    for (const auto& [key, value] : run.items())
+      if (has_status(value) || (value.is_object() && !value.empty() && std::all_of(value.begin(), value.end(), has_status)))
+        names.push_back(key);
   }
   if (names.empty()) {
     page.missing("run.json records no stage");
@@ -284,7 +288,7 @@ void stages(Page& page, const json& run) {
 // The class colours of labels/legend.json, by name (empty when absent).
 std::vector<std::pair<std::string, json>> legend_classes(Page& page) {
   std::vector<std::pair<std::string, json>> classes;
-  const json legend = page.read_json("labels/legend.json");
+  const json legend = page.read_json(kRun.labels() / "legend.json");
   if (legend.is_array())
     for (const json& c : legend)
       if (c.is_object() && c.contains("name") && c["name"].is_string())
@@ -299,8 +303,8 @@ void cut_note(Page& page, size_t shown, size_t total) {
 
 void label_maps(Page& page, const std::vector<std::pair<std::string, json>>& classes) {
   std::vector<std::string> views;
-  for (const std::string& v : page.subdirectories("labels"))
-    if (page.has(fs::path("labels") / v / "preview.png")) views.push_back(v);
+  for (const std::string& v : page.subdirectories(kRun.labels()))
+    if (page.has(kRun.labels() / v / "preview.png")) views.push_back(v);
   if (views.empty()) {
     page.missing("no label-map previews (labels/<view>/preview.png)");
     return;
@@ -312,7 +316,7 @@ void label_maps(Page& page, const std::vector<std::pair<std::string, json>>& cla
   cut_note(page, shown, views.size());
   page.html << "<div class=\"grid\">\n";
   for (size_t i = 0; i < shown; ++i)
-    page.html << page.figure(fs::path("labels") / views[i] / "preview.png", views[i], "labels") << "\n";
+    page.html << page.figure(kRun.labels() / views[i] / "preview.png", views[i], "labels") << "\n";
   page.html << "</div>\n";
 }
 
@@ -324,7 +328,7 @@ void charts(Page& page, const std::vector<std::string>& svgs) {
 
 void photometric(Page& page) {
   page.html << "<h3>Training curves</h3>\n";
-  const std::vector<json> rows = page.read_rows("rgb/metrics.jsonl");
+  const std::vector<json> rows = page.read_rows(kRun.rgb() / "metrics.jsonl");
   if (rows.empty()) {
     page.missing("no training curves (rgb/metrics.jsonl)");
   } else {
@@ -341,7 +345,7 @@ void photometric(Page& page) {
   }
 
   page.html << "<h3>Test views: photo | render</h3>\n";
-  const json render = page.read_json("render/render.json");
+  const json render = page.read_json(kRun.render() / "render.json");
   if (!render.is_object()) {
     page.missing("no renders (render/render.json: run `citylangsplat render`)");
     return;
@@ -354,7 +358,7 @@ void photometric(Page& page) {
     for (const json& v : render["views"])
       if (v.is_object() && v.value("split", "") == "test") test.push_back(v);
   if (test.empty()) {
-    page.missing("render/render.json lists no test view");
+    page.missing((kRun.render() / "render.json").string() + " lists no test view");
     return;
   }
   const size_t shown = std::min(test.size(), kMaxViews);
@@ -363,7 +367,7 @@ void photometric(Page& page) {
   for (size_t i = 0; i < shown; ++i) {
     const json& v = test[i];
     const json files = v.value("files", json::object());
-    auto file = [&](const char* key) { return fs::path("render") / (files.is_object() ? files.value(key, "") : ""); };
+    auto file = [&](const char* key) { return kRun.render() / (files.is_object() ? files.value(key, "") : ""); };
     const std::string name = v.value("name", "view");
     page.html << "<div><div class=\"pair\">" << page.figure(file("photo"), "photo") << page.figure(file("rgb"), "render")
               << "</div><p class=\"note\">" << html_escape(name) << ": PSNR " << fixed(v.value("psnr", NAN), 2)
@@ -375,7 +379,7 @@ void photometric(Page& page) {
 // The methods of a per-method stage ("train-language", "query"): those run.json records for it, so that
 // leftovers of an earlier run in the same directory are not shown; the folder's sub-directories when
 // run.json records none.
-std::vector<std::string> methods_of(const Page& page, const json& run, const char* stage, const char* folder) {
+std::vector<std::string> methods_of(const Page& page, const json& run, const char* stage, const fs::path& folder) {
   std::vector<std::string> methods;
   if (run.contains(stage) && run[stage].is_object())
     for (const auto& [method, entry] : run[stage].items())
@@ -385,8 +389,8 @@ std::vector<std::string> methods_of(const Page& page, const json& run, const cha
 
 void language(Page& page, const json& run) {
   std::vector<std::string> svgs;
-  for (const std::string& method : methods_of(page, run, "train-language", "language")) {
-    const std::vector<json> rows = page.read_rows(fs::path("language") / method / "metrics.jsonl");
+  for (const std::string& method : methods_of(page, run, "train-language", kRun.languages())) {
+    const std::vector<json> rows = page.read_rows(kRun.language(method) / "metrics.jsonl");
     if (rows.empty()) continue;
     std::vector<ChartSeries> levels;
     for (int l = 1; l <= 3; ++l)
@@ -404,8 +408,8 @@ void language(Page& page, const json& run) {
 
 void queries(Page& page, const json& run) {
   std::vector<std::pair<std::string, json>> methods;  // method -> query.json
-  for (const std::string& m : methods_of(page, run, "query", "query")) {
-    const json q = page.read_json(fs::path("query") / m / "query.json");
+  for (const std::string& m : methods_of(page, run, "query", kRun.queries())) {
+    const json q = page.read_json(kRun.query(m) / "query.json");
     if (q.is_object() && q.contains("queries") && q["queries"].is_array()) methods.emplace_back(m, q);
   }
   if (methods.empty()) {
@@ -414,7 +418,7 @@ void queries(Page& page, const json& run) {
   }
   page.note("LangSplat's relevancy of each class prompt against the canonical phrases, rendered for the first view; "
             "colour map turbo over [0, 1] (dark blue: low, dark red: high).");
-  const fs::path legend = fs::path("query") / methods.front().first / "maps" / "legend_turbo.png";
+  const fs::path legend = kRun.query(methods.front().first) / "maps" / "legend_turbo.png";
   if (page.has(legend)) page.html << page.figure(legend, "relevancy 0 → 1") << "\n";
   std::vector<std::string> texts;  // every class, in first-seen order
   for (const auto& [m, q] : methods)
@@ -438,7 +442,7 @@ void queries(Page& page, const json& run) {
           if (ends_with(file, "_relevancy.png")) {
             const std::string caption = "level " + number_text(e->value("level", json())) + ", max score " +
                                         fixed(e->value("scores", json::object()).value("max", NAN), 3);
-            maps += page.figure(fs::path("query") / m / file, caption, "thumb");
+            maps += page.figure(kRun.query(m) / file, caption, "thumb");
           }
         }
       if (maps.empty()) page.html << "<p class=\"missing\">no relevance map</p>";
@@ -481,7 +485,7 @@ std::vector<std::pair<std::string, json>> evaluated_methods(const json& eval) {
 }
 
 void evaluation(Page& page, const json& run, const std::vector<std::pair<std::string, json>>& legend) {
-  const json eval = page.read_json("eval/eval.json");
+  const json eval = page.read_json(kRun.eval() / "eval.json");
   if (!eval.is_object()) {
     std::string why = "no evaluation (eval/eval.json)";
     if (run.contains("evaluate") && run["evaluate"].is_object() && run["evaluate"].contains("status"))
@@ -493,7 +497,7 @@ void evaluation(Page& page, const json& run, const std::vector<std::pair<std::st
     page.html << "<div class=\"warning\">" << html_escape(eval["warning"].get<std::string>()) << "</div>\n";
   const std::vector<std::pair<std::string, json>> methods = evaluated_methods(eval);
   if (methods.empty()) {
-    page.missing("eval/eval.json holds no method's results");
+    page.missing((kRun.eval() / "eval.json").string() + " holds no method's results");
     return;
   }
   for (const ResultTable& t : evaluation_tables(methods)) result_table(page, t);
@@ -510,7 +514,7 @@ void evaluation(Page& page, const json& run, const std::vector<std::pair<std::st
   std::string gt_method;
   std::vector<std::string> stems;
   for (const auto& [m, r] : methods) {
-    stems = page.stems_of(fs::path("eval") / m / "views", "_gt.png");
+    stems = page.stems_of(kRun.eval() / m / "views", "_gt.png");
     if (!stems.empty()) {
       gt_method = m;
       break;
@@ -527,10 +531,10 @@ void evaluation(Page& page, const json& run, const std::vector<std::pair<std::st
   for (const auto& [m, r] : methods) page.html << "<th>" << html_escape(m) << "</th>";
   page.html << "</tr></thead><tbody>\n";
   for (size_t i = 0; i < shown; ++i) {
-    const fs::path gt = fs::path("eval") / gt_method / "views" / (stems[i] + "_gt.png");
+    const fs::path gt = kRun.eval() / gt_method / "views" / (stems[i] + "_gt.png");
     page.html << "<tr><td>" << html_escape(stems[i]) << "</td><td>" << page.figure(gt, "GT", "labels") << "</td>";
     for (const auto& [m, r] : methods)
-      page.html << "<td>" << page.figure(fs::path("eval") / m / "views" / (stems[i] + "_pred.png"), m, "labels")
+      page.html << "<td>" << page.figure(kRun.eval() / m / "views" / (stems[i] + "_pred.png"), m, "labels")
                 << "</td>";
     page.html << "</tr>\n";
   }
@@ -554,7 +558,7 @@ void section(Page& page, const char* id, const char* title, const std::function<
 }  // namespace
 
 fs::path write_report(const fs::path& run_dir) {
-  const fs::path run_json = run_dir / "run.json";
+  const fs::path run_json = RunLayout(run_dir).run_json();
   if (!fs::exists(run_json)) fail(run_json.string(), "not found: not a run directory (`citylangsplat run` writes it)");
   json run;
   try {
@@ -581,7 +585,7 @@ fs::path write_report(const fs::path& run_dir) {
   section(page, "queries", "Queries: relevance maps", [&](Page& p) { queries(p, run); });
   section(page, "evaluation", "Evaluation", [&](Page& p) { evaluation(p, run, legend); });
   page.html << "</main>\n</body>\n</html>\n";
-  const fs::path out = run_dir / "report" / "index.html";
+  const fs::path out = RunLayout(run_dir).report_page();
   write_text_atomic(out, page.html.str());
   return out;
 }

@@ -17,6 +17,7 @@
 #include "core/log.h"
 #include "core/metrics_log.h"
 #include "core/progress.h"
+#include "core/run_layout.h"
 #include "scene/image_loader.h"
 #include "scene/view_selection.h"
 #include "splat/adam.h"
@@ -134,9 +135,6 @@ struct TrainState {
   double seconds = 0;  // training time of earlier sessions
 };
 
-std::string checkpoint_path(const std::string& out_dir) {
-  return (fs::path(out_dir) / "checkpoints" / "checkpoint.safetensors").string();
-}
 
 void save_checkpoint(const std::string& path, const Adam& adam, const DensifyStats& stats, const TrainState& s,
                      const RgbTrainOptions& options) {
@@ -250,6 +248,54 @@ void check_options(const RgbTrainOptions& o) {
 
 }  // namespace
 
+std::filesystem::path rgb_checkpoint(const std::filesystem::path& out_dir) {
+  return RunLayout::checkpoints(out_dir) / "checkpoint.safetensors";
+}
+
+int auto_densify_until(int iterations) { return std::min(RgbTrainOptions{}.densify_until, iterations / 2); }
+
+const OptionList<RgbTrainOptions>& rgb_train_options() {
+  using O = RgbTrainOptions;
+  using R = OptionRole;
+  static const OptionList<O> list = [] {
+    Codec<int> densify_until = default_codec<int>();
+    densify_until.text = [](const int& v) { return v < 0 ? std::string("auto") : std::to_string(v); };
+    densify_until.parse = [parse = densify_until.parse](const std::string& s) { return s == "auto" ? -1 : parse(s); };
+    OptionList<O> o;
+    o.add("out", &O::out_dir, "output directory", R::Location).required()
+        .add("iterations", &O::iterations, "training iterations")
+        .add("sh-degree", &O::sh_degree, "maximal spherical-harmonics degree (0-3)")
+        .add("position-lr-init", &O::position_lr_init, "position learning rate at the start (x scene extent)")
+        .add("position-lr-final", &O::position_lr_final, "position learning rate at the end (x scene extent)")
+        .add("feature-lr", &O::feature_lr, "SH DC learning rate (higher orders: /20)")
+        .add("opacity-lr", &O::opacity_lr, "opacity learning rate")
+        .add("scaling-lr", &O::scaling_lr, "log-scale learning rate")
+        .add("rotation-lr", &O::rotation_lr, "rotation learning rate")
+        .add("lambda-dssim", &O::lambda_dssim, "weight of D-SSIM in the loss (L1 gets 1 - it)")
+        .add("densify-from", &O::densify_from, "first densification after this iteration")
+        .add("densify-until", &O::densify_until,
+             "no densification from this iteration on (auto: " + std::to_string(O{}.densify_until) +
+                 ", at most half the iterations, as 3DGS's 15000 of 30000)",
+             R::Setting, densify_until)
+        .add("densify-every", &O::densify_every, "densification interval (iterations)")
+        .add("densify-grad-threshold", &O::densify_grad_threshold, "view-space gradient threshold (NDC units)")
+        .add("percent-dense", &O::percent_dense, "clone below / split above this fraction of the scene extent")
+        .add("opacity-reset-every", &O::opacity_reset_every, "opacity reset interval (iterations)")
+        .add("sh-increase-every", &O::sh_increase_every, "raise the SH degree every this many iterations")
+        .add("max-gaussians", &O::max_gaussians, "cap on the number of Gaussians (0 = none)")
+        .add("test-every", &O::test_every, "hold out every this-th view for testing (0 = none)")
+        .add("checkpoint-every", &O::checkpoint_every,
+             "checkpoint interval (iterations, 0 = only at the end / on interrupt)", R::Control)
+        .add("seed", &O::seed, "random seed (view order, backgrounds, split samples)")
+        .add("device", &O::device, "auto (CUDA where this build and machine have it), cpu or cuda", R::Control)
+        .add("random-background", &O::random_background, "a random background colour every iteration")
+        .add("white-background", &O::white_background, "white instead of black background")
+        .add("resume", &O::resume, "continue from OUT/checkpoints/checkpoint.safetensors", R::Control);
+    return o;
+  }();
+  return list;
+}
+
 RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
   check_options(options);
   const at::Device device = compute_device(options.device);
@@ -291,7 +337,7 @@ RgbTrainReport train_rgb(const Scene& scene, const RgbTrainOptions& options) {
   TrainState state;
   state.rng.seed(options.seed);
 
-  const std::string ckpt = checkpoint_path(options.out_dir);
+  const std::string ckpt = rgb_checkpoint(options.out_dir).string();
   fs::create_directories(options.out_dir);
   if (options.resume) {
     if (!fs::exists(ckpt)) throw Error(ckpt + ": no checkpoint to resume from");

@@ -13,6 +13,7 @@
 #include "core/hash.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "core/run_layout.h"
 #include "synth/box.h"
 #include "synth/drop_openings.h"
 
@@ -30,7 +31,7 @@ std::string output_problem(const SynthJob& job) {
   if (!fs::exists(out) || is_empty_dir(out)) return "";
   if (!fs::is_directory(out)) return "exists and is not a directory";
   if (!job.overwrite) return "exists and is not empty (pass --overwrite to replace a previous synth output)";
-  if (!fs::exists(out / "scene.json")) return "is not a synth output (no scene.json): refusing to replace it";
+  if (!fs::exists(SceneFiles{out}.config())) return "is not a synth output (no scene.json): refusing to replace it";
   return "";
 }
 
@@ -117,7 +118,7 @@ bool run_synth_job(const SynthJob& job) {
   const GivenCityModel given = given_city_model(job, mesh, city_bytes, taxonomy);
   const std::string scene_json = synth_scene_json(job, city_bytes, taxonomy_bytes, given);
 
-  if (job.skip_if_same && fs::exists(out / "scene.json") && read_text_file(out / "scene.json") == scene_json) {
+  if (job.skip_if_same && fs::exists(SceneFiles{out}.config()) && read_text_file(SceneFiles{out}.config()) == scene_json) {
     log_info("synth: " + out.string() + " is up to date");
     return false;
   }
@@ -146,7 +147,7 @@ bool run_synth_job(const SynthJob& job) {
       to_scene = city_error_transform(job.city_error, job.settings.seed, bounds.center()) * to_scene;
     }
     write_city_transform((staging / "city" / "transform.json").string(), to_scene);
-    write_text_atomic(staging / "scene.json", scene_json);
+    write_text_atomic(SceneFiles{staging}.config(), scene_json);
     if (fs::exists(out)) fs::remove_all(out);
     fs::rename(staging, out);
   } catch (const fs::filesystem_error& e) {

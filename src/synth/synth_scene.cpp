@@ -9,6 +9,7 @@
 #include "core/image_file.h"
 #include "core/log.h"
 #include "core/progress.h"
+#include "core/run_layout.h"
 #include "synth/sparse_points.h"
 
 namespace cls::synth {
@@ -71,7 +72,7 @@ void write_synth_outputs(const std::string& dir, const SynthScene& scene, const 
   for (size_t v = 0; v < scene.views.size(); ++v) {
     const fs::path name(scene.views[v].name);
     write_image(root / "images" / name, scene.rendered[v].image);
-    write_image(root / "gt" / "labels" / (name.stem().string() + ".png"), scene.rendered[v].labels);
+    write_image(SceneFiles{root}.gt_labels() / (name.stem().string() + ".png"), scene.rendered[v].labels);
     progress.advance();
   }
   progress.finish();
@@ -79,8 +80,8 @@ void write_synth_outputs(const std::string& dir, const SynthScene& scene, const 
   fs::create_directories(sparse);
   write_colmap_binary(sparse, scene.colmap);
   write_colmap_text(sparse, scene.colmap);
-  write_text_atomic(root / "gt" / "legend.json", taxonomy.legend_json());
-  write_gt_ply((root / "gt" / "points.ply").string(), scene.gt_points);
+  write_text_atomic(SceneFiles{root}.gt_legend(), taxonomy.legend_json());
+  write_gt_ply(SceneFiles{root}.gt_points().string(), scene.gt_points);
 }
 
 }  // namespace cls::synth

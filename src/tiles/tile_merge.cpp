@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/hash.h"
 #include "core/log.h"
+#include "core/run_layout.h"
 #include "language/language_model.h"
 #include "query/selection.h"
 #include "tiles/tile_tasks.h"
@@ -80,8 +81,8 @@ json merge_tiles(const fs::path& tiles_dir, const fs::path& out_dir) {
   json report = {{"tiles_dir", fs::absolute(tiles_dir).string()}, {"scene", plan.scene.string()}, {"methods", json::object()}};
   for (const char* method : {"citylangsplat", "langsplat"}) {
     std::vector<fs::path> dirs;
-    for (const Tile& t : plan.tiles) dirs.push_back(tile_run_dir(tiles_dir, t) / "language" / method);
-    if (!fs::exists(dirs.front() / "model.json")) continue;  // e.g. no baseline (run-tiles --no-baseline)
+    for (const Tile& t : plan.tiles) dirs.push_back(RunLayout(tile_run_dir(tiles_dir, t)).language(method));
+    if (!fs::exists(LanguageModelFiles{dirs.front()}.model_json())) continue;  // e.g. run-tiles --baseline none
     std::vector<GaussianModel> kept;
     std::array<std::vector<at::Tensor>, 3> latents;
     std::optional<LanguageModel> first;
@@ -90,13 +91,13 @@ json merge_tiles(const fs::path& tiles_dir, const fs::path& out_dir) {
     int64_t naive_in_other = 0, outside_own = 0;
     for (size_t t = 0; t < plan.tiles.size(); ++t) {
       LanguageModel m = load_language_model(dirs[t].string());
-      if (file_fnv1a64_hex(dirs[t] / "autoencoder.safetensors") != shared_hash)
-        fail((dirs[t] / "autoencoder.safetensors").string(),
+      if (file_fnv1a64_hex(LanguageModelFiles{dirs[t]}.autoencoder()) != shared_hash)
+        fail(LanguageModelFiles{dirs[t]}.autoencoder().string(),
              "not the shared autoencoder " + shared_autoencoder(tiles_dir).string() + ": the latents cannot be merged");
       const std::string objects = m.objects.to_json().dump();
       if (t == 0) objects_json = objects;
       if (objects != objects_json)
-        fail((dirs[t] / "city_objects.json").string(), "another city-object table than tile " + plan.tiles[0].name + "'s");
+        fail(LanguageModelFiles{dirs[t]}.city_objects().string(), "another city-object table than tile " + plan.tiles[0].name + "'s");
       const int64_t n = m.gaussians.size();
       const at::Tensor index = in_cell(m.gaussians.means, plan.tiles[t].cell).nonzero().select(1, 0);
       naive_in_other += n - index.size(0);  // the cells cover the plane: the rest lies in other cells
@@ -116,7 +117,7 @@ json merge_tiles(const fs::path& tiles_dir, const fs::path& out_dir) {
                          std::move(first->objects)};
     merged.info["scene"] = plan.scene.string();  // the district: what evaluate, render and view show
     merged.info["merged_from"] = {{"tiles_dir", fs::absolute(tiles_dir).string()}, {"tiles", plan.tiles.size()}};
-    save_language_model((out_dir / "language" / method).string(), merged);
+    save_language_model(RunLayout(out_dir).language(method).string(), merged);
     report["methods"][method] = {{"gaussians", merged.gaussians.size()},
                                  {"tiles", per_tile},
                                  {"in_another_tiles_cell", outside_own},

@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/progress.h"
+#include "core/run_layout.h"
 #include "raycast/label_maps.h"
 #include "raycast/raycaster.h"
 #include "scene/colmap.h"
@@ -168,7 +169,7 @@ void write_tiles(const TilePlan& plan, const fs::path& tiles_dir) {
     if (!plan.taxonomy.empty()) scene["taxonomy"] = plan.taxonomy;
     scene["tile"] = {{"name", tile.name}, {"buildings", tile.buildings},
                      {"district", plan.scene.string()}};
-    write_text_atomic(dir / "scene.json", scene.dump(2) + "\n");
+    write_text_atomic(SceneFiles{dir}.config(), scene.dump(2) + "\n");
     log_info(cat("tile: ", tile.name, ": ", tile.buildings.size(), " buildings, ", tile.images.size(), " images"));
   }
   write_tile_plan(tiles_dir / "tiles.json", plan);

@@ -9,6 +9,7 @@
 #include "core/exit_codes.h"
 #include "core/hash.h"
 #include "core/log.h"
+#include "core/run_layout.h"
 #include "language/autoencoder_stage.h"
 #include "pipeline/feature_source.h"
 #include "pipeline/pipeline.h"
@@ -32,25 +33,18 @@ TilePhase parse_tile_phase(const std::string& name) {
   throw UsageError("tiles: unknown phase '" + name + "' (features, autoencoder or train)");
 }
 
+bool is_shared_by_tiles(const OptionList<PipelineConfig>::Binding& binding) { return !binding.per_scene; }
+
 json RunTilesSettings::to_json() const {
-  return {{"models", models},
-          {"resolution", resolution},
-          {"rgb_iterations", rgb_iterations},
-          {"language_iterations", language_iterations},
-          {"autoencoder_epochs", autoencoder_epochs},
-          {"baseline", baseline},
+  return {{"pipeline", pipeline_options().to_json(pipeline, is_shared_by_tiles)},
           {"autoencoder_samples", autoencoder_samples}};
 }
 
 RunTilesSettings RunTilesSettings::from_json(const json& j, const std::string& file) {
   RunTilesSettings s;
+  if (!j.is_object() || !j.contains("pipeline")) fail(file, "not valid run-tiles settings: no \"pipeline\"");
+  pipeline_options().from_json(j.at("pipeline"), s.pipeline, file);
   try {
-    s.models = j.at("models").get<std::string>();
-    s.resolution = j.at("resolution").get<int>();
-    s.rgb_iterations = j.at("rgb_iterations").get<int>();
-    s.language_iterations = j.at("language_iterations").get<int>();
-    s.autoencoder_epochs = j.at("autoencoder_epochs").get<int>();
-    s.baseline = j.at("baseline").get<bool>();
     s.autoencoder_samples = j.at("autoencoder_samples").get<int64_t>();
   } catch (const json::exception& e) {
     fail(file, std::string("not valid run-tiles settings: ") + e.what());
@@ -109,35 +103,30 @@ std::vector<int> pending_tasks(const fs::path& tiles_dir, const TilePlan& plan, 
   return pending;
 }
 
-fs::path tile_run_dir(const fs::path& tiles_dir, const Tile& tile) { return tiles_dir / tile.name / "citylangsplat"; }
+fs::path tile_run_dir(const fs::path& tiles_dir, const Tile& tile) { return RunLayout::of_scene(tiles_dir / tile.name).root(); }
 fs::path shared_autoencoder(const fs::path& tiles_dir) { return tiles_dir / "autoencoder.safetensors"; }
 
 RunTilesSettings resolve_run_settings(const fs::path& tiles_dir, const TilePlan& plan, RunTilesSettings s) {
-  const PipelineConfig probe = tile_pipeline_config(tiles_dir, plan.tiles.front(), s, TilePhase::Train);
+  const PipelineConfig probe = tile_pipeline_config(tiles_dir, plan.tiles.front(), s, TilePhase::Features);
+  probe.validate();
   const FeatureSource source = resolve_feature_source(probe, load_taxonomy(probe.city_options));
   if (!source.provider) throw Error("run-tiles: " + source.missing_weights);
   if (!source.note.empty()) log_warn("run-tiles: " + source.note);
-  s.models = models_choice_name(source.models);
-  s.rgb_iterations = source.rgb_iterations;
-  s.language_iterations = source.language_iterations;
-  s.autoencoder_epochs = source.autoencoder_epochs;
+  s.pipeline.features.models = source.models;
+  s.pipeline.rgb_iterations = source.schedule.rgb_iterations;
+  s.pipeline.language_iterations = source.schedule.language_iterations;
+  s.pipeline.autoencoder_epochs = source.schedule.autoencoder_epochs;
   return s;
 }
 
 PipelineConfig tile_pipeline_config(const fs::path& tiles_dir, const Tile& tile, const RunTilesSettings& s,
                                     TilePhase phase) {
-  PipelineConfig c;
+  PipelineConfig c = s.pipeline;
   c.scene_dir = tiles_dir / tile.name;
   c.out_dir = tile_run_dir(tiles_dir, tile);
-  read_scene_config(c.scene_dir / "scene.json", c);
-  c.models = parse_models_choice(s.models);
-  c.resolution = s.resolution;
-  c.rgb_iterations = s.rgb_iterations;
-  c.language_iterations = s.language_iterations;
-  c.autoencoder_epochs = s.autoencoder_epochs;
-  c.baseline = s.baseline;
+  read_scene_config(SceneFiles{c.scene_dir}.config(), c);
   c.autoencoder = shared_autoencoder(tiles_dir).string();
-  c.stop_after_features = phase == TilePhase::Features;
+  c.stop_after = phase == TilePhase::Features ? "features" : "none";
   return c;
 }
 
@@ -145,10 +134,10 @@ namespace {
 
 void run_shared_autoencoder(const fs::path& tiles_dir, const TilePlan& plan, const RunTilesSettings& s) {
   AutoencoderStageOptions o;
-  for (const Tile& t : plan.tiles) o.features_dirs.push_back(tile_run_dir(tiles_dir, t) / "features");
+  for (const Tile& t : plan.tiles) o.features_dirs.push_back(RunLayout(tile_run_dir(tiles_dir, t)).features());
   o.out = shared_autoencoder(tiles_dir);
   o.max_samples = s.autoencoder_samples;
-  o.train.epochs = s.autoencoder_epochs;  // resolved by run-tiles
+  o.train.epochs = s.pipeline.autoencoder_epochs;  // resolved by run-tiles
   const AutoencoderReport r = run_autoencoder_stage(o);
   log_info(cat("tiles: shared autoencoder: ", r.train_samples, " SAM features from ", plan.tiles.size(),
                " tiles, held-out cosine ", r.holdout_cosine));

@@ -24,19 +24,19 @@ constexpr TilePhase kTilePhases[] = {TilePhase::Features, TilePhase::Autoencoder
 const char* phase_name(TilePhase phase);
 TilePhase parse_tile_phase(const std::string& name);  // cls::UsageError for an unknown phase
 
-// The `run` options every tile shares (TILES/run-tiles.json).
-// run-tiles resolves `auto` and the default counts once, where it is started, so every task of every
-// node runs the same models and schedule.
+// What every tile shares (TILES/run-tiles.json): the `run` options that are not per scene
+// (pipeline_options() without per_scene(): `run-tiles` takes them as `run` does), and the shared
+// autoencoder's sample. run-tiles resolves `--models auto` and the default counts once, where it is
+// started, so every task of every node runs the same models and schedule.
 struct RunTilesSettings {
-  std::string models = "auto";   // as run --models
-  int resolution = 1;
-  int rgb_iterations = 0, language_iterations = 0, autoencoder_epochs = 0;  // 0: the models' defaults
-  bool baseline = true;
+  PipelineConfig pipeline;
   int64_t autoencoder_samples = 200000;  // SAM features the shared autoencoder trains on, drawn from all tiles
 
   nlohmann::json to_json() const;
   static RunTilesSettings from_json(const nlohmann::json& j, const std::string& file);
 };
+// The options run-tiles carries to every tile.
+bool is_shared_by_tiles(const OptionList<PipelineConfig>::Binding& binding);
 
 // Writes the settings (atomic); returns whether they differ from those recorded (every task then runs
 // again: the stage stamps still reuse whatever the change leaves valid).
@@ -53,8 +53,8 @@ std::vector<int> pending_tasks(const std::filesystem::path& tiles_dir, const Til
 std::filesystem::path tile_run_dir(const std::filesystem::path& tiles_dir, const Tile& tile);  // TILES/<tile>/citylangsplat
 std::filesystem::path shared_autoencoder(const std::filesystem::path& tiles_dir);           // TILES/autoencoder.safetensors
 
-// `auto` and zero counts replaced by what they stand for (the models found from here, their schedule).
-// cls::Error with the reason when --models real finds no weights.
+// `auto` and zero counts replaced by what they stand for (the models found from here, their schedule);
+// the settings checked as `run` checks them. cls::Error with the reason when --models clip finds no weights.
 RunTilesSettings resolve_run_settings(const std::filesystem::path& tiles_dir, const TilePlan& plan,
                                       RunTilesSettings settings);
 

@@ -10,6 +10,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "core/run_layout.h"
 #include "core/strings.h"
 #include "language/provenance.h"
 #include "query/object_ranking.h"
@@ -86,7 +87,7 @@ at::Tensor normalised_rows(const at::Tensor& x) {
 }  // namespace
 
 std::string run_scene_dir(const fs::path& out) {
-  const fs::path run_json = out / "run.json";
+  const fs::path run_json = RunLayout(out).run_json();
   if (!fs::exists(run_json)) return "";
   try {
     const json run = json::parse(read_text_file(run_json));
@@ -97,17 +98,17 @@ std::string run_scene_dir(const fs::path& out) {
 }
 
 fs::path viewer_model_dir(const fs::path& out, const std::string& method) {
-  if (fs::exists(out / "model.json")) return out;
-  const fs::path in_run = out / "language" / method;
-  if (fs::exists(in_run / "model.json")) return in_run;
+  if (fs::exists(LanguageModelFiles{out}.model_json())) return out;
+  const fs::path in_run = RunLayout(out).language(method);
+  if (fs::exists(LanguageModelFiles{in_run}.model_json())) return in_run;
   throw UsageError("view: " + out.string() + " is neither a language model (model.json) nor a `run` output with " +
-                   (fs::path("language") / method / "model.json").string());
+                   LanguageModelFiles{RunLayout().language(method)}.model_json().string());
 }
 
 ViewerModel::ViewerModel(const fs::path& model_dir, const std::string& scene_dir)
     : model_(load_language_model(model_dir.string())) {
   at::NoGradGuard no_grad;
-  const std::string model_json = (model_dir / "model.json").string();
+  const std::string model_json = LanguageModelFiles{model_dir}.model_json().string();
   const Taxonomy taxonomy = model_taxonomy(model_.info, model_json, "");
   provider_ = model_provider(model_, model_json, taxonomy);
 

@@ -8,7 +8,10 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include "cli_runner.h"
 #include "core/args.h"
@@ -24,40 +27,84 @@ namespace fs = std::filesystem;
 using namespace cls;
 
 TEST(Args, OptionsFlagsPositionalsAndDefaults) {
+  int width = 640;
+  bool fast = false;
+  std::string file;
   Args a("demo", "a demo");
-  a.option("width", "640", "image width").flag("fast", "go fast").positional("FILE", "input");
+  a.bind("width", width, "image width").flag("fast", fast, "go fast").positional("FILE", file, "input");
   ASSERT_TRUE(a.parse({"in.gml", "--width=320", "--fast"}));
-  EXPECT_EQ(a.get("FILE"), "in.gml");
-  EXPECT_EQ(a.get_int("width"), 320);
-  EXPECT_TRUE(a.flag_set("fast"));
+  EXPECT_EQ(file, "in.gml");
+  EXPECT_EQ(width, 320);
+  EXPECT_TRUE(fast);
+  int width_b = 640;
+  bool fast_b = false;
+  std::string file_b;
   Args b("demo", "a demo");
-  b.option("width", "640", "image width").positional("FILE", "input");
+  b.bind("width", width_b, "image width").flag("fast", fast_b, "go fast").positional("FILE", file_b, "input");
   ASSERT_TRUE(b.parse({"x"}));
-  EXPECT_EQ(b.get_int("width"), 640);
-  EXPECT_NE(b.help().find("(default: 640)"), std::string::npos);
+  EXPECT_EQ(file_b, "x");
+  EXPECT_EQ(width_b, 640);
+  EXPECT_FALSE(fast_b);
+  EXPECT_NE(b.help().find("(default: 640)"), std::string::npos) << b.help();
+  EXPECT_NE(b.help().find("--fast"), std::string::npos) << b.help();
+  EXPECT_NE(b.help().find("FILE"), std::string::npos) << b.help();
+}
+
+// The UsageError's message (empty when none was thrown).
+template <class F>
+std::string usage_error_of(F f) {
+  try {
+    f();
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "";
 }
 
 TEST(Args, UsageErrors) {
+  int n = 1;
+  std::string file;
   Args a("demo", "");
-  a.option("n", "1", "count").positional("FILE", "input");
-  EXPECT_THROW(a.parse({}), UsageError);
+  a.bind("n", n, "count").positional("FILE", file, "input");
+  EXPECT_EQ(usage_error_of([&] { a.parse(std::vector<std::string>{}); }), "demo: missing argument FILE (see --help)");
   Args b("demo", "");
-  b.option("n", "1", "count").positional("FILE", "input");
-  EXPECT_THROW(b.parse({"f", "--bogus"}), UsageError);
+  b.bind("n", n, "count").positional("FILE", file, "input");
+  EXPECT_EQ(usage_error_of([&] { b.parse({"f", "--bogus"}); }), "demo: unknown option '--bogus' (see --help)");
   Args c("demo", "");
-  c.option("n", "1", "count").positional("FILE", "input");
-  ASSERT_TRUE(c.parse({"f", "--n", "x1"}));
-  EXPECT_THROW(c.get_int("n"), UsageError);
+  c.bind("n", n, "count").positional("FILE", file, "input");
+  EXPECT_EQ(usage_error_of([&] { c.parse({"f", "--n", "x1"}); }), "demo: --n expects an integer, got 'x1'");
+  EXPECT_EQ(n, 1);  // a bad value leaves the field as it was
   Args d("demo", "");
-  d.option("n", "1", "count");
-  EXPECT_THROW(d.parse({"--n"}), UsageError);
+  d.bind("n", n, "count");
+  EXPECT_EQ(usage_error_of([&] { d.parse({"--n"}); }), "demo: option --n needs a value");
+}
+
+TEST(Args, RequiredOptionsAndOneDeclarationPerName) {
+  std::string out;
+  int n = 1;
+  Args a("demo", "");
+  a.bind("out", out, "output directory").required().bind("n", n, "count");
+  EXPECT_NE(a.help().find("output directory (required)"), std::string::npos) << a.help();
+  EXPECT_EQ(usage_error_of([&] { a.parse({"--n", "2"}); }), "demo: --out is required (see --help)");
+  Args b("demo", "");
+  b.bind("out", out, "output directory").required();
+  ASSERT_TRUE(b.parse({"--out", "dir"}));
+  EXPECT_EQ(out, "dir");
+  Args c("demo", "");
+  c.bind("n", n, "count");
+  EXPECT_THROW(c.bind("n", out, "count again"), std::logic_error);
+  bool flag = false;
+  EXPECT_THROW(c.flag("n", flag, "a flag of the same name"), std::logic_error);
 }
 
 TEST(Args, NegativeNumbersAreValuesNotOptions) {
+  double offset = 0;
+  int shift = 0;
   Args a("demo", "");
-  a.option("offset", "0", "offset");
-  ASSERT_TRUE(a.parse({"--offset", "-2.5"}));
-  EXPECT_DOUBLE_EQ(a.get_double("offset"), -2.5);
+  a.bind("offset", offset, "offset").bind("shift", shift, "shift");
+  ASSERT_TRUE(a.parse({"--offset", "-2.5", "--shift", "-3"}));
+  EXPECT_DOUBLE_EQ(offset, -2.5);
+  EXPECT_EQ(shift, -3);
 }
 
 TEST(AtomicFile, WritesAndLeavesNoTemporaryOnFailure) {

@@ -173,32 +173,32 @@ TEST_F(StageFixture, ImageSegmentsSamBranchNeverReadsTheLabelMaps) {
 TEST(FeaturesCli, ErrorsAreClear) {
   const fs::path out = fs::temp_directory_path() / ("cls_features_cli_" + std::to_string(::getpid()));
   auto r = run_cli("features --scene " + scene_dir().string() + " --labels " + (scene_dir() / "no_labels").string() +
-                   " --out " + out.string() + " --provider synthetic");
+                   " --out " + out.string() + " --models synthetic");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("no_labels"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("citylangsplat raycast"), std::string::npos) << r.err;
   r = run_cli("features --scene " + scene_dir().string() + " --labels " + (scene_dir() / "labels").string() +
-              " --out " + out.string() + " --provider magic");
+              " --out " + out.string() + " --models magic");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("magic"), std::string::npos) << r.err;
   r = run_cli("features --scene " + scene_dir().string() + " --out " + out.string());
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--labels"), std::string::npos) << r.err;
   r = run_cli("features --scene " + scene_dir().string() + " --labels " + (scene_dir() / "labels").string() +
-              " --out " + out.string() + " --provider synthetic --regions blobs");
+              " --out " + out.string() + " --models synthetic --regions blobs");
   EXPECT_EQ(r.status, 2);
   // Real weights absent: the message says how to get them.
   r = run_cli("features --scene " + scene_dir().string() + " --labels " + (scene_dir() / "labels").string() +
-              " --out " + out.string() + " --provider clip --models-dir " + (out / "no_models").string());
+              " --out " + out.string() + " --models clip --models-dir " + (out / "no_models").string());
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("citylangsplat models download openclip-vit-b-16-laion2b"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("citylangsplat models download sam-vit-h"), std::string::npos) << r.err;
   // A working run, then a second that reuses every view.
   r = run_cli("features --scene " + scene_dir().string() + " --labels " + (scene_dir() / "labels").string() +
-              " --out " + out.string() + " --provider synthetic --regions instance");
+              " --out " + out.string() + " --models synthetic --regions instance");
   EXPECT_EQ(r.status, 0) << r.err;
   r = run_cli("features --scene " + scene_dir().string() + " --labels " + (scene_dir() / "labels").string() +
-              " --out " + out.string() + " --provider synthetic --regions instance");
+              " --out " + out.string() + " --models synthetic --regions instance");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("computed 0 of 3 views"), std::string::npos) << r.err;
   fs::remove_all(out);

@@ -8,6 +8,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/run_layout.h"
 #include "pipeline/city_alignment.h"
 #include "raycast/closest_point.h"
 
@@ -40,13 +41,15 @@ struct Fixture {
 TEST(CityAlignment, AutoAppliesAHelpfulRefinementAndKeepsAnExactTransform) {
   Fixture f;
   SceneCityModel exact = f.city;
-  const CityAlignment kept = align_city_model(f.points({0, 0, 0}), exact, "auto", 0.5, f.out);
+  const CityAlignment kept = align_city_model(f.points({0, 0, 0}), exact, "auto", 0.5,
+                                              RunLayout(f.out).align_transform());
   EXPECT_FALSE(kept.applied);
   EXPECT_NE(kept.record["reason"].get<std::string>().find("at most"), std::string::npos) << kept.record.dump();
-  EXPECT_FALSE(fs::exists(f.out / "align" / "transform.json"));
+  EXPECT_FALSE(fs::exists(RunLayout(f.out).align_transform()));
 
   SceneCityModel moved = f.city;
-  const CityAlignment applied = align_city_model(f.points({0.4, -0.3, 0.2}), moved, "auto", 0.5, f.out);
+  const CityAlignment applied = align_city_model(f.points({0.4, -0.3, 0.2}), moved, "auto", 0.5,
+                                                 RunLayout(f.out).align_transform());
   ASSERT_TRUE(applied.applied) << applied.record.dump();
   EXPECT_TRUE(fs::exists(applied.transform));
   // The model now sits on the shifted points: its translation is the shift.
@@ -56,7 +59,7 @@ TEST(CityAlignment, AutoAppliesAHelpfulRefinementAndKeepsAnExactTransform) {
   EXPECT_NEAR(t.z, 0.2, 0.01);
   // A later run that does not use it leaves no stale file behind.
   SceneCityModel again = f.city;
-  EXPECT_FALSE(align_city_model(f.points({0.4, -0.3, 0.2}), again, "off", 0.5, f.out).applied);
+  EXPECT_FALSE(align_city_model(f.points({0.4, -0.3, 0.2}), again, "off", 0.5, RunLayout(f.out).align_transform()).applied);
   EXPECT_FALSE(fs::exists(applied.transform));
 }
 
@@ -78,7 +81,7 @@ TEST(CityAlignment, AutoAppliesASmallCorrectionAmongPointsOffTheModel) {
     scene.points.push_back(p);
   }
   SceneCityModel moved = f.city;
-  const CityAlignment a = align_city_model(scene, moved, "auto", 0.5, f.out);
+  const CityAlignment a = align_city_model(scene, moved, "auto", 0.5, RunLayout(f.out).align_transform());
   ASSERT_TRUE(a.applied) << a.record.dump();
   EXPECT_GT(a.record["after"]["fraction_within_finest"].get<double>(),
             a.record["before"]["fraction_within_finest"].get<double>() + 0.2);
@@ -93,8 +96,8 @@ TEST(CityAlignment, NoPointsIsAWarningForAutoAndAnErrorForRefine) {
   Scene empty;
   empty.root = "empty-scene";
   SceneCityModel city = f.city;
-  EXPECT_FALSE(align_city_model(empty, city, "auto", 0.5, f.out).applied);
-  EXPECT_THROW(align_city_model(empty, city, "refine", 0.5, f.out), Error);
+  EXPECT_FALSE(align_city_model(empty, city, "auto", 0.5, RunLayout(f.out).align_transform()).applied);
+  EXPECT_THROW(align_city_model(empty, city, "refine", 0.5, RunLayout(f.out).align_transform()), Error);
 }
 
 }  // namespace

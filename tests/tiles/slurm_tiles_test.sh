@@ -55,7 +55,7 @@ for f in lines[0::2]:
 print(f"every camera is in its cell's tile ({len(lines) // 2} images)")
 PY
 
-options=(--models synthetic --rgb-iterations 200 --language-iterations 40 --autoencoder-epochs 10 --no-baseline)
+options=(--models synthetic --rgb-iterations 200 --language-iterations 40 --autoencoder-epochs 10 --baseline none)
 "$bin" run-tiles "$work/tiles" --executor slurm --array-limit 2 "${options[@]}"
 train=$(python3 -c "import json,sys; print([j['id'] for j in json.load(open(sys.argv[1])) if j['phase'] == 'train'][0])" \
   "$work/tiles/jobs/submitted.json")

@@ -264,16 +264,47 @@ TEST(TileTasks, MarkersCountOnlyForThePlanAndSettingsTheyRanUnder) {
   EXPECT_EQ(pending_tasks(dir.path, plan, TilePhase::Autoencoder), (std::vector<int>{0}));
   EXPECT_FALSE(write_run_settings(dir.path, s));  // the same settings keep what finished
   EXPECT_EQ(pending_tasks(dir.path, plan, TilePhase::Features).size(), 2u);
-  s.language_iterations = 7;
+  s.pipeline.language_iterations = 7;
   EXPECT_TRUE(write_run_settings(dir.path, s));
   EXPECT_EQ(pending_tasks(dir.path, plan, TilePhase::Features).size(), 3u);
-  EXPECT_EQ(read_run_settings(dir.path).language_iterations, 7);
+  EXPECT_EQ(read_run_settings(dir.path).pipeline.language_iterations, 7);
   mark_finished(dir.path, TilePhase::Features, 0);
   plan.max_images = 12;  // a new plan: nothing it did not run counts
   write_tile_plan(dir.path / "tiles.json", plan);
   EXPECT_EQ(pending_tasks(dir.path, plan, TilePhase::Features).size(), 3u);
   EXPECT_EQ(parse_tile_phase("train"), TilePhase::Train);
   EXPECT_THROW(parse_tile_phase("merge"), UsageError);
+}
+
+// run-tiles carries `run`'s options to every tile, declared by the same bindings, but not those each
+// scene has its own (the city model, the output, the shared autoencoder, where to stop).
+TEST(TileTasks, RunTilesCarriesRunsOptionsButNotTheScenesOwn) {
+  RunTilesSettings s;
+  s.pipeline.alpha = 0.3;
+  s.pipeline.features.models = "synthetic";
+  s.pipeline.lambda_citygml = 0.25;
+  s.pipeline.baselines = {};
+  s.pipeline.scene_dir = "/district";
+  s.pipeline.city = "/district/model.gml";
+  s.pipeline.stop_after = "features";
+  s.autoencoder_samples = 1234;
+  const nlohmann::json j = s.to_json();
+  for (const char* own : {"scene", "out", "city", "city_transform", "lod", "taxonomy", "rgb_model", "autoencoder",
+                          "stop_after"})
+    EXPECT_FALSE(j["pipeline"].contains(own)) << own;
+  for (const auto& b : pipeline_options().bindings()) {
+    if (b.per_scene) continue;
+    EXPECT_TRUE(j["pipeline"].contains(option_key(b.name))) << b.name;
+  }
+  EXPECT_EQ(j["pipeline"]["alpha"], 0.3);
+  EXPECT_EQ(j["pipeline"]["baseline"], nlohmann::json::array());
+  const RunTilesSettings back = RunTilesSettings::from_json(j, "run-tiles.json");
+  EXPECT_EQ(back.to_json(), j);
+  EXPECT_EQ(back.pipeline.features.models, "synthetic");
+  EXPECT_EQ(back.autoencoder_samples, 1234);
+  nlohmann::json bad = j;
+  bad["pipeline"]["models"] = "real";
+  EXPECT_THROW(RunTilesSettings::from_json(bad, "run-tiles.json"), Error);
 }
 
 TEST(TaskScript, RetriesFailuresButNotInterruptionsAndQuotes) {

@@ -10,4 +10,4 @@ DATA="$(cd "$(dirname "$0")/../.." && pwd)/data/citygml/fzk-haus/fzk_haus_lod3_v
 "$BIN" synth --city "$DATA" --lod 3 --out "$OUT/scene" --views 24 --width 200 --height 150 --seed 2 \
   --overwrite --skip-if-same
 "$BIN" run "$OUT/scene" --out "$OUT/run" --models synthetic --rgb-iterations 1500 --language-iterations 150 \
-  --autoencoder-epochs 15 --no-baseline
+  --autoencoder-epochs 15 --baseline none

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "citygml/mesh_area.h"
+#include "citymodel/mesh_area.h"
 #include "citymodel/mesh_builder.h"
 #include "core/error.h"
 

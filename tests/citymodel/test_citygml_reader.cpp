@@ -6,7 +6,7 @@
 #include <map>
 #include <sstream>
 
-#include "citygml/mesh_area.h"
+#include "citymodel/mesh_area.h"
 #include "citymodel/citygml_reader.h"
 #include "core/error.h"
 

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <stdexcept>
 
 #include "citymodel/city_model.h"
 #include "citymodel/mesh_stats.h"
@@ -19,10 +20,14 @@ TEST(CityModel, DetectsTheFormatByContent) {
 }
 
 TEST(CityModel, LodOption) {
-  EXPECT_EQ(parse_lod_option("highest"), 0);
-  EXPECT_EQ(parse_lod_option("2"), 2);
-  EXPECT_THROW(parse_lod_option("4"), UsageError);
-  EXPECT_THROW(parse_lod_option("2.2"), UsageError);
+  const Codec<int> lod = lod_codec();
+  EXPECT_EQ(lod.parse("highest"), 0);
+  EXPECT_EQ(lod.parse("0"), 0);
+  EXPECT_EQ(lod.parse("2"), 2);
+  EXPECT_THROW(lod.parse("4"), std::invalid_argument);
+  EXPECT_THROW(lod.parse("2.2"), std::invalid_argument);
+  EXPECT_EQ(lod.text(0), "highest");
+  EXPECT_EQ(lod.text(2), "2");
 }
 
 // The same 100 LoD2 buildings as CityGML 3.0, CityJSON 2.0 and CityJSONSeq: the README's counts
