@@ -90,6 +90,11 @@ std::string number_text(const json& v) {
     s << v.get<double>();
     return s.str();
   }
+  if (v.is_object()) {  // {"centre": 0.99, "scale": -0.0099} -> "centre 0.99, scale -0.0099"
+    std::string s;
+    for (const auto& [key, value] : v.items()) s += (s.empty() ? "" : ", ") + key + " " + number_text(value);
+    return "(" + s + ")";
+  }
   return v.is_string() ? v.get<std::string>() : v.dump();
 }
 
