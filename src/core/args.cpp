@@ -51,19 +51,19 @@ Args& Args::required() {
 }
 
 Args& Args::optional() {
-  if (!last_is_positional_) throw std::logic_error(command_ + ": optional() follows a positional");
+  if (!last_is_positional_) throw std::logic_error(command_ + ": optional() must follow a positional");
   positionals_.back().required = false;
   return *this;
 }
 
 Args& Args::short_name(const std::string& letter) {
-  if (last_is_positional_) throw std::logic_error(command_ + ": short_name() follows an option");
+  if (last_is_positional_) throw std::logic_error(command_ + ": short_name() must follow an option");
   specs_.back().short_name = letter;
   return *this;
 }
 
 Args& Args::default_text(const std::string& text) {
-  if (last_is_positional_) throw std::logic_error(command_ + ": default_text() follows an option");
+  if (last_is_positional_) throw std::logic_error(command_ + ": default_text() must follow an option");
   specs_.back().def = text;
   return *this;
 }
@@ -123,6 +123,12 @@ bool Args::parse(const std::vector<std::string>& args) {
       } else if (!inline_value) {
         if (i + 1 >= args.size()) throw UsageError(command_ + ": option --" + s->name + " needs a value");
         value = args[++i];
+      }
+      // An empty value is no value: `--out "$OUT"` with OUT unset keeps the default (or is refused when
+      // the option is required) instead of writing into the working directory.
+      if (!s->is_flag && value.empty()) {
+        given_.erase(s->name);
+        continue;
       }
       given_[s->name] = value;
       continue;

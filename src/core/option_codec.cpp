@@ -1,7 +1,9 @@
 #include "core/option_codec.h"
 
+#include <cctype>
 #include <cerrno>
 #include <cstdlib>
+#include <type_traits>
 #include <limits>
 
 #include "core/strings.h"
@@ -9,13 +11,22 @@
 namespace cls {
 namespace {
 
+// A value JSON holds natively. A number from a file goes through the command line's parser, so that a
+// file is held to the same rules (1.5 is no integer, -1 no seed).
 template <class T>
 Codec<T> json_native(std::function<std::string(const T&)> text, std::function<T(const std::string&)> parse) {
   Codec<T> c;
   c.text = std::move(text);
   c.parse = std::move(parse);
   c.to_json = [](const T& v) { return nlohmann::json(v); };
-  c.from_json = [](const nlohmann::json& j) { return j.get<T>(); };
+  c.from_json = [parse = c.parse](const nlohmann::json& j) {
+    if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) {
+      if (!j.is_number()) throw std::invalid_argument("expects a number, got " + j.dump());
+      return parse(j.dump());
+    } else {
+      return j.get<T>();
+    }
+  };
   return c;
 }
 
@@ -85,7 +96,8 @@ Codec<uint64_t> default_codec<uint64_t>() {
                                  char* end = nullptr;
                                  errno = 0;
                                  const unsigned long long v = std::strtoull(s.c_str(), &end, 10);
-                                 if (s.empty() || s[0] == '-' || *end != '\0' || errno == ERANGE)
+                                 if (s.empty() || !std::isdigit(static_cast<unsigned char>(s[0])) || *end != '\0' ||
+                                     errno == ERANGE)
                                    throw std::invalid_argument("expects a non-negative integer, got '" + s + "'");
                                  return uint64_t(v);
                                });

@@ -75,6 +75,9 @@ class OptionList {
       b.default_text = found->default_text;
       b.role = found->role;
       b.flag = found->flag;
+      b.positional = found->positional;
+      b.per_scene = found->per_scene;
+      b.required = found->required;
       b.text = [part, text = found->text](const S& s) { return text(part(s)); };
       b.parse = [part, parse = found->parse](S& s, const std::string& v) { parse(part(s), v); };
       b.to_json = [part, to = found->to_json](const S& s) { return to(part(s)); };

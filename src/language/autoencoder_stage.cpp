@@ -7,13 +7,13 @@
 #include <cmath>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/npy.h"
 #include "core/progress.h"
-#include "core/strings.h"
 #include "models/weights/npy_tensor.h"
 #include "models/weights/weight_file.h"
 
@@ -112,18 +112,20 @@ Codec<std::vector<int>> dims_codec() {
     for (size_t i = 0; i < v.size(); ++i) s += (i ? "," : "") + std::to_string(v[i]);
     return s;
   };
-  c.parse = [](const std::string& text) {
-    std::vector<int> dims;
-    for (const std::string& item : split_commas(text)) {
-      const int d = default_codec<int>().parse(item);
-      if (d <= 0) throw std::invalid_argument("sizes must be positive, got '" + text + "'");
-      dims.push_back(d);
-    }
+  const auto checked = [](const std::vector<int>& dims, const std::string& text) {
     if (dims.empty()) throw std::invalid_argument("must list at least one size");
+    for (const int d : dims)
+      if (d <= 0) throw std::invalid_argument("must be a comma-separated list of positive sizes, got '" + text + "'");
     return dims;
   };
+  c.parse = [checked](const std::string& text) {
+    std::vector<int> dims;
+    std::stringstream in(text);
+    for (std::string item; std::getline(in, item, ',');) dims.push_back(item.empty() ? 0 : default_codec<int>().parse(item));
+    return checked(dims, text);
+  };
   c.to_json = [](const std::vector<int>& v) { return nlohmann::json(v); };
-  c.from_json = [](const nlohmann::json& j) { return j.get<std::vector<int>>(); };
+  c.from_json = [checked](const nlohmann::json& j) { return checked(j.get<std::vector<int>>(), j.dump()); };
   return c;
 }
 

@@ -57,7 +57,10 @@ PipelineResult run_pipeline(const PipelineConfig& config, const StageObserver& b
   RunContext run = open_run(config);
   install_interrupt_handlers();
   for (const PipelineStep& step : pipeline_steps()) {
-    for (const Stage& stage : step.stages(run)) {
+    const std::vector<Stage> stages = step.stages(run);
+    for (const Stage& stage : stages) {
+      // A step's later stages (the second autoencoder, the next method) wait for a signal as steps do.
+      if (&stage != &stages.front() && stopped_by_signal(run, (&stage - 1)->name)) return finish(run);
       if (before_stage) before_stage(stage.name);
       const StageReport report = run_stage(stage);
       run.record.add(stage.name, report);

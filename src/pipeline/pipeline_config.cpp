@@ -27,27 +27,39 @@ void PipelineConfig::validate() const {
   if (features.models == "image-segments" && resolution != 1)
     throw UsageError("run: --models image-segments reads the full-resolution ground truth: use -r 1");
   if (!(align_distance >= 0)) throw UsageError("run: --align-distance must be >= 0");
+  // What the codecs check for the command line and files, for a configuration made in code.
+  if (align != "off" && align != "refine" && align != "auto") throw UsageError("run: --align must be off, refine or auto");
+  if (regions != "class" && regions != "instance") throw UsageError("run: --regions must be class or instance");
+  const std::vector<std::string> steps = pipeline_step_names();
+  const auto step = std::find(steps.begin(), steps.end(), stop_after);
+  if (stop_after != "none" && step == steps.end())
+    throw UsageError("run: --stop-after must be a step (" + one_of(steps) + ") or none, not '" + stop_after + "'");
   if (city.empty())
     throw UsageError("run: no city model: give --city, or a scene.json / --config with \"city_model\"");
   if (!rgb_model.empty() && !fs::exists(rgb_model)) fail(rgb_model, "--rgb-model: file not found");
   const bool original = std::find(baselines.begin(), baselines.end(), "langsplat-original") != baselines.end();
   if (!autoencoder.empty() && original)
     throw UsageError("run: --baseline langsplat-original trains its own autoencoder: not with --autoencoder (tiles)");
-  if (!autoencoder.empty() && stop_after != "features" && !fs::exists(autoencoder))
+  // The autoencoder is read from its step on (tiles stop after the features, before it exists).
+  const bool needs_autoencoder = step == steps.end() || step >= std::find(steps.begin(), steps.end(), "autoencoder");
+  if (!autoencoder.empty() && needs_autoencoder && !fs::exists(autoencoder))
     fail(autoencoder, "--autoencoder: file not found");
 }
 
 namespace {
 
-// --baseline: a comma-separated list of kBaselines, or none.
+// --baseline: a comma-separated list of kBaselines ("none" adds nothing), kept in kBaselines' order
+// and once each, so that the stages and the evaluation's columns do not depend on how it was written.
 Codec<std::vector<std::string>> baselines_codec() {
   Codec<std::vector<std::string>> c = default_codec<std::vector<std::string>>();
-  const auto check = [](std::vector<std::string> names) {
-    if (names.size() == 1 && names[0] == "none") return std::vector<std::string>{};
+  const auto check = [](const std::vector<std::string>& names) {
     for (const std::string& n : names)
-      if (std::find(kBaselines.begin(), kBaselines.end(), n) == kBaselines.end())
+      if (n != "none" && std::find(kBaselines.begin(), kBaselines.end(), n) == kBaselines.end())
         throw std::invalid_argument("takes " + one_of(kBaselines) + " (comma-separated) or none, not '" + n + "'");
-    return names;
+    std::vector<std::string> known;
+    for (const std::string& b : kBaselines)
+      if (std::find(names.begin(), names.end(), b) != names.end()) known.push_back(b);
+    return known;
   };
   c.text = [text = c.text](const std::vector<std::string>& v) { return v.empty() ? std::string("none") : text(v); };
   c.parse = [check, parse = c.parse](const std::string& s) { return check(parse(s)); };

@@ -13,6 +13,8 @@
 #include <thread>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "cli_runner.h"
 #include "core/args.h"
 #include "core/atomic_file.h"
@@ -95,6 +97,35 @@ TEST(Args, RequiredOptionsAndOneDeclarationPerName) {
   EXPECT_THROW(c.bind("n", out, "count again"), std::logic_error);
   bool flag = false;
   EXPECT_THROW(c.flag("n", flag, "a flag of the same name"), std::logic_error);
+}
+
+// An empty value is no value: an unset shell variable keeps the default, or fails a required option,
+// instead of naming the working directory.
+TEST(Args, AnEmptyValueIsNoValue) {
+  std::string out = "default", dir;
+  int n = 1;
+  Args a("demo", "");
+  a.bind("out", out, "output").bind("n", n, "count").bind("dir", dir, "where").required();
+  EXPECT_EQ(usage_error_of([&] { a.parse({"--dir", "", "--out", ""}); }), "demo: --dir is required (see --help)");
+  Args b("demo", "");
+  b.bind("out", out, "output").bind("n", n, "count");
+  ASSERT_TRUE(b.parse({"--out=", "--n", ""}));
+  EXPECT_EQ(out, "default");
+  EXPECT_EQ(n, 1);
+  EXPECT_FALSE(b.given("out"));
+}
+
+// A number from a file is held to the command line's rules.
+TEST(OptionCodec, NumbersFromJsonPassTheSameChecksAsText) {
+  EXPECT_EQ(default_codec<int>().from_json(nlohmann::json(7)), 7);
+  EXPECT_THROW(default_codec<int>().from_json(nlohmann::json(1.5)), std::invalid_argument);
+  EXPECT_THROW(default_codec<int>().from_json(nlohmann::json("7")), std::invalid_argument);
+  EXPECT_THROW(default_codec<int>().from_json(nlohmann::json(int64_t(1) << 40)), std::invalid_argument);
+  EXPECT_EQ(default_codec<uint64_t>().from_json(nlohmann::json(3)), 3u);
+  EXPECT_THROW(default_codec<uint64_t>().from_json(nlohmann::json(-1)), std::invalid_argument);
+  EXPECT_THROW(default_codec<uint64_t>().parse(" -5"), std::invalid_argument);
+  EXPECT_DOUBLE_EQ(default_codec<double>().from_json(nlohmann::json(0.1)), 0.1);
+  EXPECT_EQ(default_codec<double>().text(0.0001), "0.0001");
 }
 
 TEST(Args, NegativeNumbersAreValuesNotOptions) {

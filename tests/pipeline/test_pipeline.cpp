@@ -303,6 +303,23 @@ TEST(Pipeline, AnInterruptedRunResumesItsCheckpointAndEndsAsAnUninterruptedOne) 
   EXPECT_FALSE(record_of(c.out_dir)["train-language"]["citylangsplat"]["resumed"].get<bool>());
 }
 
+// A signal during a stage that does not poll it (the autoencoders) ends the run after that stage, also
+// between two stages of one step: LangSplat's own autoencoder does not start.
+TEST(Pipeline, ASignalBetweenTwoStagesOfAStepStopsTheRunThere) {
+  hide_model_weights();
+  PipelineConfig c = quick(shared_scene(), work_path("signal_between"));
+  c.baselines = {"langsplat-original"};
+  const PipelineResult r = run_pipeline(c, [](const std::string& stage) {
+    if (stage == "autoencoder") request_interrupt();
+  });
+  reset_interrupt();
+  EXPECT_EQ(r.outcome, PipelineOutcome::Interrupted);
+  const nlohmann::json record = record_of(c.out_dir);
+  EXPECT_EQ(status(record, "autoencoder"), "done");
+  EXPECT_FALSE(record.contains("autoencoder-langsplat"));
+  EXPECT_EQ(record["interrupted_after"], "autoencoder");
+}
+
 // --stop-after ends the run after that step (tiles stop after the features), with its report.
 TEST(Pipeline, StopAfterEndsTheRunAfterThatStep) {
   hide_model_weights();

@@ -89,7 +89,7 @@ TEST(PipelineOptions, SettingsGoBackIntoTheSameConfiguration) {
   // A value the option refuses on the command line is refused from a file too, naming it.
   for (const auto& [key, value] : std::vector<std::pair<std::string, nlohmann::json>>{
            {"models", "real"}, {"align", "sometimes"}, {"baseline", {"langsplat", "other"}}, {"lod", 7},
-           {"resolution", "four"}, {"no_such_option", 1}}) {
+           {"resolution", "four"}, {"resolution", 1.5}, {"no_such_option", 1}}) {
     try {
       pipeline_options().from_json({{key, value}}, back, "settings.json");
       ADD_FAILURE() << key << " accepted";
@@ -98,6 +98,42 @@ TEST(PipelineOptions, SettingsGoBackIntoTheSameConfiguration) {
       EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
     }
   }
+}
+
+// --baseline lists each baseline once, in one order, whatever was written; none adds nothing.
+TEST(PipelineOptions, BaselinesAreKeptOnceInOneOrder) {
+  const auto parse = [](const std::string& text) {
+    for (const Binding& b : pipeline_options().bindings())
+      if (b.name == "baseline") {
+        PipelineConfig c;
+        b.parse(c, text);
+        return c.baselines;
+      }
+    ADD_FAILURE() << "no --baseline";
+    return std::vector<std::string>{};
+  };
+  EXPECT_EQ(parse("langsplat-original,langsplat,langsplat"), (std::vector<std::string>{"langsplat", "langsplat-original"}));
+  EXPECT_EQ(parse("none,langsplat"), std::vector<std::string>{"langsplat"});
+  EXPECT_TRUE(parse("none").empty());
+  EXPECT_THROW(parse("langsplat,other"), std::invalid_argument);
+}
+
+// The shared autoencoder must exist from the step that reads it on; a run stopping before it (tiles
+// stop after the features) does not need it yet.
+TEST(PipelineOptions, TheAutoencoderMustExistOnlyWhereTheRunReadsIt) {
+  PipelineConfig c;
+  c.city = "model.gml";
+  c.autoencoder = "/nonexistent/shared.safetensors";
+  for (const char* early : {"labels", "features"}) {
+    c.stop_after = early;
+    EXPECT_NO_THROW(c.validate()) << early;
+  }
+  for (const char* late : {"autoencoder", "train-rgb", "none"}) {
+    c.stop_after = late;
+    EXPECT_THROW(c.validate(), Error) << late;
+  }
+  c.stop_after = "merge";
+  EXPECT_THROW(c.validate(), UsageError);
 }
 
 TEST(PipelineOptions, RunAndRunTilesHelpShowEveryOptionOnceWithTheDefaultOfTheStruct) {

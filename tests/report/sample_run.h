@@ -66,7 +66,7 @@ inline json scores_3d(double base) {
 
 }  // namespace sample
 
-// Writes the sample run into `dir` (which should be empty or absent). `models`: "real", "tiny" or
+// Writes the sample run into `dir` (which should be empty or absent). `models`: "clip", "clip-tiny" or
 // "synthetic"; the last two carry run.json's "warning".
 inline void write_sample_run(const std::filesystem::path& dir, const std::string& models = "synthetic") {
   using namespace sample;
@@ -74,7 +74,7 @@ inline void write_sample_run(const std::filesystem::path& dir, const std::string
   json run = {{"scene", "/data/scenes/sample"},
               {"city_model", "/data/scenes/sample/city.gml"},
               {"models", models},
-              {"provider", {{"provider", models == "real" ? "clip" : models}, {"seed", 1}}},
+              {"provider", {{"provider", models}, {"seed", 1}}},
               {"settings", {{"resolution", 1}, {"alpha", 0.5}, {"regions", "class"}, {"rgb-iterations", 50}}},
               {"align_check", {{"fraction_within", 0.97}, {"median", 0.02}, {"threshold", 0.5}}},
               {"labels", {{"status", "done"}, {"seconds", 1.5}, {"dir", (dir / "labels").string()}, {"mean_coverage", 0.8}}},
@@ -83,7 +83,7 @@ inline void write_sample_run(const std::filesystem::path& dir, const std::string
               {"train-rgb", {{"status", "done"}, {"seconds", 754.0}, {"test_psnr", 24.1}, {"gaussians", 5400}}},
               {"evaluate", {{"status", "done"}, {"seconds", 3.2}}}};
   if (models == "synthetic") run["warning"] = "mechanics: synthetic features, not CLIP";
-  if (models == "tiny") run["warning"] = "mechanics: tiny random models, scores meaningless";
+  if (models == "clip-tiny") run["warning"] = "mechanics: tiny random models, scores meaningless";
   // "stages" as run_pipeline writes it: a stage run per method is "<stage>/<method>" (docs/pipeline.md).
   json stages = {"labels", "features", "autoencoder", "train-rgb"};
   for (const std::string& m : methods) {

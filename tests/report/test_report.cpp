@@ -176,7 +176,7 @@ TEST(Report, CompleteRunShowsEverySectionWithResolvingImages) {
 
   // A run with real models has no banner.
   TempDir real;
-  test::write_sample_run(real.path, "real");
+  test::write_sample_run(real.path, "clip");
   EXPECT_EQ(read_text_file(write_report(real.path)).find("class=\"warning\""), std::string::npos);
 }
 
@@ -202,13 +202,13 @@ TEST(Report, ShowsOnlyTheRunsMethodsAndNoImageOutsideTheRun) {
 
 TEST(Report, PartialRunSaysWhatIsMissingInsteadOfBrokenImages) {
   TempDir dir;
-  test::write_sample_run(dir.path, "tiny");
+  test::write_sample_run(dir.path, "clip-tiny");
   // A run stopped before the features (no weights): run.json and the label maps only.
   for (const char* d : {"rgb", "language", "render", "eval", "query"}) fs::remove_all(dir.path / d);
   fs::remove(dir.path / "labels" / "view_001" / "preview.png");
   write_text_atomic(dir.path / "run.json",
                     json{{"scene", "/s"},
-                         {"models", "real"},
+                         {"models", "clip"},
                          {"labels", {{"status", "done"}}},
                          {"features", {{"status", "stopped: no model weights"}, {"reason", "no CLIP weights"}}}}
                             .dump());
