@@ -1,5 +1,7 @@
 #include "citymodel/city_objects.h"
 
+#include <stdexcept>
+
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
@@ -9,13 +11,22 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 int32_t CityObjects::at_level(int32_t object, int level) const {
-  // A chain is at most objects.size() long unless the table has a cycle (from_json rejects those).
-  for (size_t steps = 0; object >= 0 && static_cast<size_t>(object) < objects.size() && steps <= objects.size();
-       ++steps) {
-    if (objects[object].level >= level) return object;
+  // Parents come before their children (from_json checks it), so every chain ends.
+  while (object >= 0 && static_cast<size_t>(object) < objects.size() && objects[object].level < level)
     object = objects[object].parent;
-  }
-  return -1;
+  if (object < 0 || static_cast<size_t>(object) >= objects.size()) return -1;
+  // The whole-building level answers with the Building, not one of its BuildingParts.
+  if (level >= 3 && objects[object].level == 3)
+    while (objects[object].parent >= 0 && objects[objects[object].parent].level == 3) object = objects[object].parent;
+  return object;
+}
+
+int32_t CityObjects::part_of(int32_t object) const {
+  while (object >= 0 && static_cast<size_t>(object) < objects.size() && objects[object].level < 3)
+    object = objects[object].parent;
+  if (object < 0 || static_cast<size_t>(object) >= objects.size()) return -1;
+  const int32_t parent = objects[object].parent;
+  return parent >= 0 && objects[parent].level == 3 ? object : -1;
 }
 
 std::string CityObjects::class_name(int32_t object) const {
@@ -33,6 +44,28 @@ json CityObjects::to_json() const {
   return {{"source", source}, {"classes", class_names}, {"objects", rows}};
 }
 
+namespace {
+
+// What makes a table unusable, "" when nothing does: parents and classes out of range, a parent after
+// its child (so no chain comes back to where it started), or on a finer level (a BuildingPart's parent
+// is its Building or another part, on the same level).
+std::string table_problem(const CityObjects& t) {
+  const int64_t n = static_cast<int64_t>(t.objects.size());
+  for (int64_t i = 0; i < n; ++i) {
+    const CityObject& o = t.objects[i];
+    if (o.parent < -1 || o.parent >= n) return cat("object ", i, " has parent ", o.parent, " of ", n, " objects");
+    if (o.class_id < -1 || o.class_id >= static_cast<int>(t.class_names.size()))
+      return cat("object ", i, " has class ", o.class_id, " of ", t.class_names.size(), " classes");
+    if (o.parent >= i) return cat("object ", i, " has parent ", o.parent, "; a parent comes before its children");
+    if (o.parent >= 0 && t.objects[o.parent].level < o.level)
+      return cat("object ", i, " (level ", o.level, ") has parent ", o.parent, " on level ", t.objects[o.parent].level,
+                 "; a parent lies on the same or a coarser level");
+  }
+  return "";
+}
+
+}  // namespace
+
 CityObjects CityObjects::from_json(const json& j, const std::string& file) {
   CityObjects t;
   try {
@@ -49,17 +82,7 @@ CityObjects CityObjects::from_json(const json& j, const std::string& file) {
   } catch (const json::exception& e) {
     fail(file, std::string("not a city-object table (source, classes, objects[id, level, class, parent]): ") + e.what());
   }
-  const int64_t n = static_cast<int64_t>(t.objects.size());
-  for (int64_t i = 0; i < n; ++i) {
-    const CityObject& o = t.objects[i];
-    if (o.parent < -1 || o.parent >= n) fail(file, cat("object ", i, " has parent ", o.parent, " of ", n, " objects"));
-    if (o.class_id < -1 || o.class_id >= static_cast<int>(t.class_names.size()))
-      fail(file, cat("object ", i, " has class ", o.class_id, " of ", t.class_names.size(), " classes"));
-    // A parent lies on a coarser level, so a chain cannot come back to where it started.
-    if (o.parent >= 0 && t.objects[o.parent].level <= o.level)
-      fail(file, cat("object ", i, " (level ", o.level, ") has parent ", o.parent, " on level ",
-                     t.objects[o.parent].level, "; a parent must lie on a coarser level"));
-  }
+  if (const std::string problem = table_problem(t); !problem.empty()) fail(file, problem);
   return t;
 }
 
@@ -68,6 +91,10 @@ CityObjects city_objects(const SemanticMesh& mesh, const Taxonomy& taxonomy) {
   t.source = mesh.source_path;
   for (const SemanticClass& c : taxonomy.classes) t.class_names.push_back(c.name);
   for (const SemanticEntity& e : mesh.entities) t.objects.push_back({e.source_id, e.level, e.class_id, e.parent});
+  // A table made from a city model the readers accepted is ours: if it breaks a rule, that is a bug
+  // (exit 3), never a "bad input" naming a file the user did not write.
+  if (const std::string problem = table_problem(t); !problem.empty())
+    throw std::logic_error(cat("the city-object table of ", mesh.source_path, " breaks its own rules: ", problem));
   return t;
 }
 

@@ -18,7 +18,7 @@ struct CityObject {
   std::string id;        // gml:id or CityJSON id (SemanticEntity::source_id)
   int level = 0;         // 1 opening, 2 surface / installation, 3 building / building part
   int class_id = -1;     // taxonomy class, -1 none
-  int32_t parent = -1;   // enclosing object, -1 none
+  int32_t parent = -1;   // enclosing object (an earlier row; a BuildingPart's is its Building or part), -1 none
 };
 
 struct CityObjects {
@@ -28,16 +28,23 @@ struct CityObjects {
 
   // The object that answers for `object` at a label level, as the label maps do: the first of the
   // object and its ancestors whose level is >= `level` (a window at level 2 is its wall; a plain
-  // wall at level 1 is the wall itself). -1 for -1 or when no ancestor reaches that level.
+  // wall at level 1 is the wall itself; a building or part without a finer object answers for
+  // itself), and on level 3 the whole Building (the outermost of the building / part chain, as
+  // building.png). -1 for -1 or when no ancestor reaches that level.
   int32_t at_level(int32_t object, int level) const;
+  // The BuildingPart `object` lies in (the innermost level-3 object of its chain, the object itself if
+  // it is a part); -1 where that is the whole building or there is none.
+  int32_t part_of(int32_t object) const;
   std::string class_name(int32_t object) const;  // "" for none
 
   nlohmann::json to_json() const;
-  // cls::Error naming `file` on a malformed table (missing fields, parents out of range).
+  // cls::Error naming `file` on a malformed table (missing fields; a parent out of range, after its
+  // child or on a finer level; a class out of range).
   static CityObjects from_json(const nlohmann::json& j, const std::string& file);
 };
 
-// The table of a mesh: one row per SemanticMesh entity, in entity order.
+// The table of a mesh: one row per SemanticMesh entity, in entity order. std::logic_error (exit 3:
+// a bug, not bad input) when the mesh breaks the rules from_json checks.
 CityObjects city_objects(const SemanticMesh& mesh, const Taxonomy& taxonomy);
 
 // The per-triangle object of a mesh for the label maps: the triangle's opening, else its surface,

@@ -260,23 +260,24 @@ class CityJsonReader {
     return parse_lod(member(g, "lod", "object '" + id + "' geometry"), id);
   }
 
-  // The root of the object's "parents" chain whose type is a level-3 class (the building a
-  // BuildingPart or BuildingInstallation belongs to); "" if there is none.
-  std::string root_building(const json& objects, const std::string& id) const {
-    std::string current = id, root;
+  // The nearest object up the "parents" chain of `id` whose type is a level-3 class (the Building or
+  // BuildingPart that a BuildingPart or BuildingInstallation lies in); "" if there is none.
+  std::string enclosing_building(const json& objects, const std::string& id) const {
+    std::string current = id;
     for (size_t steps = 0; steps <= objects.size(); ++steps) {  // bounded: parents may form a cycle
       auto it = objects.find(current);
-      if (it == objects.end() || !it->is_object()) break;
-      const json& type = it->value("type", json());
-      if (type.is_string()) {
-        const auto c = taxonomy_.class_of_type(type.get<std::string>());
-        if (c && taxonomy_.classes[*c].level == 3) root = current;
-      }
+      if (it == objects.end() || !it->is_object()) return "";
       const json& parents = it->value("parents", json());
-      if (!parents.is_array() || parents.empty() || !parents[0].is_string()) break;
+      if (!parents.is_array() || parents.empty() || !parents[0].is_string()) return "";
       current = parents[0].get<std::string>();
+      auto parent = objects.find(current);
+      if (parent == objects.end() || !parent->is_object()) return "";
+      const json& type = parent->value("type", json());
+      if (!type.is_string()) continue;
+      const auto c = taxonomy_.class_of_type(type.get<std::string>());
+      if (c && taxonomy_.classes[*c].level == 3) return current;
     }
-    return root;
+    return "";
   }
 
   void add_object(const json& objects, const std::string& id, const json& object,
@@ -445,15 +446,27 @@ class CityJsonReader {
     return taxonomy_.classes[scope.object_class].level == 3;
   }
 
-  // The entity of a CityObject: a root building at level 3 without parent; a BuildingPart
-  // (level 3) or an installation (level 2) under the entity of its root building.
+  // The entity of a CityObject: a root building at level 3 without parent; a BuildingPart (level 3)
+  // or an installation (level 2) under the entity of the building or part it lies in (building ->
+  // part -> part ...), made first so that a parent always precedes its children.
   int object_entity(const json& objects, const std::string& id, int object_class) {
-    auto it = object_entity_.find(id);
-    if (it != object_entity_.end()) return it->second;
-    const std::string root = root_building(objects, id);
+    if (auto it = object_entity_.find(id); it != object_entity_.end()) return it->second;
+    std::vector<std::string> chain;  // the enclosing buildings and parts without an entity yet, innermost first
+    std::set<std::string> seen = {id};
     int parent = -1;
-    if (!root.empty() && root != id)
-      parent = object_entity(objects, root, *taxonomy_.class_of_type(objects[root]["type"].get<std::string>()));
+    for (std::string up = enclosing_building(objects, id); !up.empty(); up = enclosing_building(objects, up)) {
+      if (auto it = object_entity_.find(up); it != object_entity_.end()) {
+        parent = it->second;
+        break;
+      }
+      if (!seen.insert(up).second) object_error(id, "its \"parents\" chain comes back to \"" + up + "\"");
+      chain.push_back(up);
+    }
+    for (auto up = chain.rbegin(); up != chain.rend(); ++up) {
+      const int c = *taxonomy_.class_of_type(objects[*up]["type"].get<std::string>());
+      parent = builder_.add_entity(taxonomy_.classes[c].level, c, parent, *up);
+      object_entity_.emplace(*up, parent);
+    }
     const int e = builder_.add_entity(taxonomy_.classes[object_class].level, object_class, parent, id);
     object_entity_.emplace(id, e);
     return e;

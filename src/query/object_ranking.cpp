@@ -81,6 +81,7 @@ json object_ranking_json(const CityObjects& objects, const std::vector<ObjectSco
                     {"class", objects.class_name(s.object)},
                     {"level", objects.objects[s.object].level},
                     {"building", id_of(objects, objects.at_level(s.object, 3))},
+                    {"part", id_of(objects, objects.part_of(s.object))},
                     {"gaussians", s.gaussians},
                     {"mean_score", s.mean_score},
                     {"max_score", s.max_score},
@@ -94,12 +95,12 @@ json object_ranking_json(const CityObjects& objects, const std::vector<ObjectSco
 std::string object_ranking_csv(const CityObjects& objects, const std::vector<ObjectScore>& ranking) {
   std::ostringstream out;
   out.precision(6);
-  out << "rank,id,class,level,building,gaussians,mean_score,max_score,above_threshold\n";
+  out << "rank,id,class,level,building,part,gaussians,mean_score,max_score,above_threshold\n";
   for (size_t r = 0; r < ranking.size(); ++r) {
     const ObjectScore& s = ranking[r];
     out << r + 1 << ',' << csv_field(id_of(objects, s.object)) << ',' << csv_field(objects.class_name(s.object)) << ','
         << objects.objects[s.object].level << ',' << csv_field(id_of(objects, objects.at_level(s.object, 3))) << ','
-        << s.gaussians << ',' << s.mean_score << ',' << s.max_score << ',' << s.above << '\n';
+        << csv_field(id_of(objects, objects.part_of(s.object))) << ',' << s.gaussians << ',' << s.mean_score << ',' << s.max_score << ',' << s.above << '\n';
   }
   return out.str();
 }

@@ -32,8 +32,8 @@ struct ObjectRankingOptions {
 std::vector<ObjectScore> rank_objects(const CityObjects& objects, const int32_t* object_of, const float* scores,
                                       const float* means, int64_t n, const ObjectRankingOptions& options);
 
-// Rows {rank, index, id, class, level, building, gaussians, mean_score, max_score, above, center, radius};
-// at most `top` rows (0 = all).
+// Rows {rank, index, id, class, level, building, part ("" outside a BuildingPart), gaussians, mean_score,
+// max_score, above, center, radius}; at most `top` rows (0 = all).
 nlohmann::json object_ranking_json(const CityObjects& objects, const std::vector<ObjectScore>& ranking, size_t top = 0);
 // The same rows as CSV with a header line (ids quoted where needed).
 std::string object_ranking_csv(const CityObjects& objects, const std::vector<ObjectScore>& ranking);

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/atomic_file.h"
@@ -18,6 +19,7 @@
 #include "language/language_model.h"
 #include "models/temp_dir.h"
 #include "pipeline/pipeline.h"
+#include "query/query_job.h"
 #include "synth/city_error.h"
 #include "synth/synth_job.h"
 
@@ -27,16 +29,21 @@ using namespace cls;
 namespace {
 
 const std::string kFzk = CLS_TEST_DATA "/citygml/fzk-haus/fzk_haus_lod3_v2.gml";
+// An official LoD2 tile as published: multi-part buildings as Building -> BuildingPart (CityGML 1.0).
+const std::string kNrwTile = CLS_TEST_DATA "/citygml/nrw/LoD2_32_329_5730_1_NW.gml";
 
 fs::path work_path(const std::string& name) {
   static const test::TempDir root("cls_pipeline_");
   return root.path / name;
 }
 
-// A synthetic scene of `views` views of 120x90 (seed 3), optionally with a city transform off the truth.
-fs::path make_scene(const std::string& name, int views, const std::string& city_error = "") {
+// A synthetic scene of `views` views of 120x90 (seed 3), optionally with a city transform off the truth;
+// of another city model, a district with the views shared out over its buildings.
+fs::path make_scene(const std::string& name, int views, const std::string& city_error = "",
+                    const std::string& city = kFzk) {
   synth::SynthJob job;
-  job.city_path = kFzk;
+  job.city_path = city;
+  job.settings.per_building = city != kFzk;
   job.out_dir = work_path(name).string();
   job.settings.views = views;
   job.settings.width = 120;
@@ -127,7 +134,55 @@ double label_agreement(const fs::path& scene, const fs::path& out, int views) {
   return compared ? static_cast<double>(agree) / compared : 0;
 }
 
+// The gml:ids of the elements `<tag ` of a file, read from its text.
+std::set<std::string> ids_of(const std::string& file, const std::string& tag) {
+  const std::string text = read_text_file(file);
+  std::set<std::string> ids;
+  for (size_t at = text.find(tag + " "); at != std::string::npos; at = text.find(tag + " ", at + 1)) {
+    const size_t id = text.find("gml:id=\"", at);
+    if (id == std::string::npos || id > text.find('>', at)) continue;
+    ids.insert(text.substr(id + 8, text.find('"', id + 8) - id - 8));
+  }
+  return ids;
+}
+
 }  // namespace
+
+// An official LoD2 tile whose buildings have BuildingParts runs through every stage (it once stopped
+// after the language training: "a parent must lie on a coarser level"), and its answers name whole
+// Buildings at level 3 and list a part's surfaces with their Building and part.
+TEST(Pipeline, APublishedTileWithBuildingPartsRunsToTheEndAndAnswersWithItsBuildings) {
+  hide_model_weights();
+  const std::set<std::string> buildings = ids_of(kNrwTile, "<bldg:Building"), parts = ids_of(kNrwTile, "<bldg:BuildingPart");
+  ASSERT_FALSE(parts.empty());
+  const fs::path scene = make_scene("nrw", static_cast<int>(buildings.size()), "", kNrwTile);  // a view per building
+  const fs::path out = work_path("nrw_out");
+  const PipelineResult r = run_pipeline(quick(scene, out));
+  ASSERT_EQ(r.outcome, PipelineOutcome::Finished) << r.message;
+  QueryOptions q;
+  q.model_dir = RunLayout(out).language("citylangsplat").string();
+  q.texts = {"roof"};
+  q.maps = false;
+  q.objects = true;
+  q.scene_dir = scene.string();
+  size_t rows_in_parts = 0;
+  for (const std::string level : {"3", "2"}) {
+    q.level = level;
+    q.out_dir = (out / ("objects_" + level)).string();
+    run_query(q);
+    const nlohmann::json rows =
+        nlohmann::json::parse(read_text_file(fs::path(q.out_dir) / "objects_roof.json")).at("objects");
+    ASSERT_FALSE(rows.empty()) << level;
+    for (const nlohmann::json& row : rows) {
+      EXPECT_EQ(buildings.count(row["building"].get<std::string>()), 1u) << row.dump();
+      if (level == "3") EXPECT_EQ(buildings.count(row["id"].get<std::string>()), 1u) << row.dump();
+      const std::string part = row["part"].get<std::string>();
+      EXPECT_TRUE(part.empty() || parts.count(part)) << row.dump();
+      rows_in_parts += !part.empty();
+    }
+  }
+  EXPECT_GT(rows_in_parts, 0u) << "no surface of a BuildingPart answered";
+}
 
 // --models clip without weights: the label maps are made (and agree with the synthetic ground truth),
 // then the run stops before the features, says how to get the weights and still writes its report.

@@ -84,8 +84,8 @@ TEST(ObjectRanking, JsonAndCsvRows) {
   EXPECT_EQ(rows[0]["building"], "B");
   EXPECT_EQ(rows[1]["id"], "win,\"C\"");
   const std::string csv = object_ranking_csv(hand_table(), l1);
-  EXPECT_EQ(csv.substr(0, csv.find('\n')), "rank,id,class,level,building,gaussians,mean_score,max_score,above_threshold");
-  EXPECT_NE(csv.find("\n2,\"win,\"\"C\"\"\",window,1,B,3,"), std::string::npos) << csv;
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "rank,id,class,level,building,part,gaussians,mean_score,max_score,above_threshold");
+  EXPECT_NE(csv.find("\n2,\"win,\"\"C\"\"\",window,1,B,,3,"), std::string::npos) << csv;
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);
 }
 

@@ -9,6 +9,8 @@
 #include <set>
 #include <cstdlib>
 
+#include "citymodel/city_objects.h"
+#include "citymodel/scene_city_model.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/subprocess.h"
@@ -210,6 +212,38 @@ TilePlan two_tile_plan() {
   plan.tiles.push_back({"tile_000", {"a"}, {-TileCell::kInf, -TileCell::kInf, 10, TileCell::kInf}, {"0.png"}});
   plan.tiles.push_back({"tile_001", {"b"}, {10, -TileCell::kInf, TileCell::kInf, TileCell::kInf}, {"1.png"}});
   return plan;
+}
+
+// A published LoD2 tile stores multi-part buildings as Building -> BuildingPart: tiling cuts whole
+// Buildings (the ids of the file's <bldg:Building> elements, read from its text), each box holding its
+// parts' geometry, so no tile ever gets half a building.
+TEST(TileScene, AMultiPartBuildingIsOneFootprintHoldingItsParts) {
+  const std::string tile = std::string(CLS_TEST_DATA) + "/citygml/nrw/LoD2_32_329_5730_1_NW.gml";
+  const std::string text = read_text_file(tile);
+  std::set<std::string> building_ids;
+  for (size_t at = text.find("<bldg:Building "); at != std::string::npos; at = text.find("<bldg:Building ", at + 1)) {
+    const size_t id = text.find("gml:id=\"", at) + 8;
+    building_ids.insert(text.substr(id, text.find('"', id) - id));
+  }
+  const SceneCityModel city = load_scene_city_model(tile, "", {}, "test");
+  const std::vector<BuildingFootprint> footprints = building_footprints(city);
+  std::set<std::string> footprint_ids;
+  for (const BuildingFootprint& f : footprints) footprint_ids.insert(f.id);
+  EXPECT_EQ(footprint_ids, building_ids);
+  ASSERT_EQ(footprints.size(), building_ids.size());
+  // Every vertex of every triangle lies in the box of the building its level-3 chain ends in.
+  const std::vector<int32_t> building = building_of_triangles(city.mesh);
+  size_t checked = 0;
+  for (size_t t = 0; t < city.mesh.num_triangles(); ++t) {
+    ASSERT_GE(building[t], 0) << t;
+    const BuildingFootprint& f = footprints[building[t]];
+    for (int k = 0; k < 3; ++k) {
+      const Vec3f& v = city.vertices[city.mesh.triangles[t][k]];
+      EXPECT_TRUE(v[0] >= f.x0 - 1e-3 && v[0] <= f.x1 + 1e-3 && v[1] >= f.y0 - 1e-3 && v[1] <= f.y1 + 1e-3) << f.id;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 0u);
 }
 
 TEST(TilePlanFile, RoundTripsWithUnboundedSidesAndRefusesBadNames) {

@@ -270,10 +270,12 @@ function renderObjects(answer) {
   }
   for (const object of answer.objects ?? []) {
     const row = body.insertRow();
-    const cells = [object.rank, object.class, object.id, object.building, object.gaussians.toLocaleString(),
+    // A BuildingPart's objects are listed with their building, the part beside it.
+    const building = object.part ? `${object.building} / ${object.part}` : object.building;
+    const cells = [object.rank, object.class, object.id, building, object.gaussians.toLocaleString(),
       object.mean_score.toFixed(3)];
     for (const value of cells) row.insertCell().textContent = value;
-    row.title = `${object.class} ${object.id} of building ${object.building}: max ${object.max_score.toFixed(3)}, ` +
+    row.title = `${object.class} ${object.id} of building ${building}: max ${object.max_score.toFixed(3)}, ` +
       `${(100 * object.above).toFixed(0)}% above the threshold — click to fly there`;
     row.addEventListener("click", () => flyTo(new THREE.Vector3(...object.center), object.radius));
   }
