@@ -2,7 +2,9 @@
 
 #include <torch/types.h>
 
+#include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -118,6 +120,17 @@ PlyColumns read_ply_vertices(const std::string& path) {
   if (!format_ok) fail(path, "PLY header has no format line");
   if (!seen_vertex) fail(path, "PLY has no vertex element");
   cols.stride = offset;
+  if (cols.n > 0 && cols.stride == 0) fail(path, "PLY vertex element has no properties");
+  // Compare the header's promise with the file before allocating it: a count of 10^11 is a damaged
+  // header, not a reason to run out of memory.
+  const std::streamoff header_end = f.tellg();
+  std::error_code ec;
+  const uintmax_t file_bytes = std::filesystem::file_size(path, ec);
+  const uintmax_t available = ec || header_end < 0 ? 0 : file_bytes - static_cast<uintmax_t>(header_end);
+  if (cols.stride > 0 && static_cast<uintmax_t>(cols.n) > available / cols.stride)
+    fail(path, "truncated PLY: the header promises " + std::to_string(cols.n) + " vertices of " +
+                   std::to_string(cols.stride) + " bytes, the file holds " + std::to_string(available) +
+                   " bytes after the header");
   const size_t bytes = static_cast<size_t>(cols.n) * cols.stride;
   cols.data.resize(bytes);
   f.read(cols.data.data(), static_cast<std::streamsize>(bytes));
@@ -210,7 +223,13 @@ GaussianModel read_gaussians_ply(const std::string& path) {
     float* out = t.data_ptr<float>();
     const int64_t m = static_cast<int64_t>(names.size());
     for (int64_t i = 0; i < n; ++i)
-      for (int64_t k = 0; k < m; ++k) out[i * m + k] = c.value(i, *props[k]);
+      for (int64_t k = 0; k < m; ++k) {
+        out[i * m + k] = c.value(i, *props[k]);
+        // NaN or infinity in a Gaussian renders as nothing, or poisons every pixel it touches.
+        if (!std::isfinite(out[i * m + k]))
+          fail(path, "vertex " + std::to_string(i) + " has " + names[k] + " = " + std::to_string(out[i * m + k]) +
+                         ": a Gaussian PLY holds finite numbers only");
+      }
     return t;
   };
   auto indexed = [](const std::string& prefix, int count) {

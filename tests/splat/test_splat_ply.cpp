@@ -7,6 +7,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <limits>
 
 #include <unistd.h>
 
@@ -154,6 +156,47 @@ TEST(SplatPly, BrokenFilesAreErrors) {
   GaussianModel bad = random_model(4, 0, 0);
   bad.means = torch::zeros({3, 3});
   EXPECT_THROW(write_gaussians_ply(path, bad), Error);
+}
+
+// The two damaged files a user met: a header promising 99,999,999,999 vertices (once std::bad_alloc,
+// exit 3) and a model whose values are NaN (once rendered without a word). Both name the file and
+// what is wrong.
+TEST(SplatPly, AHeaderThatPromisesTooMuchAndNonFiniteValuesAreErrors) {
+  const auto message = [](const fs::path& path) {
+    try {
+      read_gaussians_ply(path);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const auto path = temp_path("damaged.ply");
+  write_gaussians_ply(path, random_model(5, 0, 0));
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const auto count_at = bytes.find("element vertex 5\n");
+  ASSERT_NE(count_at, std::string::npos);
+  std::string promising = bytes;
+  promising.replace(count_at, 17, "element vertex 99999999999\n");
+  std::ofstream(path, std::ios::binary) << promising;
+  const std::string promise = message(path);
+  EXPECT_EQ(promise.rfind(path.string() + ": truncated PLY: the header promises 99999999999 vertices", 0), 0u) << promise;
+
+  for (const std::string property : {"x", "opacity", "scale_1", "rot_3", "f_dc_2"}) {
+    GaussianModel g = random_model(5, 0, 0);
+    at::Tensor column = property == "x" ? g.means.select(1, 0)
+                        : property == "opacity" ? g.opacity_logits.select(1, 0)
+                        : property == "scale_1" ? g.log_scales.select(1, 1)
+                        : property == "rot_3" ? g.quats.select(1, 3)
+                                              : g.sh_dc.select(2, 2).select(1, 0);
+    column[3] = property == "rot_3" ? std::numeric_limits<float>::infinity() : std::nanf("");
+    write_gaussians_ply(path, g);
+    const std::string nan = message(path);
+    EXPECT_EQ(nan.rfind(path.string() + ": vertex 3 has " + property + " = ", 0), 0u) << nan;
+  }
 }
 
 }  // namespace
