@@ -173,7 +173,9 @@ std::string Args::help() const {
     s << "  " << (sp.short_name.empty() ? "" : "-" + sp.short_name + ", ") << "--" << sp.name
       << (sp.is_flag ? "" : " VALUE") << "\n      " << sp.help;
     if (sp.required) s << " (required)";
-    else if (!sp.is_flag) s << (sp.def.empty() ? " (no default)" : " (default: " + sp.def + ")");
+    else if (!sp.is_flag && !sp.def.empty()) s << " (default: " + sp.def + ")";
+    // A help text that says its default in words ("default: the built-in one") needs no second note.
+    else if (!sp.is_flag && sp.help.find("default:") == std::string::npos) s << " (no default)";
     s << "\n";
   }
   return s.str();

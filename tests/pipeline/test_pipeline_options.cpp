@@ -34,7 +34,11 @@ std::vector<std::string> option_names(const std::string& help) {
 std::string help_entry(const Binding& b, const PipelineConfig& defaults) {
   const std::string def = b.default_text.empty() ? b.text(defaults) : b.default_text;
   return (b.short_name.empty() ? "" : "-" + b.short_name + ", ") + "--" + b.name + (b.flag ? "" : " VALUE") +
-         "\n      " + b.help + (b.flag ? "" : def.empty() ? " (no default)" : " (default: " + def + ")") + "\n";
+         "\n      " + b.help +
+         (b.flag || (def.empty() && b.help.find("default:") != std::string::npos) ? ""
+          : def.empty()                                                          ? " (no default)"
+                                                                                 : " (default: " + def + ")") +
+         "\n";
 }
 
 size_t count(const std::string& text, const std::string& part) {
