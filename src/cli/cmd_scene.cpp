@@ -1,8 +1,11 @@
 // citylangsplat scene info DIR [--json] [-r N | --width W]
 // citylangsplat scene convert DIR --out DIR --format bin|txt
+#include <algorithm>
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <tuple>
 
@@ -14,6 +17,7 @@
 #include "core/progress.h"
 #include "core/log.h"
 #include "scene/colmap.h"
+#include "scene/exif_gps.h"
 #include "scene/pix4d.h"
 #include "scene/image_loader.h"
 #include "scene/scene.h"
@@ -25,7 +29,8 @@ namespace {
 using CameraKey = std::tuple<int, int, int, std::vector<double>, double>;
 
 int scene_info(int argc, char** argv) {
-  Args args("scene info", "Summarize a scene: views, cameras and their models, sparse points, image sizes.");
+  Args args("scene info",
+            "Summarize a scene: views, cameras and their models, sparse points, image sizes, the photos' EXIF GPS.");
   std::string dir;
   SceneOptions options;
   bool json = false, verify_images = false;
@@ -61,7 +66,29 @@ int scene_info(int argc, char** argv) {
     ++sizes[{{c.width, c.height}, {v.camera.width, v.camera.height}}];
   }
 
+  // The photos' EXIF GPS (what georeferencing starts from): how many carry a fix, and where.
+  size_t with_gps = 0;
+  std::array<double, 2> lat{1e9, -1e9}, lon{1e9, -1e9}, alt{1e9, -1e9};
+  std::map<std::string, int> datums;
+  if (options.check_images)
+    for (const SceneView& v : scene.views) {
+      const std::optional<GpsFix> fix = read_exif_gps(v.image_path);
+      if (!fix) continue;
+      ++with_gps;
+      lat = {std::min(lat[0], fix->latitude), std::max(lat[1], fix->latitude)};
+      lon = {std::min(lon[0], fix->longitude), std::max(lon[1], fix->longitude)};
+      if (fix->altitude) alt = {std::min(alt[0], *fix->altitude), std::max(alt[1], *fix->altitude)};
+      if (!fix->map_datum.empty()) ++datums[fix->map_datum];
+    }
+  const bool with_altitude = alt[0] <= alt[1];
+
   if (json) {
+    nlohmann::json gps = nullptr;  // null: the images were not read (--skip-image-check)
+    if (options.check_images) {
+      gps = {{"images", with_gps}, {"datums", datums}};
+      if (with_gps) gps.update({{"latitude", lat}, {"longitude", lon}});
+      if (with_altitude) gps["altitude"] = alt;
+    }
     nlohmann::json sizes_json = nlohmann::json::array();
     for (const auto& [s, n] : sizes)
       sizes_json.push_back({{"source", {s.first[0], s.first[1]}}, {"loaded", {s.second[0], s.second[1]}}, {"views", n}});
@@ -71,7 +98,8 @@ int scene_info(int argc, char** argv) {
                                 {"cameras", cameras.size()},
                                 {"camera_models", models},
                                 {"points", scene.points.size()},
-                                {"image_sizes", sizes_json}};
+                                {"image_sizes", sizes_json},
+                                {"gps", gps}};
     std::printf("%s\n", out.dump().c_str());
     return 0;
   }
@@ -86,6 +114,17 @@ int scene_info(int argc, char** argv) {
   std::printf(")\npoints:  %zu\n", scene.points.size());
   for (const auto& [s, n] : sizes)
     std::printf("images:  %d views %dx%d, loaded as %dx%d\n", n, s.first[0], s.first[1], s.second[0], s.second[1]);
+  if (!options.check_images) {
+    std::printf("gps:     not read (--skip-image-check)\n");
+  } else if (with_gps == 0) {
+    std::printf("gps:     none of the %zu images carries an EXIF GPS position\n", scene.views.size());
+  } else {
+    std::printf("gps:     %zu of %zu images, latitude %.7f..%.7f, longitude %.7f..%.7f", with_gps, scene.views.size(),
+                lat[0], lat[1], lon[0], lon[1]);
+    if (with_altitude) std::printf(", altitude %.2f..%.2f m", alt[0], alt[1]);
+    for (const auto& [datum, n] : datums) std::printf(", datum %s x%d", datum.c_str(), n);
+    std::printf("\n");
+  }
   return 0;
 }
 

@@ -8,7 +8,11 @@
 #include <string>
 #include <vector>
 
+#include <exiv2/exiv2.hpp>
 #include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include <map>
 
 #include "core/error.h"
 #include "scene/undistort.h"
@@ -24,6 +28,22 @@ inline void expect_error(const std::function<void()>& fn, const std::vector<std:
     const std::string msg = e.what();
     for (const auto& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << "'" << p << "' not in: " << msg;
   }
+}
+
+// A small photo (JPEG or PNG by the name) with the given EXIF tags, written by libexiv2 as a camera
+// writes them: key -> value in exiv2's text form, e.g. {"Exif.GPSInfo.GPSLatitude", "48/1 51/1 296/10"}.
+inline std::filesystem::path photo_with_exif(const std::filesystem::path& dir, const std::string& name,
+                                             const std::map<std::string, std::string>& tags) {
+  const std::filesystem::path path = dir / name;
+  EXPECT_TRUE(cv::imwrite(path.string(), cv::Mat(30, 40, CV_8UC3, cv::Scalar(40, 90, 160))));
+  if (tags.empty()) return path;
+  auto image = Exiv2::ImageFactory::open(path.string());
+  image->readMetadata();
+  Exiv2::ExifData exif;
+  for (const auto& [key, value] : tags) exif[key] = value;
+  image->setExifData(exif);
+  image->writeMetadata();
+  return path;
 }
 
 inline std::filesystem::path fresh_dir(const std::string& name) {

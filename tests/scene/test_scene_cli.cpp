@@ -7,6 +7,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -74,7 +75,42 @@ TEST(SceneCli, VerifyImagesFindsACorruptImageByName) {
   const test::CliResult r = test::run_cli("scene info " + dir.string() + " --verify-images");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("im2.jpg"), std::string::npos) << r.err;
-  EXPECT_EQ(run("scene info " + dir.string()).status, 0);  // existence only: not decoded
+  // Without --verify-images the pixels are not decoded, but the EXIF is read (GPS): a file cut inside
+  // its header is found there too, by name.
+  const test::CliResult info = run("scene info " + dir.string());
+  EXPECT_EQ(info.status, 1);
+  EXPECT_NE(info.err.find("im2.jpg: cannot read the image's metadata"), std::string::npos) << info.err;
+  fs::remove_all(dir);
+}
+
+// scene info reports the photos' EXIF GPS (what georeferencing starts from), and a GPS tag out of range
+// is an error naming the photo.
+TEST(SceneCli, InfoReportsThePhotosGps) {
+  const fs::path dir = model_scene("cli_gps");
+  fs::create_directories(dir / "images");
+  const auto fix = [](const std::string& lat) {
+    return std::map<std::string, std::string>{{"Exif.GPSInfo.GPSLatitudeRef", "N"}, {"Exif.GPSInfo.GPSLatitude", lat},
+                                              {"Exif.GPSInfo.GPSLongitudeRef", "E"},
+                                              {"Exif.GPSInfo.GPSLongitude", "7/1 30/1 0/1"}};
+  };
+  test::photo_with_exif(dir / "images", "im1.jpg", fix("51/1 30/1 0/1"));  // 51.5 N, 7.5 E
+  test::photo_with_exif(dir / "images", "im2.jpg", {});
+  test::photo_with_exif(dir / "images", "im3.jpg", fix("51/1 45/1 0/1"));  // 51.75 N
+  const test::CliResult r = run("scene info " + dir.string() + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto gps = nlohmann::json::parse(r.out)["gps"];
+  EXPECT_EQ(gps["images"], 2);
+  EXPECT_DOUBLE_EQ(gps["latitude"][0].get<double>(), 51.5);
+  EXPECT_DOUBLE_EQ(gps["latitude"][1].get<double>(), 51.75);
+  EXPECT_DOUBLE_EQ(gps["longitude"][1].get<double>(), 7.5);
+  EXPECT_FALSE(gps.contains("altitude"));
+  EXPECT_NE(run("scene info " + dir.string()).out.find("gps:     2 of 3 images, latitude 51.5000000..51.7500000"),
+            std::string::npos);
+  EXPECT_TRUE(nlohmann::json::parse(run("scene info " + dir.string() + " --json --skip-image-check").out)["gps"].is_null());
+  test::photo_with_exif(dir / "images", "im2.jpg", fix("91/1 0/1 0/1"));
+  const test::CliResult bad = run("scene info " + dir.string());
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_NE(bad.err.find("im2.jpg: EXIF Exif.GPSInfo.GPSLatitude is 91 degrees, more than 90"), std::string::npos) << bad.err;
   fs::remove_all(dir);
 }
 

@@ -1,0 +1,98 @@
+#include "scene/exif_gps.h"
+
+#include <exiv2/exiv2.hpp>
+
+#include <cmath>
+#include <mutex>
+#include <vector>
+
+#include "core/error.h"
+#include "core/log.h"
+
+namespace cls {
+namespace {
+
+// libexiv2 prints its own warnings to stderr; our errors name the file and the tag instead.
+void mute_exiv2() {
+  static std::once_flag once;
+  std::call_once(once, [] { Exiv2::LogMsg::setLevel(Exiv2::LogMsg::mute); });
+}
+
+const Exiv2::Exifdatum* find(const Exiv2::ExifData& exif, const char* key) {
+  const auto it = exif.findKey(Exiv2::ExifKey(key));
+  return it == exif.end() ? nullptr : &*it;
+}
+
+// The rationals of a tag as doubles (URational, as EXIF defines the GPS tags, read without going through
+// a signed int32; any other numeric type through libexiv2's conversion).
+std::vector<double> rationals(const std::string& path, const Exiv2::Exifdatum& d) {
+  std::vector<double> out;
+  const auto* u = d.count() > 0 ? dynamic_cast<const Exiv2::URationalValue*>(&d.value()) : nullptr;
+  for (long k = 0; k < d.count(); ++k) {
+    const Exiv2::Rational r = u ? Exiv2::Rational(0, 0) : d.toRational(k);
+    const double num = u ? u->value_[k].first : r.first, den = u ? u->value_[k].second : r.second;
+    if (den == 0) fail(path, cat("EXIF ", d.key(), " has a zero denominator: ", d.toString()));
+    out.push_back(num / den);
+  }
+  return out;
+}
+
+// Degrees, minutes, seconds (EXIF: three rationals; fewer are read as the leading parts) to degrees.
+double degrees(const std::string& path, const Exiv2::Exifdatum& d, double limit) {
+  const std::vector<double> dms = rationals(path, d);
+  if (dms.empty() || dms.size() > 3) fail(path, cat("EXIF ", d.key(), " has ", dms.size(), " values, expected 3"));
+  for (size_t k = 0; k < dms.size(); ++k) {
+    if (!std::isfinite(dms[k]) || dms[k] < 0) fail(path, cat("EXIF ", d.key(), " has a negative part: ", d.toString()));
+    if (k > 0 && dms[k] >= 60)
+      fail(path, cat("EXIF ", d.key(), " has ", k == 1 ? "minutes" : "seconds", " of 60 or more: ", d.toString()));
+  }
+  const double value = dms[0] + (dms.size() > 1 ? dms[1] / 60 : 0) + (dms.size() > 2 ? dms[2] / 3600 : 0);
+  if (value > limit) fail(path, cat("EXIF ", d.key(), " is ", value, " degrees, more than ", limit, ": ", d.toString()));
+  return value;
+}
+
+// +1 or -1 from a reference tag ("N"/"S", "E"/"W"); cls::Error for a missing or unknown one.
+double sign(const std::string& path, const Exiv2::ExifData& exif, const char* key, char positive, char negative) {
+  const Exiv2::Exifdatum* ref = find(exif, key);
+  const std::string value = ref ? ref->toString() : "";
+  if (value.empty()) fail(path, cat("EXIF ", key, " is missing: the GPS position has no hemisphere"));
+  if (value[0] == positive) return 1;
+  if (value[0] == negative) return -1;
+  fail(path, cat("EXIF ", key, " is \"", value, "\", expected ", positive, " or ", negative));
+}
+
+}  // namespace
+
+std::optional<GpsFix> read_exif_gps(const std::string& path) {
+  mute_exiv2();
+  Exiv2::ExifData exif;
+  try {
+    auto image = Exiv2::ImageFactory::open(path);
+    image->readMetadata();
+    exif = image->exifData();
+  } catch (const Exiv2::AnyError& e) {
+    fail(path, std::string("cannot read the image's metadata (libexiv2): ") + e.what());
+  }
+  const Exiv2::Exifdatum* lat = find(exif, "Exif.GPSInfo.GPSLatitude");
+  const Exiv2::Exifdatum* lon = find(exif, "Exif.GPSInfo.GPSLongitude");
+  if (!lat && !lon) return std::nullopt;
+  if (!lat || !lon) fail(path, cat("EXIF has GPS", lat ? "Latitude" : "Longitude", " without GPS", lat ? "Longitude" : "Latitude"));
+  GpsFix fix;
+  fix.latitude = sign(path, exif, "Exif.GPSInfo.GPSLatitudeRef", 'N', 'S') * degrees(path, *lat, 90);
+  fix.longitude = sign(path, exif, "Exif.GPSInfo.GPSLongitudeRef", 'E', 'W') * degrees(path, *lon, 180);
+  if (const Exiv2::Exifdatum* alt = find(exif, "Exif.GPSInfo.GPSAltitude")) {
+    const std::vector<double> a = rationals(path, *alt);
+    if (a.size() != 1 || !std::isfinite(a[0])) fail(path, cat("EXIF GPSAltitude is not one number: ", alt->toString()));
+    const Exiv2::Exifdatum* ref = find(exif, "Exif.GPSInfo.GPSAltitudeRef");
+    const long below = ref && ref->count() > 0 ? ref->toLong(0) : 0;
+    if (below != 0 && below != 1) fail(path, cat("EXIF GPSAltitudeRef is ", below, ", expected 0 (above) or 1 (below sea level)"));
+    fix.altitude = below ? -a[0] : a[0];
+  }
+  if (const Exiv2::Exifdatum* datum = find(exif, "Exif.GPSInfo.GPSMapDatum")) {
+    fix.map_datum = datum->toString();  // cameras pad it ("WGS-84   ")
+    fix.map_datum.erase(fix.map_datum.find_last_not_of(std::string(" \0", 2)) + 1);
+  }
+  return fix;
+}
+
+}  // namespace cls

@@ -1,0 +1,83 @@
+// EXIF GPS of photos: tags written by libexiv2 as a camera writes them (degrees, minutes, seconds as
+// rationals with N/S/E/W references), read back as signed decimal degrees worked out by hand, and
+// every malformed or out-of-range tag an error that names the file and the tag.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+
+#include "core/atomic_file.h"
+#include "scene/exif_gps.h"
+#include "scene_test_util.h"
+
+namespace fs = std::filesystem;
+using namespace cls;
+
+namespace {
+
+const std::map<std::string, std::string> kParis = {
+    {"Exif.GPSInfo.GPSLatitudeRef", "N"},   {"Exif.GPSInfo.GPSLatitude", "48/1 51/1 296/10"},
+    {"Exif.GPSInfo.GPSLongitudeRef", "E"},  {"Exif.GPSInfo.GPSLongitude", "2/1 17/1 402/10"},
+    {"Exif.GPSInfo.GPSAltitudeRef", "0"},   {"Exif.GPSInfo.GPSAltitude", "71/2"},
+    {"Exif.GPSInfo.GPSMapDatum", "WGS-84   "}};  // padded, as cameras write it
+
+std::map<std::string, std::string> with(std::map<std::string, std::string> tags, const std::string& key,
+                                        const std::string& value) {
+  if (value.empty()) tags.erase(key);
+  else tags[key] = value;
+  return tags;
+}
+
+}  // namespace
+
+TEST(ExifGps, DegreesMinutesSecondsAndReferencesGiveSignedDegrees) {
+  const fs::path dir = test::fresh_dir("exif_gps");
+  for (const char* name : {"paris.jpg", "paris.png"}) {  // phones write JPEG, our synth PNG
+    SCOPED_TRACE(name);
+    const auto fix = read_exif_gps(test::photo_with_exif(dir, name, kParis).string());
+    ASSERT_TRUE(fix.has_value());
+    EXPECT_NEAR(fix->latitude, 48 + 51 / 60.0 + 29.6 / 3600, 1e-12);  // 48.8582222...
+    EXPECT_NEAR(fix->longitude, 2 + 17 / 60.0 + 40.2 / 3600, 1e-12);  // 2.2945
+    ASSERT_TRUE(fix->altitude.has_value());
+    EXPECT_DOUBLE_EQ(*fix->altitude, 35.5);
+    EXPECT_EQ(fix->map_datum, "WGS-84");
+  }
+  // South, west, below sea level; a position without altitude.
+  auto south = with(with(with(kParis, "Exif.GPSInfo.GPSLatitudeRef", "S"), "Exif.GPSInfo.GPSLongitudeRef", "W"),
+                    "Exif.GPSInfo.GPSAltitudeRef", "1");
+  const auto s = read_exif_gps(test::photo_with_exif(dir, "south.jpg", south).string());
+  ASSERT_TRUE(s.has_value());
+  EXPECT_NEAR(s->latitude, -(48 + 51 / 60.0 + 29.6 / 3600), 1e-12);
+  EXPECT_NEAR(s->longitude, -(2 + 17 / 60.0 + 40.2 / 3600), 1e-12);
+  EXPECT_DOUBLE_EQ(*s->altitude, -35.5);
+  const auto flat = read_exif_gps(test::photo_with_exif(dir, "flat.jpg", with(kParis, "Exif.GPSInfo.GPSAltitude", "")).string());
+  ASSERT_TRUE(flat.has_value());
+  EXPECT_FALSE(flat->altitude.has_value());
+  // No EXIF at all, and EXIF without GPS: no position, no error.
+  EXPECT_FALSE(read_exif_gps(test::photo_with_exif(dir, "plain.jpg", {}).string()).has_value());
+  EXPECT_FALSE(read_exif_gps(test::photo_with_exif(dir, "camera.jpg", {{"Exif.Image.Make", "Phone"}}).string()).has_value());
+  fs::remove_all(dir);
+}
+
+TEST(ExifGps, MalformedOrOutOfRangeTagsNameTheFileAndTheTag) {
+  const fs::path dir = test::fresh_dir("exif_gps_bad");
+  const std::vector<std::pair<std::map<std::string, std::string>, std::string>> cases = {
+      {with(kParis, "Exif.GPSInfo.GPSLatitude", "95/1 0/1 0/1"), "more than 90"},
+      {with(kParis, "Exif.GPSInfo.GPSLongitude", "181/1 0/1 0/1"), "more than 180"},
+      {with(kParis, "Exif.GPSInfo.GPSLatitude", "48/1 60/1 0/1"), "minutes of 60 or more"},
+      {with(kParis, "Exif.GPSInfo.GPSLongitude", "2/1 17/1 61/1"), "seconds of 60 or more"},
+      {with(kParis, "Exif.GPSInfo.GPSLatitude", "48/0 51/1 296/10"), "zero denominator"},
+      {with(kParis, "Exif.GPSInfo.GPSLatitudeRef", ""), "GPSLatitudeRef is missing"},
+      {with(kParis, "Exif.GPSInfo.GPSLongitudeRef", "X"), "expected E or W"},
+      {with(kParis, "Exif.GPSInfo.GPSLongitude", ""), "GPSLatitude without GPSLongitude"},
+      {with(kParis, "Exif.GPSInfo.GPSAltitudeRef", "2"), "GPSAltitudeRef is 2"}};
+  int k = 0;
+  for (const auto& [tags, message] : cases) {
+    const fs::path path = test::photo_with_exif(dir, "bad" + std::to_string(k++) + ".jpg", tags);
+    test::expect_error([&] { read_exif_gps(path.string()); }, {path.string() + ": EXIF", message});
+  }
+  const fs::path text = dir / "notes.jpg";
+  write_text_atomic(text, "not an image");
+  test::expect_error([&] { read_exif_gps(text.string()); }, {text.string() + ": cannot read the image's metadata"});
+  fs::remove_all(dir);
+}
