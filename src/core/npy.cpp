@@ -1,5 +1,6 @@
 #include "core/npy.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstring>
 #include <fstream>
@@ -284,8 +285,17 @@ NpyArray parse_npy(const std::string& bytes, const std::string& name) {
   }
   if (fortran_order)
     fail(name, "Fortran-ordered .npy arrays are not supported (save with np.ascontiguousarray)");
-  const size_t expected = static_cast<size_t>(a.numel()) * t.size;
   const size_t available = bytes.size() - prefix - header_len;
+  // The shape's element count, stopped before it overflows: (2^32, 2^32) would wrap to 0 and pass as empty.
+  size_t elements = std::find(a.shape.begin(), a.shape.end(), 0) == a.shape.end() ? 1 : 0;
+  for (size_t k = 0; k < a.shape.size() && elements > 0; ++k)
+    if (__builtin_mul_overflow(elements, static_cast<size_t>(a.shape[k]), &elements) || elements > available) {
+      std::string shape;
+      for (const int64_t d : a.shape) shape += (shape.empty() ? "" : ", ") + std::to_string(d);
+      fail(name, "truncated .npy data: shape (" + shape + ") holds more elements than the file's " +
+                     std::to_string(available) + " data bytes");
+    }
+  const size_t expected = elements * t.size;
   if (available < expected)
     fail(name, "truncated .npy data: shape needs " + std::to_string(expected) + " bytes, file has " +
                    std::to_string(available));

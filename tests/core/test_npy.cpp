@@ -161,6 +161,16 @@ TEST(Npy, BadFilesGiveErrorsNamingTheFile) {
             std::string::npos);
   EXPECT_NE(error_of(npy_bytes(1, "{'descr': '<f4', 'fortran_order': False, 'shape': (2,", data)).find("bad .npy header"),
             std::string::npos);
+  // A shape whose element count overflows 64 bits (it once wrapped to 0 and read as empty) or merely
+  // promises more than the file holds; a zero in the shape is an empty array whatever the rest says.
+  const std::string huge = error_of(npy_bytes(1, "{'descr': '<f4', 'fortran_order': False, 'shape': (4294967296, 4294967296), }", ""));
+  EXPECT_EQ(huge.rfind("x.npy: truncated .npy data: shape (4294967296, 4294967296) holds more elements", 0), 0u) << huge;
+  EXPECT_NE(error_of(npy_bytes(1, "{'descr': '<f4', 'fortran_order': False, 'shape': (1000000, 3), }", data))
+                .find("holds more elements than the file's 8 data bytes"),
+            std::string::npos);
+  EXPECT_EQ(parse_npy(npy_bytes(1, "{'descr': '<f4', 'fortran_order': False, 'shape': (4294967296, 0), }", ""), "e.npy")
+                .numel(),
+            0);
   std::string v9 = good;
   v9[6] = 9;
   EXPECT_NE(error_of(v9).find("version 9.0"), std::string::npos);
