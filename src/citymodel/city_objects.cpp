@@ -47,8 +47,8 @@ json CityObjects::to_json() const {
 namespace {
 
 // What makes a table unusable, "" when nothing does: parents and classes out of range, a parent after
-// its child (so no chain comes back to where it started), or on a finer level (a BuildingPart's parent
-// is its Building or another part, on the same level).
+// its child (so no chain comes back to where it started), or on a finer level. The same level is fine:
+// a BuildingPart in its Building or in another part, a surface of a BuildingInstallation.
 std::string table_problem(const CityObjects& t) {
   const int64_t n = static_cast<int64_t>(t.objects.size());
   for (int64_t i = 0; i < n; ++i) {

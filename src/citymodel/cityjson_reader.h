@@ -2,10 +2,11 @@
 // CityJSON 1.0 / 1.1 / 2.0 documents and CityJSONSeq (JSON lines) -> SemanticMesh.
 //
 // Mapping (see data/taxonomy.json):
-//  - a CityObject whose type maps to a level-3 class (Building, BuildingPart) contributes to the
-//    level-3 entity of its root building (a BuildingPart belongs to its Building via "parents");
+//  - a CityObject whose type maps to a level-3 class (Building, BuildingPart) is a level-3 entity
+//    under the nearest level-3 object up its "parents" chain (building -> part -> part ...); a cycle
+//    of "parents" is an error naming the object;
 //  - other mapped CityObjects (BuildingInstallation, ...) become an entity of their class under
-//    the root building; objects of unmapped types (Road, TINRelief, ...) are skipped;
+//    the building or part they lie in; objects of unmapped types (Road, TINRelief, ...) are skipped;
 //  - semantic surfaces (geometry "semantics") become entities: walls, roofs, ... at level 2 under
 //    the building; Window/Door surfaces at level 1 under the surface named by their "parent"
 //    index; faces without semantics get the class "surface";

@@ -118,6 +118,11 @@ int MeshBuilder::add_entity(int level, int class_id, int parent, const std::stri
     throw std::logic_error(cat("MeshBuilder: parent ", parent, " is not an earlier entity"));
   if (class_id < -1 || class_id >= static_cast<int>(taxonomy_.classes.size()))
     throw std::logic_error(cat("MeshBuilder: class id ", class_id));
+  // Bad input, not a bug: a taxonomy (--taxonomy) can put a container on a finer level than what it holds.
+  if (parent >= 0 && mesh_.entities[parent].level < level)
+    throw Error(cat("object \"", source_id, "\" (level ", level, ") lies inside \"", mesh_.entities[parent].source_id,
+                    "\" (level ", mesh_.entities[parent].level,
+                    "); an object lies in one of the same or a coarser level (check the taxonomy's levels)"));
   mesh_.entities.push_back({level, class_id, parent, source_id});
   return static_cast<int>(mesh_.entities.size()) - 1;
 }

@@ -94,7 +94,8 @@ json write_object_ranking(const LanguageModel& model, const std::string& text, c
   std::cout << "'" << text << "' (level " << level << "): " << ranking.size() << " city objects ranked by mean score\n";
   for (size_t r = 0; r < rows.size() && r < 10; ++r)
     std::cout << "  " << r + 1 << ". " << rows[r]["class"].get<std::string>() << " " << rows[r]["id"].get<std::string>()
-              << " (building " << rows[r]["building"].get<std::string>() << "): mean "
+              << " (building " << rows[r]["building"].get<std::string>()
+              << (rows[r]["part"] == "" ? "" : ", part " + rows[r]["part"].get<std::string>()) << "): mean "
               << rows[r]["mean_score"].get<double>() << " over " << rows[r]["gaussians"].get<int64_t>() << " Gaussians\n";
   return {{"json", json_file}, {"csv", csv_file}, {"ranked", ranking.size()}, {"top", object_ranking_json(model.objects, ranking, 5)}};
 }

@@ -51,7 +51,7 @@ class ViewerModel {
   const std::string& gaussians_buffer() const { return gaussians_; }
   // Non-indexed triangles of the city mesh in the scene frame, x y z r g b per vertex ("" without one).
   const std::string& city_mesh_buffer() const { return city_mesh_; }
-  // GET /api/objects: {"objects": [{index, id, class, level, building, gaussians, center, radius}]}, every
+  // GET /api/objects: {"objects": [{index, id, class, level, building, part, gaussians, center, radius}]}, every
   // city object that has Gaussians, with those of its parts (a wall with its windows).
   const nlohmann::json& objects_json() const { return objects_json_; }
   // The photo of view `index`, or "" when out of range.

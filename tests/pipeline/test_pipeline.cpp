@@ -175,7 +175,10 @@ TEST(Pipeline, APublishedTileWithBuildingPartsRunsToTheEndAndAnswersWithItsBuild
     ASSERT_FALSE(rows.empty()) << level;
     for (const nlohmann::json& row : rows) {
       EXPECT_EQ(buildings.count(row["building"].get<std::string>()), 1u) << row.dump();
-      if (level == "3") EXPECT_EQ(buildings.count(row["id"].get<std::string>()), 1u) << row.dump();
+      if (level == "3") {
+        EXPECT_EQ(buildings.count(row["id"].get<std::string>()), 1u) << row.dump();
+        EXPECT_EQ(row["part"], "") << row.dump();  // the whole building answers, in no part
+      }
       const std::string part = row["part"].get<std::string>();
       EXPECT_TRUE(part.empty() || parts.count(part)) << row.dump();
       rows_in_parts += !part.empty();
