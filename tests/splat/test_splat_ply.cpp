@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <torch/torch.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -160,7 +161,7 @@ TEST(SplatPly, BrokenFilesAreErrors) {
 
 // The two damaged files a user met: a header promising 99,999,999,999 vertices (once std::bad_alloc,
 // exit 3) and a model whose values are NaN (once rendered without a word). Both name the file and
-// what is wrong.
+// what is wrong. Every property is 4 bytes (float32 or int32) in the files write_gaussians_ply makes.
 TEST(SplatPly, AHeaderThatPromisesTooMuchAndNonFiniteValuesAreErrors) {
   const auto message = [](const fs::path& path) {
     try {
@@ -185,18 +186,29 @@ TEST(SplatPly, AHeaderThatPromisesTooMuchAndNonFiniteValuesAreErrors) {
   const std::string promise = message(path);
   EXPECT_EQ(promise.rfind(path.string() + ": truncated PLY: the header promises 99999999999 vertices", 0), 0u) << promise;
 
+  // Non-finite values, put into a valid file's bytes (the writer refuses them): vertex 3's property.
+  const size_t data_at = bytes.find("end_header\n") + 11;
+  std::vector<std::string> properties;
+  for (size_t at = bytes.find("property "); at < data_at; at = bytes.find("property ", at + 1)) {
+    const size_t name = bytes.find(' ', at + 9) + 1;  // after "property TYPE "
+    properties.push_back(bytes.substr(name, bytes.find('\n', at) - name));
+  }
   for (const std::string property : {"x", "opacity", "scale_1", "rot_3", "f_dc_2"}) {
-    GaussianModel g = random_model(5, 0, 0);
-    at::Tensor column = property == "x" ? g.means.select(1, 0)
-                        : property == "opacity" ? g.opacity_logits.select(1, 0)
-                        : property == "scale_1" ? g.log_scales.select(1, 1)
-                        : property == "rot_3" ? g.quats.select(1, 3)
-                                              : g.sh_dc.select(2, 2).select(1, 0);
-    column[3] = property == "rot_3" ? std::numeric_limits<float>::infinity() : std::nanf("");
-    write_gaussians_ply(path, g);
+    const size_t column = std::find(properties.begin(), properties.end(), property) - properties.begin();
+    ASSERT_LT(column, properties.size()) << property;
+    std::string damaged = bytes;
+    const float bad = property == "rot_3" ? std::numeric_limits<float>::infinity() : std::nanf("");
+    std::memcpy(&damaged[data_at + (3 * properties.size() + column) * 4], &bad, 4);
+    std::ofstream(path, std::ios::binary) << damaged;
     const std::string nan = message(path);
     EXPECT_EQ(nan.rfind(path.string() + ": vertex 3 has " + property + " = ", 0), 0u) << nan;
   }
+  // And the writer refuses them, writing nothing.
+  GaussianModel diverged = random_model(5, 0, 0);
+  diverged.log_scales[2][1] = std::nanf("");
+  const auto fresh = temp_path("diverged.ply");
+  EXPECT_THROW(write_gaussians_ply(fresh, diverged), Error);
+  EXPECT_FALSE(fs::exists(fresh));
 }
 
 }  // namespace
