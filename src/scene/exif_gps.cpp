@@ -2,8 +2,10 @@
 
 #include <exiv2/exiv2.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
+#include <utility>
 #include <vector>
 
 #include "core/error.h"
@@ -23,14 +25,24 @@ const Exiv2::Exifdatum* find(const Exiv2::ExifData& exif, const char* key) {
   return it == exif.end() ? nullptr : &*it;
 }
 
-// The rationals of a tag as doubles (URational, as EXIF defines the GPS tags, read without going through
-// a signed int32; any other numeric type through libexiv2's conversion).
-std::vector<double> rationals(const std::string& path, const Exiv2::Exifdatum& d) {
-  std::vector<double> out;
-  const auto* u = d.count() > 0 ? dynamic_cast<const Exiv2::URationalValue*>(&d.value()) : nullptr;
+// The rationals of a tag as doubles; nullopt when every one is 0/0, which cameras without a fix write.
+// EXIF defines the GPS tags as URational; a tag of another type (an ASCII "48" read as rationals would
+// give character codes) is an error.
+std::optional<std::vector<double>> rationals(const std::string& path, const Exiv2::Exifdatum& d) {
+  if (d.typeId() != Exiv2::unsignedRational && d.typeId() != Exiv2::signedRational)
+    fail(path, cat("EXIF ", d.key(), " is of type ", d.typeName() ? d.typeName() : "unknown", ", not rational: ",
+                   d.toString()));
+  // URational read as such: numerators beyond int32 stay right.
+  const auto* u = dynamic_cast<const Exiv2::URationalValue*>(&d.value());
+  std::vector<std::pair<double, double>> parts;
   for (long k = 0; k < d.count(); ++k) {
     const Exiv2::Rational r = u ? Exiv2::Rational(0, 0) : d.toRational(k);
-    const double num = u ? u->value_[k].first : r.first, den = u ? u->value_[k].second : r.second;
+    parts.emplace_back(u ? u->value_[k].first : r.first, u ? u->value_[k].second : r.second);
+  }
+  if (std::all_of(parts.begin(), parts.end(), [](const auto& p) { return p.first == 0 && p.second == 0; }))
+    return std::nullopt;
+  std::vector<double> out;
+  for (const auto& [num, den] : parts) {
     if (den == 0) fail(path, cat("EXIF ", d.key(), " has a zero denominator: ", d.toString()));
     out.push_back(num / den);
   }
@@ -38,8 +50,10 @@ std::vector<double> rationals(const std::string& path, const Exiv2::Exifdatum& d
 }
 
 // Degrees, minutes, seconds (EXIF: three rationals; fewer are read as the leading parts) to degrees.
-double degrees(const std::string& path, const Exiv2::Exifdatum& d, double limit) {
-  const std::vector<double> dms = rationals(path, d);
+std::optional<double> degrees(const std::string& path, const Exiv2::Exifdatum& d, double limit) {
+  const std::optional<std::vector<double>> parts = rationals(path, d);
+  if (!parts) return std::nullopt;
+  const std::vector<double>& dms = *parts;
   if (dms.empty() || dms.size() > 3) fail(path, cat("EXIF ", d.key(), " has ", dms.size(), " values, expected 3"));
   for (size_t k = 0; k < dms.size(); ++k) {
     if (!std::isfinite(dms[k]) || dms[k] < 0) fail(path, cat("EXIF ", d.key(), " has a negative part: ", d.toString()));
@@ -67,26 +81,36 @@ std::optional<GpsFix> read_exif_gps(const std::string& path) {
   mute_exiv2();
   Exiv2::ExifData exif;
   try {
+    // A format libexiv2 does not know (PPM, EXR, ...) carries no EXIF it could read: no position.
+    if (Exiv2::ImageFactory::getType(path) == Exiv2::ImageType::none) return std::nullopt;
     auto image = Exiv2::ImageFactory::open(path);
     image->readMetadata();
     exif = image->exifData();
-  } catch (const Exiv2::AnyError& e) {
+  } catch (const Exiv2::Error& e) {
+    fail(path, std::string("cannot read the image's metadata (libexiv2): ") + e.what());
+  } catch (const std::exception& e) {  // libexiv2 throws std:: exceptions too on damaged files
     fail(path, std::string("cannot read the image's metadata (libexiv2): ") + e.what());
   }
   const Exiv2::Exifdatum* lat = find(exif, "Exif.GPSInfo.GPSLatitude");
   const Exiv2::Exifdatum* lon = find(exif, "Exif.GPSInfo.GPSLongitude");
   if (!lat && !lon) return std::nullopt;
   if (!lat || !lon) fail(path, cat("EXIF has GPS", lat ? "Latitude" : "Longitude", " without GPS", lat ? "Longitude" : "Latitude"));
+  const std::optional<double> latitude = degrees(path, *lat, 90), longitude = degrees(path, *lon, 180);
+  if (!latitude && !longitude) return std::nullopt;  // 0/0 in both: a camera that had no fix
+  if (!latitude || !longitude) fail(path, "EXIF GPS has one of latitude and longitude unset (0/0)");
   GpsFix fix;
-  fix.latitude = sign(path, exif, "Exif.GPSInfo.GPSLatitudeRef", 'N', 'S') * degrees(path, *lat, 90);
-  fix.longitude = sign(path, exif, "Exif.GPSInfo.GPSLongitudeRef", 'E', 'W') * degrees(path, *lon, 180);
+  fix.latitude = sign(path, exif, "Exif.GPSInfo.GPSLatitudeRef", 'N', 'S') * *latitude;
+  fix.longitude = sign(path, exif, "Exif.GPSInfo.GPSLongitudeRef", 'E', 'W') * *longitude;
   if (const Exiv2::Exifdatum* alt = find(exif, "Exif.GPSInfo.GPSAltitude")) {
-    const std::vector<double> a = rationals(path, *alt);
-    if (a.size() != 1 || !std::isfinite(a[0])) fail(path, cat("EXIF GPSAltitude is not one number: ", alt->toString()));
+    const std::optional<std::vector<double>> a = rationals(path, *alt);
+    if (a && (a->size() != 1 || !std::isfinite((*a)[0])))
+      fail(path, cat("EXIF GPSAltitude is not one number: ", alt->toString()));
+    // GPSAltitudeRef: a BYTE 0 (above) or 1 (below sea level); some writers store the digit as text.
     const Exiv2::Exifdatum* ref = find(exif, "Exif.GPSInfo.GPSAltitudeRef");
-    const long below = ref && ref->count() > 0 ? ref->toLong(0) : 0;
-    if (below != 0 && below != 1) fail(path, cat("EXIF GPSAltitudeRef is ", below, ", expected 0 (above) or 1 (below sea level)"));
-    fix.altitude = below ? -a[0] : a[0];
+    const std::string below = ref ? ref->toString() : "0";
+    if (below != "0" && below != "1")
+      fail(path, cat("EXIF GPSAltitudeRef is ", below, ", expected 0 (above) or 1 (below sea level)"));
+    if (a) fix.altitude = below == "1" ? -(*a)[0] : (*a)[0];
   }
   if (const Exiv2::Exifdatum* datum = find(exif, "Exif.GPSInfo.GPSMapDatum")) {
     fix.map_datum = datum->toString();  // cameras pad it ("WGS-84   ")

@@ -31,7 +31,8 @@ inline void expect_error(const std::function<void()>& fn, const std::vector<std:
 }
 
 // A small photo (JPEG or PNG by the name) with the given EXIF tags, written by libexiv2 as a camera
-// writes them: key -> value in exiv2's text form, e.g. {"Exif.GPSInfo.GPSLatitude", "48/1 51/1 296/10"}.
+// writes them: key -> value in exiv2's text form, e.g. {"Exif.GPSInfo.GPSLatitude", "48/1 51/1 296/10"}, or
+// "ascii:TEXT" for a tag written as text whatever its type should be.
 inline std::filesystem::path photo_with_exif(const std::filesystem::path& dir, const std::string& name,
                                              const std::map<std::string, std::string>& tags) {
   const std::filesystem::path path = dir / name;
@@ -40,7 +41,14 @@ inline std::filesystem::path photo_with_exif(const std::filesystem::path& dir, c
   auto image = Exiv2::ImageFactory::open(path.string());
   image->readMetadata();
   Exiv2::ExifData exif;
-  for (const auto& [key, value] : tags) exif[key] = value;
+  for (const auto& [key, value] : tags) {
+    if (value.rfind("ascii:", 0) == 0) {  // a tag written with the wrong type, as some tools do
+      Exiv2::AsciiValue text(value.substr(6));
+      exif.add(Exiv2::ExifKey(key), &text);
+    } else {
+      exif[key] = value;
+    }
+  }
   image->setExifData(exif);
   image->writeMetadata();
   return path;

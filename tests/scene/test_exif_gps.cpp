@@ -53,6 +53,21 @@ TEST(ExifGps, DegreesMinutesSecondsAndReferencesGiveSignedDegrees) {
   const auto flat = read_exif_gps(test::photo_with_exif(dir, "flat.jpg", with(kParis, "Exif.GPSInfo.GPSAltitude", "")).string());
   ASSERT_TRUE(flat.has_value());
   EXPECT_FALSE(flat->altitude.has_value());
+  // A camera without a fix writes 0/0: no position (or no altitude), not an error.
+  const auto unset = with(with(kParis, "Exif.GPSInfo.GPSLatitude", "0/0 0/0 0/0"), "Exif.GPSInfo.GPSLongitude",
+                          "0/0 0/0 0/0");
+  EXPECT_FALSE(read_exif_gps(test::photo_with_exif(dir, "nofix.jpg", unset).string()).has_value());
+  const auto no_altitude =
+      read_exif_gps(test::photo_with_exif(dir, "noalt.jpg", with(kParis, "Exif.GPSInfo.GPSAltitude", "0/0")).string());
+  ASSERT_TRUE(no_altitude.has_value());
+  EXPECT_FALSE(no_altitude->altitude.has_value());
+  // The altitude's reference written as the digit in text, as some tools do.
+  const auto text_ref = read_exif_gps(
+      test::photo_with_exif(dir, "textref.jpg", with(kParis, "Exif.GPSInfo.GPSAltitudeRef", "ascii:1")).string());
+  ASSERT_TRUE(text_ref.has_value());
+  EXPECT_DOUBLE_EQ(*text_ref->altitude, -35.5);
+  // A format libexiv2 does not read (PPM) has no EXIF to read: no position.
+  EXPECT_FALSE(read_exif_gps(test::photo_with_exif(dir, "plain.ppm", {}).string()).has_value());
   // No EXIF at all, and EXIF without GPS: no position, no error.
   EXPECT_FALSE(read_exif_gps(test::photo_with_exif(dir, "plain.jpg", {}).string()).has_value());
   EXPECT_FALSE(read_exif_gps(test::photo_with_exif(dir, "camera.jpg", {{"Exif.Image.Make", "Phone"}}).string()).has_value());
@@ -70,7 +85,9 @@ TEST(ExifGps, MalformedOrOutOfRangeTagsNameTheFileAndTheTag) {
       {with(kParis, "Exif.GPSInfo.GPSLatitudeRef", ""), "GPSLatitudeRef is missing"},
       {with(kParis, "Exif.GPSInfo.GPSLongitudeRef", "X"), "expected E or W"},
       {with(kParis, "Exif.GPSInfo.GPSLongitude", ""), "GPSLatitude without GPSLongitude"},
-      {with(kParis, "Exif.GPSInfo.GPSAltitudeRef", "2"), "GPSAltitudeRef is 2"}};
+      {with(kParis, "Exif.GPSInfo.GPSAltitudeRef", "2"), "GPSAltitudeRef is 2"},
+      {with(kParis, "Exif.GPSInfo.GPSLatitude", "ascii:48"), "GPSLatitude is of type Ascii, not rational"},
+      {with(kParis, "Exif.GPSInfo.GPSLongitude", "0/0 0/0 0/0"), "one of latitude and longitude unset"}};
   int k = 0;
   for (const auto& [tags, message] : cases) {
     const fs::path path = test::photo_with_exif(dir, "bad" + std::to_string(k++) + ".jpg", tags);

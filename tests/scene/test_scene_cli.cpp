@@ -107,6 +107,22 @@ TEST(SceneCli, InfoReportsThePhotosGps) {
   EXPECT_NE(run("scene info " + dir.string()).out.find("gps:     2 of 3 images, latitude 51.5000000..51.7500000"),
             std::string::npos);
   EXPECT_TRUE(nlohmann::json::parse(run("scene info " + dir.string() + " --json --skip-image-check").out)["gps"].is_null());
+  // Against a city model, in its CRS (the NRW tile names an AdV URN: EPSG:25832): the photos' positions
+  // in Germany lie within some hundred kilometres of the tile, and a model without a CRS needs --crs.
+  const std::string tile = std::string(CLS_TEST_DATA) + "/citygml/nrw/LoD2_32_329_5730_1_NW.gml";
+  const test::CliResult city = run("scene info " + dir.string() + " --json --city " + tile);
+  ASSERT_EQ(city.status, 0) << city.err;
+  const auto against = nlohmann::json::parse(city.out)["gps_against_city"];
+  EXPECT_EQ(against["epsg"], 25832);
+  EXPECT_EQ(against["fixes"], 2);
+  EXPECT_GT(against["median_distance"].get<double>(), 1000);
+  EXPECT_LT(against["max_distance"].get<double>(), 500000);
+  const std::string no_crs = std::string(CLS_TEST_DATA) + "/citygml/cityjson/rotterdam_subset.json";
+  const test::CliResult unnamed = run("scene info " + dir.string() + " --city " + no_crs);
+  EXPECT_EQ(unnamed.status, 1);
+  EXPECT_NE(unnamed.err.find("names no CRS: give it with --crs EPSG:N"), std::string::npos) << unnamed.err;
+  EXPECT_EQ(run("scene info " + dir.string() + " --city " + no_crs + " --crs EPSG:7415").status, 0);
+  EXPECT_EQ(run("scene info " + dir.string() + " --city " + tile + " --skip-image-check").status, 2);
   test::photo_with_exif(dir / "images", "im2.jpg", fix("91/1 0/1 0/1"));
   const test::CliResult bad = run("scene info " + dir.string());
   EXPECT_EQ(bad.status, 1);
