@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -16,6 +17,9 @@
 #include "core/error.h"
 #include "core/progress.h"
 #include "core/log.h"
+#include "citymodel/city_model.h"
+#include "georef/crs_name.h"
+#include "georef/gps_footprint.h"
 #include "scene/colmap.h"
 #include "scene/exif_gps.h"
 #include "scene/pix4d.h"
@@ -34,17 +38,24 @@ int scene_info(int argc, char** argv) {
   std::string dir;
   SceneOptions options;
   bool json = false, verify_images = false;
+  std::string city, crs_override;
   args.positional("DIR", dir, "scene directory (COLMAP model in sparse/0, sparse or DIR; or a Pix4D project)")
       .flag("json", json, "print one JSON object instead of text")
       .bind("resolution", options.resolution_factor, "3DGS-style downscaling factor: 1, 2, 4 or 8")
       .short_name("r")
       .bind("width", options.target_width, "downscale to this image width instead (0 = off)")
-      .flag("skip-image-check", options.check_images, "do not check that every image file exists", false)
+      .flag("skip-image-check", options.check_images,
+            "do not check that every image file exists (nor read the photos' EXIF GPS)", false)
       .flag("verify-images", verify_images,
-            "decode every image (undistorted, downscaled) to find corrupt files before a long job");
+            "decode every image (undistorted, downscaled) to find corrupt files before a long job")
+      .bind("city", city, "city model: where the photos' GPS positions lie against it, in its CRS")
+      .bind("crs", crs_override, "the city model's CRS when its file names none or another (EPSG:N; default: "
+                                 "the file's srsName / referenceSystem)");
   if (!args.parse(argc, argv)) return 0;
   if (verify_images && !options.check_images)
     throw UsageError("scene info: --verify-images and --skip-image-check exclude each other");
+  if (!city.empty() && !options.check_images)
+    throw UsageError("scene info: --city needs the photos' GPS, which --skip-image-check does not read");
   const Scene scene = load_scene(dir, options);
   if (verify_images) {
     // One image at a time: a large scene never sits in memory.
@@ -70,10 +81,12 @@ int scene_info(int argc, char** argv) {
   size_t with_gps = 0;
   std::array<double, 2> lat{1e9, -1e9}, lon{1e9, -1e9}, alt{1e9, -1e9};
   std::map<std::string, int> datums;
+  std::vector<GpsFix> fixes;
   if (options.check_images)
     for (const SceneView& v : scene.views) {
       const std::optional<GpsFix> fix = read_exif_gps(v.image_path);
       if (!fix) continue;
+      fixes.push_back(*fix);
       ++with_gps;
       lat = {std::min(lat[0], fix->latitude), std::max(lat[1], fix->latitude)};
       lon = {std::min(lon[0], fix->longitude), std::max(lon[1], fix->longitude)};
@@ -81,6 +94,38 @@ int scene_info(int argc, char** argv) {
       if (!fix->map_datum.empty()) ++datums[fix->map_datum];
     }
   const bool with_altitude = alt[0] <= alt[1];
+  // Against the city model, in its CRS.
+  nlohmann::json against = nullptr;
+  std::string against_text;
+  if (!city.empty()) {
+    const SemanticMesh mesh = load_city_model(city, Taxonomy::builtin(), 0);
+    const std::string crs_text = crs_override.empty() ? mesh.crs : crs_override;
+    const std::optional<CrsName> crs = parse_crs_name(crs_text);
+    if (!crs)
+      fail(crs_override.empty() ? city : "--crs",
+           crs_text.empty() ? "the city model names no CRS: give it with --crs EPSG:N"
+                            : "CRS \"" + crs_text + "\" is not one PROJ knows as EPSG:N (give --crs EPSG:N)");
+    const GpsProjection projection(crs->horizontal_epsg);
+    const GpsFootprint f = gps_footprint(fixes, mesh, projection);
+    against = {{"city", city}, {"crs", crs_text}, {"epsg", crs->horizontal_epsg}, {"fixes", f.fixes},
+               {"box", f.box}, {"model_heights", f.model_heights}};
+    const auto metres = [](double v) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.1f", v);
+      return std::string(text);
+    };
+    against_text = cat("city:    ", city, " in EPSG:", crs->horizontal_epsg, " (", crs_text, "), heights ",
+                       metres(f.model_heights[0]), "..", metres(f.model_heights[1]));
+    if (f.fixes > 0) {
+      against.update({{"median_distance", f.median_distance}, {"max_distance", f.max_distance}});
+      against_text += cat("\n         the photos' GPS lies ", metres(f.median_distance), " (median), up to ",
+                          metres(f.max_distance), " from the model's bounding box horizontally (CRS units)");
+    }
+    if (f.with_altitude > 0) {
+      against["gps_altitudes"] = f.gps_altitudes;
+      against_text += cat("; GPS altitudes ", metres(f.gps_altitudes[0]), "..", metres(f.gps_altitudes[1]));
+    }
+  }
 
   if (json) {
     nlohmann::json gps = nullptr;  // null: the images were not read (--skip-image-check)
@@ -99,7 +144,8 @@ int scene_info(int argc, char** argv) {
                                 {"camera_models", models},
                                 {"points", scene.points.size()},
                                 {"image_sizes", sizes_json},
-                                {"gps", gps}};
+                                {"gps", gps},
+                                {"gps_against_city", against}};
     std::printf("%s\n", out.dump().c_str());
     return 0;
   }
@@ -125,6 +171,7 @@ int scene_info(int argc, char** argv) {
     for (const auto& [datum, n] : datums) std::printf(", datum %s x%d", datum.c_str(), n);
     std::printf("\n");
   }
+  if (!against_text.empty()) std::printf("%s\n", against_text.c_str());
   return 0;
 }
 

@@ -1,0 +1,38 @@
+#pragma once
+// Coordinate reference systems through PROJ (Debian's libproj-dev and its EPSG database): the
+// photos' WGS 84 GPS positions in a city model's projected CRS.
+#include <array>
+#include <optional>
+
+// PROJ's handles, declared here so that only proj_crs.cpp includes <proj.h>.
+struct pj_ctx;
+struct PJconsts;
+
+namespace cls {
+
+// Whether EPSG:`code` is a vertical CRS (true) or one with horizontal axes (false: projected,
+// geographic, compound); nullopt for a code PROJ's database does not hold.
+std::optional<bool> is_vertical_crs(int code);
+
+// WGS 84 latitude / longitude (degrees) -> easting / northing (or the CRS's own x, y in the order a
+// GIS shows them) of EPSG:`epsg`; of a compound CRS its horizontal part. Heights are not converted:
+// which vertical datum a phone's altitude is in is for the georeferencing to find out.
+class GpsProjection {
+ public:
+  // cls::Error for a code PROJ does not know, a vertical CRS, or no transformation from WGS 84.
+  explicit GpsProjection(int epsg);
+  ~GpsProjection();
+  GpsProjection(const GpsProjection&) = delete;
+  GpsProjection& operator=(const GpsProjection&) = delete;
+
+  // cls::Error for a position the CRS cannot represent (PROJ returns infinity there).
+  std::array<double, 2> project(double latitude, double longitude) const;
+  int epsg() const { return epsg_; }
+
+ private:
+  int epsg_;
+  pj_ctx* context_ = nullptr;
+  PJconsts* transform_ = nullptr;
+};
+
+}  // namespace cls
