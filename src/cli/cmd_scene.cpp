@@ -1,7 +1,5 @@
 // citylangsplat scene info DIR [--json] [-r N | --width W]
 // citylangsplat scene convert DIR --out DIR --format bin|txt
-#include <algorithm>
-#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -78,22 +76,11 @@ int scene_info(int argc, char** argv) {
   }
 
   // The photos' EXIF GPS (what georeferencing starts from): how many carry a fix, and where.
-  size_t with_gps = 0;
-  std::array<double, 2> lat{1e9, -1e9}, lon{1e9, -1e9}, alt{1e9, -1e9};
-  std::map<std::string, int> datums;
   std::vector<GpsFix> fixes;
   if (options.check_images)
-    for (const SceneView& v : scene.views) {
-      const std::optional<GpsFix> fix = read_exif_gps(v.image_path);
-      if (!fix) continue;
-      fixes.push_back(*fix);
-      ++with_gps;
-      lat = {std::min(lat[0], fix->latitude), std::max(lat[1], fix->latitude)};
-      lon = {std::min(lon[0], fix->longitude), std::max(lon[1], fix->longitude)};
-      if (fix->altitude) alt = {std::min(alt[0], *fix->altitude), std::max(alt[1], *fix->altitude)};
-      if (!fix->map_datum.empty()) ++datums[fix->map_datum];
-    }
-  const bool with_altitude = alt[0] <= alt[1];
+    for (const SceneView& v : scene.views)
+      if (const std::optional<GpsFix> fix = read_exif_gps(v.image_path)) fixes.push_back(*fix);
+  const GpsExtent gps = gps_extent(fixes);
   // Against the city model, in its CRS.
   nlohmann::json against = nullptr;
   std::string against_text;
@@ -121,18 +108,16 @@ int scene_info(int argc, char** argv) {
       against_text += cat("\n         the photos' GPS lies ", metres(f.median_distance), " (median), up to ",
                           metres(f.max_distance), " from the model's bounding box horizontally (CRS units)");
     }
-    if (f.with_altitude > 0) {
-      against["gps_altitudes"] = f.gps_altitudes;
-      against_text += cat("; GPS altitudes ", metres(f.gps_altitudes[0]), "..", metres(f.gps_altitudes[1]));
-    }
+    if (gps.with_altitude > 0)
+      against_text += cat("; GPS altitudes ", metres(gps.altitude[0]), "..", metres(gps.altitude[1]));
   }
 
   if (json) {
-    nlohmann::json gps = nullptr;  // null: the images were not read (--skip-image-check)
+    nlohmann::json gps_json = nullptr;  // null: the images were not read (--skip-image-check)
     if (options.check_images) {
-      gps = {{"images", with_gps}, {"datums", datums}};
-      if (with_gps) gps.update({{"latitude", lat}, {"longitude", lon}});
-      if (with_altitude) gps["altitude"] = alt;
+      gps_json = {{"images", gps.fixes}, {"datums", gps.datums}};
+      if (gps.fixes > 0) gps_json.update({{"latitude", gps.latitude}, {"longitude", gps.longitude}});
+      if (gps.with_altitude > 0) gps_json["altitude"] = gps.altitude;
     }
     nlohmann::json sizes_json = nlohmann::json::array();
     for (const auto& [s, n] : sizes)
@@ -144,7 +129,7 @@ int scene_info(int argc, char** argv) {
                                 {"camera_models", models},
                                 {"points", scene.points.size()},
                                 {"image_sizes", sizes_json},
-                                {"gps", gps},
+                                {"gps", gps_json},
                                 {"gps_against_city", against}};
     std::printf("%s\n", out.dump().c_str());
     return 0;
@@ -162,13 +147,13 @@ int scene_info(int argc, char** argv) {
     std::printf("images:  %d views %dx%d, loaded as %dx%d\n", n, s.first[0], s.first[1], s.second[0], s.second[1]);
   if (!options.check_images) {
     std::printf("gps:     not read (--skip-image-check)\n");
-  } else if (with_gps == 0) {
+  } else if (gps.fixes == 0) {
     std::printf("gps:     none of the %zu images carries an EXIF GPS position\n", scene.views.size());
   } else {
-    std::printf("gps:     %zu of %zu images, latitude %.7f..%.7f, longitude %.7f..%.7f", with_gps, scene.views.size(),
-                lat[0], lat[1], lon[0], lon[1]);
-    if (with_altitude) std::printf(", altitude %.2f..%.2f m", alt[0], alt[1]);
-    for (const auto& [datum, n] : datums) std::printf(", datum %s x%d", datum.c_str(), n);
+    std::printf("gps:     %zu of %zu images, latitude %.7f..%.7f, longitude %.7f..%.7f", gps.fixes, scene.views.size(),
+                gps.latitude[0], gps.latitude[1], gps.longitude[0], gps.longitude[1]);
+    if (gps.with_altitude > 0) std::printf(", altitude %.2f..%.2f m", gps.altitude[0], gps.altitude[1]);
+    for (const auto& [datum, n] : gps.datums) std::printf(", datum %s x%d", datum.c_str(), n);
     std::printf("\n");
   }
   if (!against_text.empty()) std::printf("%s\n", against_text.c_str());

@@ -17,16 +17,11 @@ GpsFootprint gps_footprint(const std::vector<GpsFix>& fixes, const SemanticMesh&
     f.model_heights = {std::min(f.model_heights[0], z), std::max(f.model_heights[1], z)};
   }
   std::vector<double> distances;
-  f.gps_altitudes = {kInf, -kInf};
   for (const GpsFix& fix : fixes) {
     const std::array<double, 2> p = projection.project(fix.latitude, fix.longitude);
     const double dx = std::max({f.box[0] - p[0], 0.0, p[0] - f.box[2]});
     const double dy = std::max({f.box[1] - p[1], 0.0, p[1] - f.box[3]});
     distances.push_back(std::hypot(dx, dy));
-    if (fix.altitude) {
-      ++f.with_altitude;
-      f.gps_altitudes = {std::min(f.gps_altitudes[0], *fix.altitude), std::max(f.gps_altitudes[1], *fix.altitude)};
-    }
   }
   f.fixes = distances.size();
   if (distances.empty()) return f;

@@ -15,10 +15,8 @@ struct GpsFootprint {
   size_t fixes = 0;
   // Horizontal distance of each fix from the model's bounding box (0 inside), in the CRS's units.
   double median_distance = 0, max_distance = 0;
-  std::array<double, 4> box{};                 // the model's x0, y0, x1, y1 in the CRS
-  std::array<double, 2> model_heights{};       // the model's lowest and highest z
-  std::array<double, 2> gps_altitudes{};       // of the fixes that carry one
-  size_t with_altitude = 0;
+  std::array<double, 4> box{};            // the model's x0, y0, x1, y1 in the CRS
+  std::array<double, 2> model_heights{};  // the model's lowest and highest z
 };
 
 // cls::Error (from the projection) for a fix the CRS cannot represent. Without fixes, the model's box

@@ -77,6 +77,21 @@ double sign(const std::string& path, const Exiv2::ExifData& exif, const char* ke
 
 }  // namespace
 
+GpsExtent gps_extent(const std::vector<GpsFix>& fixes) {
+  GpsExtent e;
+  const auto widen = [](std::array<double, 2>& range, double v, bool first) {
+    range = first ? std::array<double, 2>{v, v} : std::array<double, 2>{std::min(range[0], v), std::max(range[1], v)};
+  };
+  for (const GpsFix& fix : fixes) {
+    widen(e.latitude, fix.latitude, e.fixes == 0);
+    widen(e.longitude, fix.longitude, e.fixes == 0);
+    ++e.fixes;
+    if (fix.altitude) widen(e.altitude, *fix.altitude, e.with_altitude++ == 0);
+    if (!fix.map_datum.empty()) ++e.datums[fix.map_datum];
+  }
+  return e;
+}
+
 std::optional<GpsFix> read_exif_gps(const std::string& path) {
   mute_exiv2();
   Exiv2::ExifData exif;

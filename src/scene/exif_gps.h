@@ -1,8 +1,11 @@
 #pragma once
 // The GPS position a photo's EXIF carries (phones and most UAV cameras write one), read with libexiv2
 // (Debian's libexiv2-dev): what `scene info` reports and what georeferencing starts from (issue 34).
+#include <array>
+#include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace cls {
 
@@ -14,6 +17,15 @@ struct GpsFix {
   std::optional<double> altitude;
   std::string map_datum;  // GPSMapDatum as written ("WGS-84", ...), "" when absent
 };
+
+// Where a set of fixes lies: the ranges (min, max) of latitude, longitude and, over the fixes that carry
+// one, altitude; how often each map datum is named. Ranges are {0, 0} where nothing counts.
+struct GpsExtent {
+  size_t fixes = 0, with_altitude = 0;
+  std::array<double, 2> latitude{}, longitude{}, altitude{};
+  std::map<std::string, int> datums;
+};
+GpsExtent gps_extent(const std::vector<GpsFix>& fixes);
 
 // The image's GPS position; nullopt when its EXIF has no GPSLatitude / GPSLongitude (or no EXIF).
 // cls::Error naming the file for an image libexiv2 cannot read, and for GPS tags that are malformed

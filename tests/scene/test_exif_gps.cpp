@@ -98,3 +98,17 @@ TEST(ExifGps, MalformedOrOutOfRangeTagsNameTheFileAndTheTag) {
   test::expect_error([&] { read_exif_gps(text.string()); }, {text.string() + ": cannot read the image's metadata"});
   fs::remove_all(dir);
 }
+
+// The extent of a set of fixes: ranges by hand, altitude only over the fixes that carry one.
+TEST(ExifGps, TheExtentOfASetOfFixes) {
+  const GpsExtent none = gps_extent({});
+  EXPECT_EQ(none.fixes, 0u);
+  const GpsExtent e = gps_extent({{51.5, 7.25, 150.0, "WGS-84"}, {51.75, 7.0, std::nullopt, ""},
+                                  {51.6, 7.5, 90.0, "WGS-84"}});
+  EXPECT_EQ(e.fixes, 3u);
+  EXPECT_EQ(e.with_altitude, 2u);
+  EXPECT_EQ(e.latitude, (std::array<double, 2>{51.5, 51.75}));
+  EXPECT_EQ(e.longitude, (std::array<double, 2>{7.0, 7.5}));
+  EXPECT_EQ(e.altitude, (std::array<double, 2>{90.0, 150.0}));
+  EXPECT_EQ(e.datums, (std::map<std::string, int>{{"WGS-84", 2}}));
+}
