@@ -196,13 +196,12 @@ void CityGmlReader::visit_feature(pugi::xml_node feature, int parent, int depth)
   const std::string_view type = local_name(feature);
   const int level = entity_level(type);
   const int feature_class = class_of(type, feature);
-  // An object lies in one of its own or a coarser level (opening -> surface -> building -> ...): a
-  // BuildingPart inside a wall, or a taxonomy that puts a container on a finer level than what it holds,
-  // is not a hierarchy the levels can answer with.
-  if (parent >= 0 && builder_.entity_level(parent) < level)
-    fail_at(feature, cat(type, " (level ", level, ") lies inside a level-", builder_.entity_level(parent),
-                         " object; an object lies in one of the same or a coarser level"));
-  const int entity = builder_.add_entity(level, feature_class, parent, element_id(feature));
+  int entity = -1;
+  try {
+    entity = builder_.add_entity(level, feature_class, parent, element_id(feature));
+  } catch (const Error& e) {  // e.g. a BuildingPart inside a wall: named here at its element
+    fail_at(feature, cat(type, ": ", e.what()));
+  }
   // Nested features first: a polygon shared by a boundary surface and the building's solid gets
   // the surface's class, whatever the order in the file.
   std::vector<pugi::xml_node> geometry;

@@ -20,7 +20,6 @@ class MeshBuilder {
   // Adds a semantic object; returns its index. `parent` is an earlier entity or -1, on the same or a
   // coarser level (cls::Error naming both objects otherwise).
   int add_entity(int level, int class_id, int parent, const std::string& source_id);
-  int entity_level(int entity) const { return mesh_.entities.at(entity).level; }
 
   // Adds one planar polygon: rings[0] is the exterior, the rest are holes (either orientation).
   // Triangulated with the GLU tesselator (odd winding rule). `face_class` is the class of the

@@ -273,6 +273,6 @@ TEST(CityObjects, AFeatureInsideAFinerOneIsBadInputNamedAtItsElement) {
   } catch (const Error& e) {
     const std::string m = e.what();
     EXPECT_EQ(m.rfind(path.string(), 0), 0u) << m;
-    EXPECT_NE(m.find("BuildingPart (level 3) lies inside a level-2 object"), std::string::npos) << m;
+    EXPECT_NE(m.find("BuildingPart: object \"P\" (level 3) lies inside \"W\" (level 2)"), std::string::npos) << m;
   }
 }
