@@ -10,23 +10,29 @@ namespace cls {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-int32_t CityObjects::at_level(int32_t object, int level) const {
-  // Parents come before their children (from_json checks it), so every chain ends.
+namespace {
+
+// The first of `object` and its ancestors on `level` or coarser, -1 for none. Parents come before their
+// children (from_json checks it), so every chain ends.
+int32_t first_at(const std::vector<CityObject>& objects, int32_t object, int level) {
   while (object >= 0 && static_cast<size_t>(object) < objects.size() && objects[object].level < level)
     object = objects[object].parent;
-  if (object < 0 || static_cast<size_t>(object) >= objects.size()) return -1;
+  return object >= 0 && static_cast<size_t>(object) < objects.size() ? object : -1;
+}
+
+}  // namespace
+
+int32_t CityObjects::at_level(int32_t object, int level) const {
+  object = first_at(objects, object, level);
   // The whole-building level answers with the Building, not one of its BuildingParts.
-  if (level >= 3 && objects[object].level == 3)
+  if (object >= 0 && level >= 3 && objects[object].level == 3)
     while (objects[object].parent >= 0 && objects[objects[object].parent].level == 3) object = objects[object].parent;
   return object;
 }
 
 int32_t CityObjects::part_of(int32_t object) const {
-  while (object >= 0 && static_cast<size_t>(object) < objects.size() && objects[object].level < 3)
-    object = objects[object].parent;
-  if (object < 0 || static_cast<size_t>(object) >= objects.size()) return -1;
-  const int32_t parent = objects[object].parent;
-  return parent >= 0 && objects[parent].level == 3 ? object : -1;
+  object = first_at(objects, object, 3);
+  return object >= 0 && objects[object].parent >= 0 && objects[objects[object].parent].level == 3 ? object : -1;
 }
 
 std::string CityObjects::class_name(int32_t object) const {

@@ -154,11 +154,10 @@ void write_gaussians_ply(const std::string& path, const GaussianModel& model) {
   // What the reader refuses is never written: a training that diverged says so here, not later.
   for (const auto& [name, t] : {std::pair<const char*, const at::Tensor&>{"means", model.means},
                                 {"log_scales", model.log_scales}, {"quats", model.quats},
-                                {"opacity_logits", model.opacity_logits}, {"sh_dc", model.sh_dc}, {"sh_rest", model.sh_rest}})
-    if (t.numel() > 0 && !t.isfinite().all().item<bool>())
+                                {"opacity_logits", model.opacity_logits}, {"sh_dc", model.sh_dc},
+                                {"sh_rest", model.sh_rest}, {"features", model.features}})
+    if (t.defined() && t.numel() > 0 && !t.isfinite().all().item<bool>())
       fail(path, std::string("tensor ") + name + " holds NaN or infinity (a diverged training?); nothing written");
-  if (model.features.defined() && model.features.numel() > 0 && !model.features.isfinite().all().item<bool>())
-    fail(path, "tensor features holds NaN or infinity (a diverged training?); nothing written");
   if (!host_is_little_endian()) fail(path, "writing PLY on a big-endian host is not supported");
   const int64_t n = model.size();
   const int rest = static_cast<int>(model.sh_rest.size(1));
