@@ -20,7 +20,9 @@ SceneCityModel load_scene_city_model(const std::string& city_path, const std::st
     extent = std::fmax(extent, std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z))));
   if (extent > 1e5f)
     log_warn(cat(context, ": the city mesh reaches ", extent, " units from the scene origin; float precision there is ",
-                 "coarse (give --city-transform into the scene's local frame)"));
+                 "coarse (give --city-transform into the scene's local frame",
+                 transform_path.empty() ? ", or photos with EXIF GPS to georeference from: georef, run --georef" : "",
+                 ")"));
   return in;
 }
 

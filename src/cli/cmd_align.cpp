@@ -9,6 +9,7 @@
 
 #include "cli/city_mesh_inputs.h"
 #include "cli/commands.h"
+#include "cli/transform_report.h"
 #include "core/args.h"
 #include "core/error.h"
 #include "core/exit_codes.h"
@@ -34,18 +35,6 @@ std::vector<Vec3d> gaussian_centres(const std::string& path, double min_opacity)
 
 nlohmann::json stats_json(const AlignmentStats& s) {
   return {{"fraction_within", s.fraction_within}, {"median", s.median}, {"mean", s.mean}};
-}
-
-nlohmann::json difference_json(const TransformDifference& d) {
-  return {{"centre", d.centre}, {"max_displacement", d.max_displacement}, {"rotation_deg", d.rotation_deg},
-          {"scale", d.scale}};
-}
-
-std::string describe(const TransformDifference& d) {
-  char text[160];
-  std::snprintf(text, sizeof text, "%.4f m at the model's centre (%.4f m at most), %.4f deg, scale %+.3f%%", d.centre,
-                d.max_displacement, d.rotation_deg, 100 * d.scale);
-  return text;
 }
 
 }  // namespace

@@ -87,21 +87,17 @@ int scene_info(int argc, char** argv) {
   if (!city.empty()) {
     const SemanticMesh mesh = load_city_model(city, Taxonomy::builtin(), 0);
     const std::string crs_text = crs_override.empty() ? mesh.crs : crs_override;
-    const std::optional<CrsName> crs = parse_crs_name(crs_text);
-    if (!crs)
-      fail(crs_override.empty() ? city : "--crs",
-           crs_text.empty() ? "the city model names no CRS: give it with --crs EPSG:N"
-                            : "CRS \"" + crs_text + "\" is not one PROJ knows as EPSG:N (give --crs EPSG:N)");
-    const GpsProjection projection(crs->horizontal_epsg);
+    const CrsName crs = city_model_crs(city, mesh.crs, crs_override);
+    const GpsProjection projection(crs.horizontal_epsg);
     const GpsFootprint f = gps_footprint(fixes, mesh, projection);
-    against = {{"city", city}, {"crs", crs_text}, {"epsg", crs->horizontal_epsg}, {"fixes", f.fixes},
+    against = {{"city", city}, {"crs", crs_text}, {"epsg", crs.horizontal_epsg}, {"fixes", f.fixes},
                {"box", f.box}, {"model_heights", f.model_heights}};
     const auto metres = [](double v) {
       char text[32];
       std::snprintf(text, sizeof text, "%.1f", v);
       return std::string(text);
     };
-    against_text = cat("city:    ", city, " in EPSG:", crs->horizontal_epsg, " (", crs_text, "), heights ",
+    against_text = cat("city:    ", city, " in EPSG:", crs.horizontal_epsg, " (", crs_text, "), heights ",
                        metres(f.model_heights[0]), "..", metres(f.model_heights[1]));
     if (f.fixes > 0) {
       against.update({{"median_distance", f.median_distance}, {"max_distance", f.max_distance}});

@@ -24,6 +24,13 @@ Codec<synth::CityError> city_error_codec() {
   return c;
 }
 
+Codec<synth::GpsError> gps_error_codec() {
+  Codec<synth::GpsError> c;
+  c.text = [](const synth::GpsError& e) { return synth::gps_error_text(e); };
+  c.parse = [](const std::string& text) { return synth::parse_gps_error(text); };
+  return c;
+}
+
 }  // namespace
 
 int cmd_synth(int argc, char** argv) {
@@ -55,6 +62,13 @@ int cmd_synth(int argc, char** argv) {
             "direction and axis, about the model's centre); the exact one goes to "
             "city/transform_true.json (default: none)",
             city_error_codec())
+      .bind("gps", job.gps,
+            "write EXIF GPS into the photos, spoilt as phones spoil it: on (h=3,v=3,datum=50,outliers=0.1,"
+            "outlier-m=30), or any of h=METRES (easting and northing noise, each), v=METRES (height noise), "
+            "datum=METRES (added to every height), outliers=FRACTION (of photos moved by outlier-m=METRES); the "
+            "model's CRS must be known. Without --city-error the scene then names no city transform (run "
+            "georeferences it), and the truth goes to city/transform_true.json (default: none)",
+            gps_error_codec())
       .bind("occluders", settings.occluders, "extra trees just in front of the facades (hiding parts of them in the images)")
       .bind("given-city", job.given_city_path,
             "give the pipeline this model of the same place and CRS instead (e.g. the "

@@ -5,6 +5,7 @@ int cmd_citymodel(int argc, char** argv);   // citymodel stats | export
 int cmd_raycast(int argc, char** argv);     // per-view label maps and coverage
 int cmd_align(int argc, char** argv);       // refine the city transform (ICP)
 int cmd_align_check(int argc, char** argv); // sparse points vs city mesh
+int cmd_georef(int argc, char** argv);      // the city transform from the photos' GPS
 int cmd_synth(int argc, char** argv);       // synthetic scenes
 int cmd_scene(int argc, char** argv);       // scene info | convert
 int cmd_run(int argc, char** argv);         // the whole pipeline

@@ -30,6 +30,7 @@ const Command kCommands[] = {
     {"citymodel", cls::cmd_citymodel, "inspect a CityGML/CityJSON model: stats, export"},
     {"raycast", cls::cmd_raycast, "raycast the city model into per-view label maps and coverage"},
     {"align", cls::cmd_align, "refine the city model's transform into the scene from the scene's points (ICP)"},
+    {"georef", cls::cmd_georef, "find the city model's transform into the scene from the photos' EXIF GPS (no transform given)"},
     {"align-check", cls::cmd_align_check, "check how well a scene's sparse points lie on the city model"},
     {"synth", cls::cmd_synth, "render a synthetic scene (images, COLMAP model, ground truth) of a city model"},
     {"scene", cls::cmd_scene, "inspect or convert a scene (COLMAP / Pix4D)"},

@@ -19,6 +19,7 @@ class RunLayout {
   const path& root() const { return root_; }
   path run_json() const { return root_ / "run.json"; }
   path report_page() const { return root_ / "report" / "index.html"; }
+  path georef_transform() const { return root_ / "georef" / "transform.json"; }  // run --georef's transform
   path align_transform() const { return root_ / "align" / "transform.json"; }  // run --align's refined transform
   path labels() const { return root_ / "labels"; }                             // raycast's label maps
   path features() const { return root_ / "features"; }

@@ -1,6 +1,9 @@
 #include "core/strings.h"
 
+#include <cmath>
 #include <sstream>
+
+#include "core/error.h"
 
 namespace cls {
 
@@ -22,6 +25,25 @@ std::string format_number(double v) {
   std::ostringstream s;
   s << v;
   return s.str();
+}
+
+std::vector<std::pair<std::string, double>> key_numbers(const std::string& text, const std::string& usage) {
+  std::vector<std::pair<std::string, double>> out;
+  for (const std::string& part : split_commas(text)) {
+    const size_t eq = part.find('=');
+    if (eq == std::string::npos) throw UsageError(usage + ": \"" + part + "\" is not KEY=NUMBER");
+    const std::string key = trim_space(part.substr(0, eq)), value = trim_space(part.substr(eq + 1));
+    double x = 0;
+    size_t used = 0;
+    try {
+      x = std::stod(value, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != value.size() || !std::isfinite(x)) throw UsageError(usage + ": \"" + value + "\" is not a number");
+    out.emplace_back(key, x);
+  }
+  return out;
 }
 
 }  // namespace cls

@@ -1,5 +1,6 @@
 #pragma once
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cls {
@@ -10,5 +11,8 @@ std::vector<std::string> split_commas(const std::string& s);
 std::string trim_space(const std::string& s);
 // A number as a person writes it, for --help defaults: 0.2, 5, 0.0001 (ostream's shortest form).
 std::string format_number(double v);
+// "k=1.5,m=2" -> {{"k", 1.5}, {"m", 2}}, spaces around items ignored; cls::UsageError "<usage>: ..." for an
+// item without "=" or a value that is not one finite number.
+std::vector<std::pair<std::string, double>> key_numbers(const std::string& text, const std::string& usage);
 
 }  // namespace cls

@@ -3,6 +3,7 @@
 #include <map>
 #include <regex>
 
+#include "core/error.h"
 #include "georef/proj_crs.h"
 
 namespace cls {
@@ -42,6 +43,16 @@ std::optional<CrsName> parse_crs_name(const std::string& name) {
   }
   if (crs.horizontal_epsg == 0) return std::nullopt;
   return crs;
+}
+
+CrsName city_model_crs(const std::string& city_path, const std::string& file_crs, const std::string& given) {
+  const std::string text = given.empty() ? file_crs : given;
+  const std::optional<CrsName> crs = parse_crs_name(text);
+  if (!crs)
+    fail(given.empty() ? city_path : "--crs",
+         text.empty() ? "the city model names no CRS (srsName / referenceSystem): give it with --crs EPSG:N"
+                      : "CRS \"" + text + "\" is not one PROJ knows as EPSG:N (give --crs EPSG:N)");
+  return *crs;
 }
 
 }  // namespace cls

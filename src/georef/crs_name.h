@@ -20,4 +20,9 @@ struct CrsName {
 //   urn:adv:crs:ETRS89_UTM32*DE_DHHN2016_NH[*GCG2016] (AdV: ETRS89 / UTM 31-33, DHHN92 / DHHN2016).
 std::optional<CrsName> parse_crs_name(const std::string& name);
 
+// The CRS of the city model read from `city_path` whose file names `file_crs`, or `given` (the user's
+// --crs) when not empty. cls::Error naming the file (or --crs) when there is none or PROJ does not know
+// it, and telling the user to give --crs EPSG:N.
+CrsName city_model_crs(const std::string& city_path, const std::string& file_crs, const std::string& given);
+
 }  // namespace cls

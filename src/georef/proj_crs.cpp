@@ -78,4 +78,32 @@ std::array<double, 2> GpsProjection::project(double latitude, double longitude) 
   return {out.xy.x, out.xy.y};
 }
 
+std::array<double, 2> GpsProjection::unproject(double x, double y) const {
+  const PJ_COORD out = proj_trans(transform_, PJ_INV, proj_coord(x, y, 0, 0));
+  if (!std::isfinite(out.lp.lam) || !std::isfinite(out.lp.phi))
+    throw Error(cat("EPSG:", epsg_, ": the position ", x, ", ", y, " has no latitude and longitude"));
+  return {out.lp.phi, out.lp.lam};  // normalized for visualization: longitude first, in degrees
+}
+
+Egm96Geoid::Egm96Geoid() : context_(quiet_context()) {
+  // Forward vgridshift adds -1 x the grid value: ellipsoidal height -> EGM96 height. Without the grid,
+  // proj_create fails (the grid is not optional here), and available() says so.
+  shift_ = proj_create(context_,
+                       "+proj=pipeline +step +proj=unitconvert +xy_in=deg +xy_out=rad "
+                       "+step +proj=vgridshift +grids=egm96_15.gtx +multiplier=1 "
+                       "+step +proj=unitconvert +xy_in=rad +xy_out=deg");
+}
+
+Egm96Geoid::~Egm96Geoid() {
+  proj_destroy(shift_);
+  proj_context_destroy(context_);
+}
+
+std::optional<double> Egm96Geoid::undulation(double latitude, double longitude) const {
+  if (!shift_) return std::nullopt;
+  const PJ_COORD out = proj_trans(shift_, PJ_FWD, proj_coord(longitude, latitude, 0, 0));
+  if (!std::isfinite(out.xyz.z) || out.xyz.z == HUGE_VAL) return std::nullopt;
+  return out.xyz.z;  // multiplier +1: z + N
+}
+
 }  // namespace cls

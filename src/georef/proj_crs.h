@@ -27,12 +27,34 @@ class GpsProjection {
 
   // cls::Error for a position the CRS cannot represent (PROJ returns infinity there).
   std::array<double, 2> project(double latitude, double longitude) const;
+  // The inverse: x, y of the CRS -> WGS 84 latitude, longitude (what synth --gps writes into photos).
+  std::array<double, 2> unproject(double x, double y) const;
   int epsg() const { return epsg_; }
 
  private:
   int epsg_;
   pj_ctx* context_ = nullptr;
   PJconsts* transform_ = nullptr;
+};
+
+// The EGM96 geoid's height above the WGS 84 ellipsoid (N, metres) at a position, through PROJ's
+// vgridshift with the grid proj-data installs (egm96_15.gtx): orthometric height ~ ellipsoidal height - N.
+// nullopt when the grid is not installed. EGM96 is a global model: national geoids (GCG2016 in Germany)
+// differ from it by decimetres to a metre, which georeferencing's vertical search takes up.
+class Egm96Geoid {
+ public:
+  Egm96Geoid();
+  ~Egm96Geoid();
+  Egm96Geoid(const Egm96Geoid&) = delete;
+  Egm96Geoid& operator=(const Egm96Geoid&) = delete;
+
+  bool available() const { return shift_ != nullptr; }
+  // nullopt when the grid is not available or does not cover the position.
+  std::optional<double> undulation(double latitude, double longitude) const;
+
+ private:
+  pj_ctx* context_ = nullptr;
+  PJconsts* shift_ = nullptr;
 };
 
 }  // namespace cls

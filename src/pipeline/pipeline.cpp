@@ -10,7 +10,7 @@ namespace cls {
 
 const std::vector<PipelineStep>& pipeline_steps() {
   static const std::vector<PipelineStep> steps = {
-      {"align", align_stages},       {"labels", label_stages},         {"features", feature_stages},
+      {"georef", georef_stages},     {"align", align_stages},          {"labels", label_stages},         {"features", feature_stages},
       {"autoencoder", autoencoder_stages}, {"train-rgb", train_rgb_stages}, {"render", render_stages},
       {"train-language", language_stages}, {"query", query_stages},     {"evaluate", evaluate_stages}};
   return steps;

@@ -29,6 +29,7 @@ void PipelineConfig::validate() const {
   if (!(align_distance >= 0)) throw UsageError("run: --align-distance must be >= 0");
   // What the codecs check for the command line and files, for a configuration made in code.
   if (align != "off" && align != "refine" && align != "auto") throw UsageError("run: --align must be off, refine or auto");
+  if (georef != "off" && georef != "gps" && georef != "auto") throw UsageError("run: --georef must be off, gps or auto");
   if (regions != "class" && regions != "instance") throw UsageError("run: --regions must be class or instance");
   const std::vector<std::string> steps = pipeline_step_names();
   const auto step = std::find(steps.begin(), steps.end(), stop_after);
@@ -94,6 +95,13 @@ OptionList<PipelineConfig> make_pipeline_options() {
       .per_scene()
       .add("resolution", &C::resolution, "divide the image size by 1, 2, 4 or 8").short_name("r")
       .add("align-distance", &C::align_distance, "alignment check: distance threshold in city-model metres")
+      .add("georef", &C::georef,
+           "find the city transform from the photos' EXIF GPS before aligning (as `georef`): gps, off, or auto "
+           "(when no city transform is given and at least 3 photos carry a GPS position with an altitude)",
+           R::Setting, choice_codec({"off", "gps", "auto"}))
+      .add("crs", &C::crs, "with --georef: the city model's CRS (EPSG:N; default: its srsName / referenceSystem)",
+           R::Setting)
+      .per_scene()
       .add("align", &C::align,
            "refine the city transform from the sparse points before raycasting (as `align`): refine, off, or auto "
            "(refine, and use it when it moves the model by more than 5 cm)",

@@ -11,6 +11,7 @@
 
 namespace cls {
 
+std::vector<Stage> georef_stages(RunContext& run);       // the city transform from the photos' GPS (run --georef)
 std::vector<Stage> align_stages(RunContext& run);        // refine the city transform (run --align)
 std::vector<Stage> label_stages(RunContext& run);        // label maps and coverage (paper 3.1)
 std::vector<Stage> feature_stages(RunContext& run);      // SAM and CityGML features (3.1-3.2)

@@ -134,4 +134,41 @@ std::optional<GpsFix> read_exif_gps(const std::string& path) {
   return fix;
 }
 
+namespace {
+
+// d/1 m/1 s*10000/10000, as receivers write degrees.
+std::string dms(double degrees) {
+  long long tenth_millis = std::llround(std::abs(degrees) * 3600 * 10000);  // 1e-4 arc seconds
+  const long long d = tenth_millis / (3600LL * 10000), m = tenth_millis / (60LL * 10000) % 60;
+  const long long s = tenth_millis % (60LL * 10000);
+  return cat(d, "/1 ", m, "/1 ", s, "/10000");
+}
+
+}  // namespace
+
+void write_exif_gps(const std::string& path, const GpsFix& fix) {
+  mute_exiv2();
+  try {
+    auto image = Exiv2::ImageFactory::open(path);
+    image->readMetadata();
+    Exiv2::ExifData exif = image->exifData();
+    exif["Exif.GPSInfo.GPSVersionID"] = "2 3 0 0";
+    exif["Exif.GPSInfo.GPSLatitudeRef"] = fix.latitude < 0 ? "S" : "N";
+    exif["Exif.GPSInfo.GPSLatitude"] = dms(fix.latitude);
+    exif["Exif.GPSInfo.GPSLongitudeRef"] = fix.longitude < 0 ? "W" : "E";
+    exif["Exif.GPSInfo.GPSLongitude"] = dms(fix.longitude);
+    if (fix.altitude) {
+      exif["Exif.GPSInfo.GPSAltitudeRef"] = *fix.altitude < 0 ? "1" : "0";  // BYTE, the tag's own type
+      exif["Exif.GPSInfo.GPSAltitude"] = cat(std::llround(std::abs(*fix.altitude) * 1000), "/1000");
+    }
+    if (!fix.map_datum.empty()) exif["Exif.GPSInfo.GPSMapDatum"] = fix.map_datum;
+    image->setExifData(exif);
+    image->writeMetadata();
+  } catch (const Exiv2::Error& e) {
+    fail(path, std::string("cannot write the GPS position (libexiv2): ") + e.what());
+  } catch (const std::exception& e) {
+    fail(path, std::string("cannot write the GPS position (libexiv2): ") + e.what());
+  }
+}
+
 }  // namespace cls

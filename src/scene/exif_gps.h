@@ -33,4 +33,9 @@ GpsExtent gps_extent(const std::vector<GpsFix>& fixes);
 // 60 and more, a latitude over 90 or a longitude over 180 degrees.
 std::optional<GpsFix> read_exif_gps(const std::string& path);
 
+// Writes `fix` into the image's EXIF as a GPS receiver does (degrees, minutes and seconds to 1e-4",
+// about 3 mm; altitude to the millimetre with its reference; GPSMapDatum when set), keeping its other
+// tags: what `synth --gps` gives its photos. cls::Error naming the file when libexiv2 cannot write it.
+void write_exif_gps(const std::string& path, const GpsFix& fix);
+
 }  // namespace cls

@@ -11,18 +11,7 @@ namespace cls::synth {
 CityError parse_city_error(const std::string& text) {
   CityError e;
   const std::string usage = "--city-error wants t=METRES,r=DEGREES,s=FRACTION (any of them), got \"" + text + "\"";
-  for (const std::string& part : split_commas(text)) {
-    const size_t eq = part.find('=');
-    if (eq == std::string::npos) throw UsageError(usage);
-    const std::string key = trim_space(part.substr(0, eq)), value = trim_space(part.substr(eq + 1));
-    double x = 0;
-    size_t used = 0;
-    try {
-      x = std::stod(value, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != value.size() || !std::isfinite(x)) throw UsageError(usage + ": \"" + value + "\" is not a number");
+  for (const auto& [key, x] : key_numbers(text, usage)) {
     if (key == "t" && x >= 0) e.metres = x;
     else if (key == "r" && x >= 0) e.degrees = x;
     else if (key == "s" && x > -1) e.scale = x;

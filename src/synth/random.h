@@ -27,7 +27,7 @@ inline uint64_t hash_keys(uint64_t a, uint64_t b, uint64_t c = 0, uint64_t d = 0
 inline double unit_from_bits(uint64_t bits) { return static_cast<double>(bits >> 11) * 0x1.0p-53; }
 
 // Purposes of the random streams (keys for Rng construction), so two uses never share a stream.
-enum class Stream : uint64_t { Cameras = 1, Clutter, Lighting, Materials, SparsePoints, GroundTruth, CityError, DropOpenings, Occluders };
+enum class Stream : uint64_t { Cameras = 1, Clutter, Lighting, Materials, SparsePoints, GroundTruth, CityError, DropOpenings, Occluders, Gps };
 
 class Rng {
  public:

@@ -6,9 +6,13 @@
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "citymodel/city_model.h"
 #include "citymodel/city_transform.h"
+#include "georef/crs_name.h"
+#include "georef/proj_crs.h"
+#include "scene/exif_gps.h"
 #include "core/atomic_file.h"
 #include "core/hash.h"
 #include "core/error.h"
@@ -56,6 +60,13 @@ GivenCityModel given_city_model(const SynthJob& job, const SemanticMesh& mesh, c
 
 }  // namespace
 
+namespace {
+
+// A scene with GPS and no deliberate error is left for the pipeline to georeference.
+bool names_city_transform(const SynthJob& job) { return !job.gps.enabled || job.city_error.any(); }
+
+}  // namespace
+
 std::string synth_scene_json(const SynthJob& job, const std::string& city_bytes, const std::string& taxonomy_bytes,
                              const GivenCityModel& given) {
   const SynthSettings& s = job.settings;
@@ -81,6 +92,7 @@ std::string synth_scene_json(const SynthJob& job, const std::string& city_bytes,
   };
   if (s.per_building) generator["rig"] = "per-building";  // absent: the orbit rig (older scene.json stay equal)
   if (s.occluders > 0) generator["occluders"] = s.occluders;
+  if (job.gps.enabled) generator["gps"] = {{"error", gps_error_text(job.gps)}, {"truth", "city/transform_true.json"}};
   if (job.city_error.any())
     generator["city_error"] = {{"t", job.city_error.metres},
                                {"r", job.city_error.degrees},
@@ -98,6 +110,7 @@ std::string synth_scene_json(const SynthJob& job, const std::string& city_bytes,
       {"lod", given.lod},
       {"generator", generator},
   };
+  if (!names_city_transform(job)) scene.erase("city_transform");
   return scene.dump(2) + "\n";
 }
 
@@ -125,6 +138,8 @@ bool run_synth_job(const SynthJob& job) {
   const std::string bad_output = output_problem(job);
   if (!bad_output.empty()) fail(job.out_dir, bad_output);
 
+  std::optional<GpsProjection> projection;
+  if (job.gps.enabled) projection.emplace(city_model_crs(job.city_path, mesh.crs, "").horizontal_epsg);  // the model's own CRS
   const SynthScene scene = render_synth_scene(mesh, taxonomy, job.settings);
 
   // Stage beside the destination (same file system), then swap it in.
@@ -138,6 +153,13 @@ bool run_synth_job(const SynthJob& job) {
     if (job.drop_openings > 0) load_city_model(given_file.string(), taxonomy, given.lod);  // the edit still reads
     CityTransform to_scene;
     for (int i = 0; i < 3; ++i) to_scene.matrix[i][3] = -mesh.origin[i];
+    if (job.gps.enabled) {
+      std::vector<Vec3d> centres;
+      for (const SynthView& v : scene.views)
+        centres.push_back(v.pose.center() + Vec3d{mesh.origin[0], mesh.origin[1], mesh.origin[2]});
+      const std::vector<GpsFix> fixes = spoilt_gps(centres, *projection, job.gps, job.settings.seed);
+      for (size_t i = 0; i < fixes.size(); ++i) write_exif_gps((staging / "images" / scene.views[i].name).string(), fixes[i]);
+    }
     if (job.city_error.any()) {
       // About the model's bounding-box centre in the scene frame, so the error does not grow with the
       // distance to the CRS origin.
@@ -146,7 +168,8 @@ bool run_synth_job(const SynthJob& job) {
       write_city_transform((staging / "city" / "transform_true.json").string(), to_scene);
       to_scene = city_error_transform(job.city_error, job.settings.seed, bounds.center()) * to_scene;
     }
-    write_city_transform((staging / "city" / "transform.json").string(), to_scene);
+    if (!names_city_transform(job)) write_city_transform((staging / "city" / "transform_true.json").string(), to_scene);
+    else write_city_transform((staging / "city" / "transform.json").string(), to_scene);
     write_text_atomic(SceneFiles{staging}.config(), scene_json);
     if (fs::exists(out)) fs::remove_all(out);
     fs::rename(staging, out);

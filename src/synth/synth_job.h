@@ -5,6 +5,7 @@
 #include <string>
 
 #include "synth/city_error.h"
+#include "synth/gps_error.h"
 #include "synth/synth_scene.h"
 
 namespace cls::synth {
@@ -16,6 +17,9 @@ struct SynthJob {
   std::string taxonomy_path;  // "" = the built-in taxonomy
   SynthSettings settings;
   CityError city_error;       // put into city/transform.json; the exact one goes to city/transform_true.json
+  // EXIF GPS in the photos (the model's CRS must be known). Without city_error, the scene then names no
+  // city transform: the pipeline georeferences from the GPS; the truth goes to city/transform_true.json.
+  GpsError gps;
   // What the pipeline is given instead of the model the scene shows (the truth stays in the images and gt/):
   std::string given_city_path;  // another model of the same place in the same CRS (e.g. its LoD2); "" = city_path
   int given_lod = 0;            // LoD read from given_city_path (0: its highest)
@@ -28,7 +32,8 @@ struct SynthJob {
 //   scene.json                  {"city_model", "city_transform", "lod", "generator": {...}}
 //   city/<given model file> (city_path, or given_city_path; with drop_openings, the edited model),
 //   city/transform.json (source CRS -> scene frame: translation by -origin, times the
-//   city_error_transform when city_error.any(), then with the exact one in city/transform_true.json)
+//   city_error_transform when city_error.any(), then with the exact one in city/transform_true.json;
+//   with gps.enabled and no city_error, only transform_true.json and no "city_transform" in scene.json)
 //   images/NNNN.png, sparse/0/{cameras,images,points3D}.{bin,txt}
 //   gt/labels/NNNN.png, gt/legend.json, gt/points.ply (settings.gt_density points per m² on the
 //   city model, 1/8 of that on clutter and on the terrain near the building; class -1 off the model)

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <string>
 
 #include "citymodel/city_model.h"
@@ -11,6 +12,7 @@
 #include "georef/crs_name.h"
 #include "georef/gps_footprint.h"
 #include "georef/proj_crs.h"
+#include "georef/robust_similarity.h"
 
 using namespace cls;
 
@@ -125,4 +127,87 @@ TEST(GpsFootprint, DistancesFromTheModelsBoxInItsCrs) {
   EXPECT_NEAR(gps_footprint({east}, mesh, utm32).median_distance, std::hypot(gap, std::max(0.0,
               utm32.project(east.latitude, east.longitude)[1] - 5650050)), 1e-6);
   EXPECT_EQ(gps_footprint({}, mesh, utm32).fixes, 0u);
+}
+
+// --- robust_similarity: LMedS + Umeyama against a similarity chosen by hand ---
+
+namespace {
+
+// Points spread in 3D (a camera orbit and its rings), mapped by a known similarity, with noise and
+// outliers added to the targets.
+struct KnownSimilarity {
+  std::vector<Vec3d> source, target;
+  std::vector<bool> outlier;
+  CityTransform truth = similarity_transform(2.5, axis_angle_to_rotation(Vec3d{0.3, -0.2, 1.1}), {412000, 5621000, 95});
+  KnownSimilarity(int n, double noise, double outlier_share, double outlier_metres) {
+    std::mt19937_64 rng(7);
+    std::normal_distribution<double> gauss(0, noise);
+    for (int i = 0; i < n; ++i) {
+      const double a = 2 * M_PI * i / n;
+      const Vec3d p{8 * std::cos(a), 8 * std::sin(a), 2.0 + (i % 3)};
+      Vec3d q = truth.apply(p) + Vec3d{gauss(rng), gauss(rng), gauss(rng)};
+      const bool out = i < static_cast<int>(std::lround(outlier_share * n));
+      if (out) q = q + Vec3d{outlier_metres * std::cos(3.0 * i), outlier_metres * std::sin(3.0 * i), 0};
+      source.push_back(p);
+      target.push_back(q);
+      outlier.push_back(out);
+    }
+  }
+};
+
+}  // namespace
+
+TEST(RobustSimilarity, ExactPairsGiveTheSimilarityBack) {
+  const KnownSimilarity k(12, 0, 0, 0);
+  const SimilarityFit fit = robust_similarity(k.source, k.target);
+  EXPECT_NEAR(fit.transform.scale(), 2.5, 1e-9);
+  for (const Vec3d& p : k.source) EXPECT_LT(norm(fit.transform.apply(p) - k.truth.apply(p)), 1e-6);
+  EXPECT_EQ(fit.inliers, k.source.size());
+}
+
+TEST(RobustSimilarity, RejectsPhoneOutliersAndFitsTheRest) {
+  // GPS-like: 3 m noise on an orbit 20 m across (in target units), a fifth of the positions 40 m off.
+  const KnownSimilarity k(40, 3.0, 0.2, 40);
+  const SimilarityFit fit = robust_similarity(k.source, k.target);
+  for (size_t i = 0; i < k.source.size(); ++i)
+    if (k.outlier[i]) EXPECT_FALSE(fit.inlier[i]) << "outlier " << i << " kept, residual " << fit.residuals[i];
+  EXPECT_GE(fit.inliers, k.source.size() * 7 / 10);
+  // The fit is as good as the noise allows (Umeyama on 32 inliers with 3 m noise: ~1 m at the points).
+  for (const Vec3d& p : k.source) EXPECT_LT(norm(fit.transform.apply(p) - k.truth.apply(p)), 3.0);
+  EXPECT_NEAR(fit.transform.scale(), 2.5, 0.25);
+}
+
+TEST(RobustSimilarity, RefusesPositionsOnALine) {
+  std::vector<Vec3d> source, target;
+  for (int i = 0; i < 10; ++i) {
+    source.push_back({double(i), 0, 0});
+    target.push_back({2.0 * i, 1, 0});
+  }
+  try {
+    robust_similarity(source, target);
+    FAIL() << "expected a cls::Error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("line"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(robust_similarity({{0, 0, 0}, {1, 0, 0}}, {{0, 0, 0}, {1, 0, 0}}), Error);
+}
+
+TEST(GpsProjection, UnprojectInvertsProject) {
+  const GpsProjection utm(25832);
+  for (const auto& [lat, lon] : std::vector<std::pair<double, double>>{{49.1, 8.4}, {51.7, 7.1}, {47.5, 10.9}}) {
+    const std::array<double, 2> xy = utm.project(lat, lon);
+    const std::array<double, 2> back = utm.unproject(xy[0], xy[1]);
+    EXPECT_NEAR(back[0], lat, 1e-9);
+    EXPECT_NEAR(back[1], lon, 1e-9);
+  }
+}
+
+TEST(Egm96Geoid, UndulationsAtPublishedPlaces) {
+  const Egm96Geoid geoid;
+  if (!geoid.available()) GTEST_SKIP() << "proj-data's egm96_15.gtx is not installed";
+  // NGA's EGM96 calculator (15' grid): N = 17.16 m at 0 N 0 E, -106.2 m near the Indian Ocean low
+  // (4.75 N 78.75 E lies at about -106 m), about +48 m over Karlsruhe.
+  EXPECT_NEAR(*geoid.undulation(0, 0), 17.16, 0.1);
+  EXPECT_LT(*geoid.undulation(4.75, 78.75), -100);
+  EXPECT_NEAR(*geoid.undulation(49.01, 8.40), 48.2, 1.0);
 }

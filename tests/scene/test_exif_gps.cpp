@@ -112,3 +112,30 @@ TEST(ExifGps, TheExtentOfASetOfFixes) {
   EXPECT_EQ(e.altitude, (std::array<double, 2>{90.0, 150.0}));
   EXPECT_EQ(e.datums, (std::map<std::string, int>{{"WGS-84", 2}}));
 }
+
+TEST(ExifGps, WhatTheWriterWritesAReceiverReadsBackAsExifSpellsIt) {
+  const fs::path dir = test::fresh_dir("exif_gps_write");
+  for (const char* name : {"fix.jpg", "fix.png"}) {
+    SCOPED_TRACE(name);
+    // Every sign: north-east above sea level, south-west below it.
+    for (const GpsFix& in : {GpsFix{49.10312345678, 8.42234567891, 171.2344, "WGS-84"},
+                             GpsFix{-33.85678901234, -70.64567890123, -12.3456, ""}}) {
+      const fs::path path = test::photo_with_exif(dir, name, {});
+      write_exif_gps(path.string(), in);
+      const std::optional<GpsFix> out = read_exif_gps(path.string());
+      ASSERT_TRUE(out.has_value());
+      EXPECT_NEAR(out->latitude, in.latitude, 0.5e-4 / 3600);  // 1e-4 arc seconds, rounded
+      EXPECT_NEAR(out->longitude, in.longitude, 0.5e-4 / 3600);
+      ASSERT_TRUE(out->altitude.has_value());
+      EXPECT_NEAR(*out->altitude, *in.altitude, 0.5e-3);
+      EXPECT_EQ(out->map_datum, in.map_datum);
+      // As EXIF spells it: unsigned degrees, minutes, seconds with a reference letter.
+      auto image = Exiv2::ImageFactory::open(path.string());
+      image->readMetadata();
+      const Exiv2::ExifData& exif = image->exifData();
+      EXPECT_EQ(exif.findKey(Exiv2::ExifKey("Exif.GPSInfo.GPSLatitudeRef"))->toString(), in.latitude < 0 ? "S" : "N");
+      EXPECT_EQ(exif.findKey(Exiv2::ExifKey("Exif.GPSInfo.GPSAltitudeRef"))->toString(), *in.altitude < 0 ? "1" : "0");
+    }
+  }
+  test::expect_error([&] { write_exif_gps((dir / "absent.png").string(), GpsFix{}); }, {"absent.png"});
+}

@@ -120,7 +120,7 @@ TEST(SceneCli, InfoReportsThePhotosGps) {
   const std::string no_crs = std::string(CLS_TEST_DATA) + "/citygml/cityjson/rotterdam_subset.json";
   const test::CliResult unnamed = run("scene info " + dir.string() + " --city " + no_crs);
   EXPECT_EQ(unnamed.status, 1);
-  EXPECT_NE(unnamed.err.find("names no CRS: give it with --crs EPSG:N"), std::string::npos) << unnamed.err;
+  EXPECT_NE(unnamed.err.find("names no CRS (srsName / referenceSystem): give it with --crs EPSG:N"), std::string::npos) << unnamed.err;
   EXPECT_EQ(run("scene info " + dir.string() + " --city " + no_crs + " --crs EPSG:7415").status, 0);
   EXPECT_EQ(run("scene info " + dir.string() + " --city " + tile + " --skip-image-check").status, 2);
   test::photo_with_exif(dir / "images", "im2.jpg", fix("91/1 0/1 0/1"));

@@ -1,0 +1,260 @@
+#include "pipeline/georeferencing.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "core/error.h"
+#include "core/log.h"
+#include "georef/crs_name.h"
+#include "georef/proj_crs.h"
+#include "raycast/closest_point.h"
+
+namespace cls {
+namespace {
+
+// The search scores at most this many sparse points (an even stride through them): the share near the
+// mesh is settled long before, and each candidate costs a closest-point query per point.
+constexpr size_t kSearchPoints = 4000;
+// ICP's turn is trusted up to twice the searched yaw range, and at least this (the GPS fit's tilt).
+constexpr double kIcpTrustedTurnDeg = 5;
+
+CityTransform translation(Vec3d t) { return similarity_transform(1, Mat3d::identity(), t); }
+
+// A rotation of `degrees` about the vertical through `centre`.
+CityTransform yaw_about(double degrees, Vec3d centre) {
+  const Mat3d R = axis_angle_to_rotation(Vec3d{0, 0, degrees * M_PI / 180});
+  return similarity_transform(1, R, centre - R * centre);
+}
+
+// Share of `points` within `gate` of the mesh once moved by `m`.
+double share_within(const ClosestPointQuery& mesh, const std::vector<Vec3d>& points, const CityTransform& m, double gate) {
+  std::vector<Vec3d> moved(points.size());
+  for (size_t i = 0; i < points.size(); ++i) moved[i] = m.apply(points[i]);
+  const std::vector<double> d = mesh.distances(moved);
+  return static_cast<double>(std::count_if(d.begin(), d.end(), [gate](double x) { return x <= gate; })) /
+         static_cast<double>(d.size());
+}
+
+// Mean truncated squared distance of `points` to the mesh once moved by `m` (distances capped at
+// `gate`): a robust least-squares cost that, unlike a count within the gate, still falls while points
+// approach their surfaces, so that the yaw that puts facade points on their walls wins.
+double truncated_cost(const ClosestPointQuery& mesh, const std::vector<Vec3d>& points, const CityTransform& m, double gate) {
+  std::vector<Vec3d> moved(points.size());
+  for (size_t i = 0; i < points.size(); ++i) moved[i] = m.apply(points[i]);
+  double sum = 0;
+  for (double d : mesh.distances(moved)) sum += std::pow(std::min(d, gate), 2);
+  return sum / static_cast<double>(points.size());
+}
+
+struct Candidate {
+  double yaw = 0, dz = 0, cost = INFINITY;
+};
+
+// The best (yaw, dz) of a grid; among equal costs the middle one (a facade seen only from the side
+// costs the same over the height of its wall).
+Candidate grid_search(const ClosestPointQuery& mesh, const std::vector<Vec3d>& points, Vec3d centre,
+                      const std::vector<double>& yaws, const std::vector<double>& dzs, double gate) {
+  std::vector<Candidate> scored;
+  for (double yaw : yaws)
+    for (double dz : dzs)
+      scored.push_back({yaw, dz, truncated_cost(mesh, points, translation({0, 0, dz}) * yaw_about(yaw, centre), gate)});
+  double best = INFINITY;
+  for (const Candidate& c : scored) best = std::min(best, c.cost);
+  std::vector<Candidate> tied;
+  for (const Candidate& c : scored)
+    if (c.cost == best) tied.push_back(c);
+  return tied[tied.size() / 2];
+}
+
+std::vector<double> steps(double lo, double hi, double step) {
+  std::vector<double> v;
+  const int n = static_cast<int>(std::floor((hi - lo) / step + 1e-9));
+  for (int i = 0; i <= n; ++i) v.push_back(lo + i * step);
+  return v;
+}
+
+std::string metres(double m) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f m", m);
+  return text;
+}
+
+}  // namespace
+
+std::vector<std::optional<GpsFix>> scene_gps(const Scene& scene) {
+  std::vector<std::optional<GpsFix>> gps;
+  gps.reserve(scene.views.size());
+  for (const SceneView& v : scene.views) gps.push_back(read_exif_gps(v.image_path));
+  return gps;
+}
+
+GeorefResult georeference(const Scene& scene, const std::vector<std::optional<GpsFix>>& gps, const SemanticMesh& mesh,
+                          const GeorefOptions& options, const std::string& context) {
+  GeorefResult r;
+  r.epsg = city_model_crs(mesh.source_path, mesh.crs, options.crs).horizontal_epsg;
+  const GpsProjection projection(r.epsg);
+  const Egm96Geoid geoid;
+  r.images = scene.views.size();
+
+  // Step 1: camera centres (scene) and GPS positions (CRS minus the mesh's origin, EGM96 heights).
+  std::vector<Vec3d> centres, positions;
+  double undulation_sum = 0;
+  size_t undulations = 0;
+  for (size_t i = 0; i < gps.size(); ++i) {
+    if (!gps[i]) continue;
+    ++r.fixes;
+    if (!gps[i]->altitude) {
+      ++r.without_altitude;
+      continue;
+    }
+    const std::array<double, 2> xy = projection.project(gps[i]->latitude, gps[i]->longitude);
+    double height = *gps[i]->altitude;
+    if (const std::optional<double> n = geoid.undulation(gps[i]->latitude, gps[i]->longitude)) {
+      height -= *n;
+      undulation_sum += *n;
+      ++undulations;
+    }
+    centres.push_back(scene.views[i].pose.center());
+    positions.push_back({xy[0] - mesh.origin[0], xy[1] - mesh.origin[1], height - mesh.origin[2]});
+  }
+  if (undulations > 0) r.undulation = undulation_sum / static_cast<double>(undulations);
+  log_info(cat(context, ": ", r.fixes, " of ", r.images, " registered photos carry a GPS position (",
+               r.fixes - r.without_altitude, " with an altitude); the city model's CRS: EPSG:", r.epsg));
+  if (centres.size() < 3)
+    fail(scene.root, cat("georeferencing needs at least 3 registered photos with a GPS position and altitude in their "
+                         "EXIF; ", centres.size(), " of ", r.images, " have one"));
+
+  // Step 2: scene -> local CRS.
+  r.gps = robust_similarity(centres, positions);
+  std::vector<double> rejected;
+  for (size_t i = 0; i < centres.size(); ++i)
+    if (!r.gps.inlier[i]) rejected.push_back(r.gps.residuals[i]);
+  std::sort(rejected.rbegin(), rejected.rend());
+  std::string rejected_text;
+  for (size_t i = 0; i < std::min<size_t>(rejected.size(), 5); ++i) rejected_text += (i ? ", " : " (") + metres(rejected[i]);
+  if (!rejected.empty()) rejected_text += rejected.size() > 5 ? ", ...)" : ")";
+  log_info(cat(context, ": GPS: ", r.gps.inliers, " of ", centres.size(), " positions agree with the cameras within ",
+               metres(r.gps.threshold), " (RMS ", metres(r.gps.rms), "); ", rejected.size(), " rejected", rejected_text,
+               "; ", r.gps.transform.scale(), " m per scene unit"));
+  log_info(r.undulation ? cat(context, ": heights: WGS 84 ellipsoid -> EGM96 geoid (N = ", metres(*r.undulation),
+                              ", proj-data's egm96_15.gtx)")
+                        : cat(context, ": heights: as written (the EGM96 grid egm96_15.gtx of proj-data is not "
+                                       "installed); the vertical search finds the datum"));
+  const CityTransform to_local = translation({-mesh.origin[0], -mesh.origin[1], -mesh.origin[2]});
+  r.from_gps = inverse(r.gps.transform) * to_local;
+
+  // Step 3: vertical offset and yaw against the mesh, the sparse points placed by the GPS similarity.
+  CityTransform searched_local = r.gps.transform;
+  if (scene.points.empty()) {
+    r.icp_problem = "the scene has no sparse points";
+    log_warn(cat(context, ": the scene has no sparse points: heights and yaw stay as GPS gives them, and no ICP"));
+  } else {
+    const ClosestPointQuery local_mesh(scene_vertices(mesh, to_local), mesh.triangles);
+    const size_t stride = (scene.points.size() + kSearchPoints - 1) / kSearchPoints;
+    std::vector<Vec3d> points;
+    Vec3d centre{};
+    for (size_t i = 0; i < scene.points.size(); i += stride) {
+      points.push_back(r.gps.transform.apply(scene.points[i].xyz));
+      centre = centre + points.back();
+    }
+    centre = (1.0 / points.size()) * centre;
+    double radius = 0;  // horizontal reach of the points about their centre
+    for (const Vec3d& p : points) radius = std::max(radius, std::hypot(p.x - centre.x, p.y - centre.y));
+    // How far the yaw may be off: three standard errors of the GPS fit's rotation about the vertical.
+    Vec3d mean{};
+    size_t inliers = 0;
+    for (size_t i = 0; i < positions.size(); ++i)
+      if (r.gps.inlier[i]) mean = mean + positions[i], ++inliers;
+    mean = (1.0 / inliers) * mean;
+    double spread = 0;
+    for (size_t i = 0; i < positions.size(); ++i)
+      if (r.gps.inlier[i]) spread += std::pow(positions[i].x - mean.x, 2) + std::pow(positions[i].y - mean.y, 2);
+    spread = std::sqrt(spread / inliers);
+    const double gate = options.search_gate;
+    const double yaw_step = radius > 0 ? std::min(5.0, (gate / 2) / radius * 180 / M_PI) : 5.0;
+    r.yaw_range_deg = spread > 0 ? std::min(180.0, 3 * std::atan(r.gps.rms / (spread * std::sqrt(inliers))) * 180 / M_PI) : 180;
+    if (r.yaw_range_deg < yaw_step) r.yaw_range_deg = 0;
+    r.search_fraction_before = share_within(local_mesh, points, CityTransform::identity(), gate);
+    Candidate c = grid_search(local_mesh, points, centre, {0.0},
+                              steps(-options.vertical_range, options.vertical_range, gate / 2), gate);
+    if (r.yaw_range_deg > 0)
+      c = grid_search(local_mesh, points, centre, steps(-r.yaw_range_deg, r.yaw_range_deg, yaw_step),
+                      steps(c.dz - 2 * gate, c.dz + 2 * gate, gate / 2), gate);
+    c = grid_search(local_mesh, points, centre, {c.yaw}, steps(c.dz - gate, c.dz + gate, gate / 8), gate / 4);
+    r.vertical_offset = c.dz;
+    r.yaw_deg = c.yaw;
+    const CityTransform found = translation({0, 0, c.dz}) * yaw_about(c.yaw, centre);
+    r.search_fraction = share_within(local_mesh, points, found, gate);
+    searched_local = found * r.gps.transform;
+    log_info(cat(context, ": search against the city model: vertical offset ", metres(c.dz), " (searched +-",
+                 options.vertical_range, " m)",
+                 r.yaw_range_deg > 0 ? cat(", yaw ", c.yaw, " deg (searched +-", r.yaw_range_deg, " deg)") : std::string(),
+                 "; ", 100 * r.search_fraction_before, "% -> ", 100 * r.search_fraction, "% of the sparse points within ",
+                 gate, " m of the model"));
+  }
+  r.searched = inverse(searched_local) * to_local;
+  r.transform = r.searched;
+
+  // Step 4: ICP from there.
+  if (!options.refine && r.icp_problem.empty()) r.icp_problem = "not asked for";
+  if (r.icp_problem.empty()) {
+    SceneCityModel placed;
+    placed.mesh = mesh;
+    placed.transform = r.searched;
+    placed.vertices = scene_vertices(mesh, placed.transform);
+    try {
+      r.icp = refine_alignment(sparse_points(scene), placed, options.icp, options.threshold);
+    } catch (const Error& e) {
+      r.icp_problem = e.what();
+    }
+    if (r.icp) {
+      const TransformDifference change = transform_difference(r.icp->refined, r.searched, mesh);
+      log_info(cat(context, ": ICP moves the model by up to ", metres(change.max_displacement), " (", change.rotation_deg,
+                   " deg, scale ", 100 * change.scale, "%); ", 100 * r.icp->before.fraction_within, "% -> ",
+                   100 * r.icp->after.fraction_within, "% of sparse points within ", options.threshold, " m, ",
+                   100 * r.icp->fine_after.fraction_within, "% within ", r.icp->fine_after.threshold, " m"));
+      // ICP may turn the model as far as the GPS leaves the yaw open, and a few degrees of tilt beyond.
+      const double turn = std::max(2 * r.yaw_range_deg, kIcpTrustedTurnDeg);
+      if (r.icp->icp.conditioning < kIcpWeakConditioning)
+        r.icp_problem = cat("the sparse points leave part of the motion unconstrained (conditioning ",
+                            r.icp->icp.conditioning, ")");
+      else if (change.rotation_deg > turn)
+        r.icp_problem = cat("it turns the model by ", change.rotation_deg, " deg, more than the GPS leaves open (", turn,
+                            " deg): it may have slid onto other surfaces, and cannot be trusted");
+      else
+        r.transform = r.icp->refined;
+    }
+    if (!r.icp_problem.empty())
+      log_warn(cat(context, ": ICP: ", r.icp_problem, "; the searched transform is kept"));
+  }
+
+  r.record = {{"crs", cat("EPSG:", r.epsg)},
+              {"images", r.images},
+              {"fixes", r.fixes},
+              {"without_altitude", r.without_altitude},
+              {"used", r.gps.inliers},
+              {"rejected", rejected.size()},
+              {"gps_threshold", r.gps.threshold},
+              {"gps_rms", r.gps.rms},
+              {"scene_scale", r.gps.transform.scale()},
+              {"geoid", r.undulation ? nlohmann::json("EGM96") : nlohmann::json(nullptr)},
+              {"undulation", r.undulation ? nlohmann::json(*r.undulation) : nlohmann::json(nullptr)},
+              {"vertical_offset", r.vertical_offset},
+              {"yaw_deg", r.yaw_deg},
+              {"yaw_range_deg", r.yaw_range_deg},
+              {"search", {{"gate", options.search_gate},
+                          {"fraction_before", r.search_fraction_before},
+                          {"fraction_after", r.search_fraction}}}};
+  if (r.icp)
+    r.record["icp"] = {{"applied", r.icp_problem.empty()},
+                       {"conditioning", r.icp->icp.conditioning},
+                       {"fraction_within", r.icp->after.fraction_within},
+                       {"fraction_within_finest", r.icp->fine_after.fraction_within},
+                       {"threshold", options.threshold},
+                       {"finest", r.icp->fine_after.threshold}};
+  if (!r.icp_problem.empty()) r.record["icp_problem"] = r.icp_problem;
+  return r;
+}
+
+}  // namespace cls

@@ -1,0 +1,46 @@
+// The georef stage: the city transform from the photos' EXIF GPS (pipeline/georeferencing.h), when
+// --georef gps, or auto with no city transform given and GPS in at least 3 photos. Its transform is
+// written to the run's georef transform (RunLayout::georef_transform) and used from then on (align
+// refines from it).
+#include <filesystem>
+
+#include "core/log.h"
+#include "pipeline/georeferencing.h"
+#include "pipeline/stages.h"
+
+namespace cls {
+
+std::vector<Stage> georef_stages(RunContext& run) {
+  Stage s;
+  s.name = "georef";
+  s.run = [&run] {
+    const PipelineConfig& c = run.config;
+    const std::filesystem::path out = run.layout.georef_transform();
+    std::filesystem::remove(out);  // a transform of an earlier run stays only while it is the one used
+    if (c.georef == "off") return StageReport::with(StageStatus::Skipped, "--georef off");
+    if (c.georef == "auto" && !c.city_transform.empty())
+      return StageReport::with(StageStatus::Skipped, "a city transform is given");
+    const std::vector<std::optional<GpsFix>> gps = scene_gps(run.scene);
+    size_t usable = 0;
+    for (const auto& g : gps) usable += g && g->altitude;
+    if (c.georef == "auto" && usable < 3)
+      return StageReport::with(StageStatus::Skipped,
+                               cat(usable, " of ", gps.size(), " photos carry a GPS position with an altitude; 3 are needed"));
+    GeorefOptions options;
+    options.crs = c.crs;
+    options.threshold = c.align_distance;
+    const GeorefResult g = georeference(run.scene, gps, run.city.mesh, options, "run: georef");
+    std::filesystem::create_directories(out.parent_path());
+    write_city_transform(out.string(), g.transform);
+    run.city.transform = g.transform;
+    run.city.vertices = scene_vertices(run.city.mesh, run.city.transform);
+    run.city_transform = out.string();
+    nlohmann::json record = g.record;
+    record["transform"] = out.string();
+    log_info("run: georef: using the city transform " + out.string());
+    return StageReport::done(record);
+  };
+  return {s};
+}
+
+}  // namespace cls

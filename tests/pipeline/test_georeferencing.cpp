@@ -1,0 +1,108 @@
+// Georeferencing from the photos' GPS (pipeline/georeferencing.h) on synth --gps scenes of FZK-Haus,
+// whose true city transform synth keeps apart (city/transform_true.json): each step against the truth,
+// and `run`'s georef stage deciding when it applies.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "citymodel/city_model.h"
+#include "core/atomic_file.h"
+#include "core/run_layout.h"
+#include "models/temp_dir.h"
+#include "pipeline/georeferencing.h"
+#include "pipeline/pipeline.h"
+#include "synth/synth_job.h"
+
+namespace fs = std::filesystem;
+using namespace cls;
+
+namespace {
+
+const std::string kFzk = CLS_TEST_DATA "/citygml/fzk-haus/fzk_haus_lod3_v2.gml";
+
+fs::path work_path(const std::string& name) {
+  static const test::TempDir root("cls_georef_");
+  return root.path / name;
+}
+
+// 16 views of 160x120 with phone-like GPS: 3 m noise, heights 50 m off, a tenth of them 30 m off.
+fs::path gps_scene(const std::string& name, const std::string& gps = "on") {
+  synth::SynthJob job;
+  job.city_path = kFzk;
+  job.out_dir = work_path(name).string();
+  job.settings.views = 16;
+  job.settings.width = 160;
+  job.settings.height = 120;
+  job.settings.gt_density = 5;
+  job.settings.seed = 3;
+  job.gps = synth::parse_gps_error(gps);
+  synth::run_synth_job(job);
+  return job.out_dir;
+}
+
+}  // namespace
+
+TEST(Georeferencing, FromPhoneGpsToTheTruthWithNoTransformGiven) {
+  const fs::path dir = gps_scene("phone");
+  // synth --gps names no transform: what the pipeline must find.
+  EXPECT_FALSE(nlohmann::json::parse(read_text_file(SceneFiles{dir}.config())).contains("city_transform"));
+  const Scene scene = load_scene(dir.string());
+  const SemanticMesh mesh = load_city_model(kFzk, Taxonomy::builtin(), 0);
+  const CityTransform truth = read_city_transform((dir / "city" / "transform_true.json").string());
+  const GeorefResult r = georeference(scene, scene_gps(scene), mesh, GeorefOptions{}, "test");
+
+  EXPECT_EQ(r.fixes, scene.views.size());
+  EXPECT_EQ(r.gps.inliers + 2, scene.views.size()) << "16 views, a tenth outliers: 2 rejected";
+  ASSERT_TRUE(r.undulation.has_value()) << "proj-data's EGM96 grid is a dependency (setup.sh)";
+  // GPS alone is metres off (the noise); the search takes out the 50 m datum step less EGM96's 48 m
+  // (lowering the GPS heights), give or take the fit's own vertical error.
+  const TransformDifference gps = transform_difference(r.from_gps, truth, mesh);
+  EXPECT_GT(gps.centre, 0.3);
+  EXPECT_NEAR(r.vertical_offset, -(50 - *r.undulation), 2.0);
+  // ICP ends on the truth: within 3 cm and 0.05 deg (issue 34's goal).
+  const TransformDifference final = transform_difference(r.transform, truth, mesh);
+  EXPECT_LT(final.max_displacement, 0.03) << r.record.dump();
+  EXPECT_LT(final.rotation_deg, 0.05);
+  EXPECT_TRUE(r.icp_problem.empty()) << r.icp_problem;
+}
+
+TEST(Georeferencing, TooFewPhotosWithGpsIsAnErrorNamingTheScene) {
+  const fs::path dir = gps_scene("phone_few");
+  const Scene scene = load_scene(dir.string());
+  std::vector<std::optional<GpsFix>> gps = scene_gps(scene);
+  for (size_t i = 2; i < gps.size(); ++i) gps[i].reset();
+  const SemanticMesh mesh = load_city_model(kFzk, Taxonomy::builtin(), 0);
+  try {
+    georeference(scene, gps, mesh, GeorefOptions{}, "test");
+    FAIL() << "expected a cls::Error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("2 of 16"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(dir.string()), std::string::npos) << e.what();
+  }
+}
+
+TEST(Georeferencing, RunGeoreferencesAutomaticallyOnlyWithoutAGivenTransform) {
+  const fs::path dir = gps_scene("phone_run", "h=1,v=1,outliers=0");
+  PipelineConfig c;
+  c.scene_dir = dir;
+  c.out_dir = work_path("phone_run_out");
+  c.features.models = "synthetic";
+  c.stop_after = "align";
+  read_scene_config(SceneFiles{dir}.config(), c);
+  ASSERT_TRUE(c.city_transform.empty());
+  run_pipeline(c);
+  nlohmann::json record = nlohmann::json::parse(read_text_file(RunLayout(c.out_dir).run_json()));
+  ASSERT_EQ(record["georef"]["status"], "done") << record["georef"].dump();
+  const CityTransform used = read_city_transform(RunLayout(c.out_dir).georef_transform().string());
+  const CityTransform truth = read_city_transform((dir / "city" / "transform_true.json").string());
+  const SemanticMesh mesh = load_city_model(kFzk, Taxonomy::builtin(), 0);
+  EXPECT_LT(transform_difference(used, truth, mesh).max_displacement, 0.03);
+
+  // Given a transform, auto leaves it alone (and removes the earlier run's).
+  c.city_transform = (dir / "city" / "transform_true.json").string();
+  run_pipeline(c);
+  record = nlohmann::json::parse(read_text_file(RunLayout(c.out_dir).run_json()));
+  EXPECT_EQ(record["georef"]["status"], "skipped: a city transform is given");
+  EXPECT_FALSE(fs::exists(RunLayout(c.out_dir).georef_transform()));
+}
