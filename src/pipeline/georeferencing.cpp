@@ -15,7 +15,7 @@ namespace {
 
 // The search scores at most this many sparse points (an even stride through them): the share near the
 // mesh is settled long before, and each candidate costs a closest-point query per point.
-constexpr size_t kSearchPoints = 4000;
+constexpr size_t kSearchPoints = 2000;
 // ICP's turn is trusted up to twice the searched yaw range, and at least this (the GPS fit's tilt).
 constexpr double kIcpTrustedTurnDeg = 5;
 
@@ -48,21 +48,20 @@ double truncated_cost(const ClosestPointQuery& mesh, const std::vector<Vec3d>& p
 }
 
 struct Candidate {
-  double yaw = 0, dz = 0, cost = INFINITY;
+  double yaw = 0, dx = 0, dy = 0, dz = 0, cost = INFINITY;
+  // The motion of the points: the yaw about the vertical through `centre`, then the shift.
+  CityTransform motion(Vec3d centre) const { return translation({dx, dy, dz}) * yaw_about(yaw, centre); }
 };
 
-// The best (yaw, dz) of a grid; among equal costs the middle one (a facade seen only from the side
-// costs the same over the height of its wall).
-Candidate grid_search(const ClosestPointQuery& mesh, const std::vector<Vec3d>& points, Vec3d centre,
-                      const std::vector<double>& yaws, const std::vector<double>& dzs, double gate) {
-  std::vector<Candidate> scored;
-  for (double yaw : yaws)
-    for (double dz : dzs)
-      scored.push_back({yaw, dz, truncated_cost(mesh, points, translation({0, 0, dz}) * yaw_about(yaw, centre), gate)});
+// The best of `grid` (each candidate scored); among equal costs the middle one (a facade seen only from
+// the side costs the same over the height of its wall).
+Candidate best_of(const ClosestPointQuery& mesh, const std::vector<Vec3d>& points, Vec3d centre,
+                  std::vector<Candidate> grid, double gate) {
+  for (Candidate& c : grid) c.cost = truncated_cost(mesh, points, c.motion(centre), gate);
   double best = INFINITY;
-  for (const Candidate& c : scored) best = std::min(best, c.cost);
+  for (const Candidate& c : grid) best = std::min(best, c.cost);
   std::vector<Candidate> tied;
-  for (const Candidate& c : scored)
+  for (const Candidate& c : grid)
     if (c.cost == best) tied.push_back(c);
   return tied[tied.size() / 2];
 }
@@ -175,22 +174,39 @@ GeorefResult georeference(const Scene& scene, const std::vector<std::optional<Gp
     const double yaw_step = radius > 0 ? std::min(5.0, (gate / 2) / radius * 180 / M_PI) : 5.0;
     r.yaw_range_deg = spread > 0 ? std::min(180.0, 3 * std::atan(r.gps.rms / (spread * std::sqrt(inliers))) * 180 / M_PI) : 180;
     if (r.yaw_range_deg < yaw_step) r.yaw_range_deg = 0;
+    // How far the model may be off horizontally at the points: three standard errors of the GPS fit's
+    // centre, and a gate.
+    r.horizontal_range = std::min(options.vertical_range, 3 * r.gps.rms / std::sqrt(inliers) + gate);
     r.search_fraction_before = share_within(local_mesh, points, CityTransform::identity(), gate);
-    Candidate c = grid_search(local_mesh, points, centre, {0.0},
-                              steps(-options.vertical_range, options.vertical_range, gate / 2), gate);
-    if (r.yaw_range_deg > 0)
-      c = grid_search(local_mesh, points, centre, steps(-r.yaw_range_deg, r.yaw_range_deg, yaw_step),
-                      steps(c.dz - 2 * gate, c.dz + 2 * gate, gate / 2), gate);
-    c = grid_search(local_mesh, points, centre, {c.yaw}, steps(c.dz - gate, c.dz + gate, gate / 8), gate / 4);
+    // Coordinate descent over the grids: the height first (the largest error), then yaw with height,
+    // then the horizontal shift, then the height finely. The scale is left to ICP: a search of it
+    // against the truncated cost prefers points spread beyond the model (FZK-Haus: +30 % from -0.4 %).
+    std::vector<Candidate> grid;
+    for (double dz : steps(-options.vertical_range, options.vertical_range, gate / 2)) grid.push_back({0, 0, 0, dz});
+    Candidate c = best_of(local_mesh, points, centre, grid, gate);
+    if (r.yaw_range_deg > 0) {
+      grid.clear();
+      for (double yaw : steps(-r.yaw_range_deg, r.yaw_range_deg, yaw_step))
+        for (double dz : steps(c.dz - 2 * gate, c.dz + 2 * gate, gate / 2)) grid.push_back({yaw, 0, 0, dz});
+      c = best_of(local_mesh, points, centre, grid, gate);
+    }
+    grid.clear();
+    for (double dx : steps(-r.horizontal_range, r.horizontal_range, gate / 2))
+      for (double dy : steps(-r.horizontal_range, r.horizontal_range, gate / 2)) grid.push_back({c.yaw, dx, dy, c.dz});
+    c = best_of(local_mesh, points, centre, grid, gate);
+    grid.clear();
+    for (double dz : steps(c.dz - gate, c.dz + gate, gate / 8)) grid.push_back({c.yaw, c.dx, c.dy, dz});
+    c = best_of(local_mesh, points, centre, grid, gate / 4);
     r.vertical_offset = c.dz;
     r.yaw_deg = c.yaw;
-    const CityTransform found = translation({0, 0, c.dz}) * yaw_about(c.yaw, centre);
+    r.horizontal_shift = std::hypot(c.dx, c.dy);
+    const CityTransform found = c.motion(centre);
     r.search_fraction = share_within(local_mesh, points, found, gate);
     searched_local = found * r.gps.transform;
     log_info(cat(context, ": search against the city model: vertical offset ", metres(c.dz), " (searched +-",
                  options.vertical_range, " m)",
                  r.yaw_range_deg > 0 ? cat(", yaw ", c.yaw, " deg (searched +-", r.yaw_range_deg, " deg)") : std::string(),
-                 "; ", 100 * r.search_fraction_before, "% -> ", 100 * r.search_fraction, "% of the sparse points within ",
+                 ", horizontal shift ", metres(r.horizontal_shift), " (searched +-", metres(r.horizontal_range), "); ", 100 * r.search_fraction_before, "% -> ", 100 * r.search_fraction, "% of the sparse points within ",
                  gate, " m of the model"));
   }
   r.searched = inverse(searched_local) * to_local;
@@ -243,6 +259,8 @@ GeorefResult georeference(const Scene& scene, const std::vector<std::optional<Gp
               {"vertical_offset", r.vertical_offset},
               {"yaw_deg", r.yaw_deg},
               {"yaw_range_deg", r.yaw_range_deg},
+              {"horizontal_shift", r.horizontal_shift},
+              {"horizontal_range", r.horizontal_range},
               {"search", {{"gate", options.search_gate},
                           {"fraction_before", r.search_fraction_before},
                           {"fraction_after", r.search_fraction}}}};

@@ -6,8 +6,9 @@
 //   2. the similarity from the SfM camera centres to those positions, robust to phones' outliers
 //      (least median of squares, georef/robust_similarity.h);
 //   3. what GPS cannot resolve, searched against the city mesh: the vertical offset (a phone's height
-//      may be ellipsoidal or above sea level, plus its own bias) and, when the cameras' spread is short
-//      against the GPS noise, the yaw; the score is the share of sparse points near the mesh;
+//      may be ellipsoidal or above sea level, plus its own bias), when the cameras' spread is short
+//      against the GPS noise the yaw, and the horizontal shift the GPS noise leaves (beyond ICP's
+//      capture); the cost is the sparse points' truncated squared distance to the mesh;
 //   4. point-to-plane ICP of the sparse points onto the mesh (align's refinement).
 // `georef` runs it alone, `run --georef` before the label maps.
 #include <nlohmann/json.hpp>
@@ -43,6 +44,8 @@ struct GeorefResult {
   double vertical_offset = 0;         // step 3: metres added to the GPS heights
   double yaw_deg = 0;                 // step 3: rotation about the vertical through the points
   double yaw_range_deg = 0;           // how far the yaw was searched (0: not)
+  double horizontal_shift = 0;        // step 3: metres the points moved horizontally
+  double horizontal_range = 0;        // how far the shift was searched (in x and in y)
   double search_fraction_before = 0, search_fraction = 0;  // share of points within search_gate, before / after
   std::optional<AlignmentRefinement> icp;
   std::string icp_problem;            // why step 4 did not run or failed ("" when it ran)

@@ -215,6 +215,13 @@ void header(Page& page, const json& run) {
   for (const auto& [key, label] : {std::pair{"scene", "Scene"}, {"city_model", "City model"}, {"models", "Models"}})
     if (run.contains(key)) row(label, number_text(run[key]));
   if (run.contains("provider")) row("Feature provider", run["provider"].dump());
+  if (const auto g = run.find("georef"); g != run.end() && g->is_object() && g->value("status", "") == "done")
+    row("Georeferencing", "from the photos' GPS in " + number_text(g->value("crs", json())) + ": " +
+                              number_text(g->value("used", json())) + " of " + number_text(g->value("fixes", json())) +
+                              " positions used (RMS " + fixed(g->value("gps_rms", NAN), 2) + " m), vertical offset " +
+                              fixed(g->value("vertical_offset", NAN), 2) + " m, ICP " +
+                              (g->contains("icp_problem") ? "not applied: " + number_text((*g)["icp_problem"])
+                                                          : std::string("applied")));
   if (const auto a = run.find("align_check"); a != run.end() && a->is_object())
     row("Alignment check", fixed(100 * a->value("fraction_within", NAN), 1) + "% of the sparse points within " +
                                number_text(a->value("threshold", json())) + " m of the city model (median " +

@@ -209,6 +209,8 @@ TEST(Report, PartialRunSaysWhatIsMissingInsteadOfBrokenImages) {
   write_text_atomic(dir.path / "run.json",
                     json{{"scene", "/s"},
                          {"models", "clip"},
+                         {"georef", {{"status", "done"}, {"crs", "EPSG:25832"}, {"used", 22}, {"fixes", 24},
+                                     {"gps_rms", 5.187}, {"vertical_offset", -2.25}}},
                          {"labels", {{"status", "done"}}},
                          {"features", {{"status", "stopped: no model weights"}, {"reason", "no CLIP weights"}}}}
                             .dump());
@@ -221,6 +223,9 @@ TEST(Report, PartialRunSaysWhatIsMissingInsteadOfBrokenImages) {
                            "no evaluation (eval/eval.json)", "run.json records no settings"})
     EXPECT_NE(html.find(line), std::string::npos) << line;
   EXPECT_NE(html.find("status-stopped\">stopped: no model weights"), std::string::npos);
+  EXPECT_NE(html.find("from the photos&#39; GPS in EPSG:25832: 22 of 24 positions used (RMS 5.19 m), vertical offset "
+                      "-2.25 m, ICP applied"),
+            std::string::npos);
 
   // An unreadable optional file is said on the page, a field of another type costs its section only;
   // a missing or broken run.json is an error naming it.
