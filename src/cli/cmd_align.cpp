@@ -53,7 +53,7 @@ int cmd_align(int argc, char** argv) {
   IcpOptions icp;
   double min_opacity = 0.5, threshold = 0.5;
   bool json = false;
-  args.bind("scene", scene_dir, "scene directory (COLMAP or Pix4D)").required();
+  args.bind("scene", scene_dir, "scene directory (COLMAP, OPF or Pix4D)").required();
   city_options.bind(args)
       .bind("out", out, "where to write the refined transform JSON")
       .required()

@@ -26,7 +26,7 @@ int cmd_align_check(int argc, char** argv) {
   CityMeshOptions city_options;
   double threshold = 0.5, min_fraction = kMisalignedFraction;
   bool json = false;
-  args.bind("scene", scene_dir, "scene directory (COLMAP or Pix4D)").required();
+  args.bind("scene", scene_dir, "scene directory (COLMAP, OPF or Pix4D)").required();
   city_options.bind(args)
       .bind("distance", threshold, "threshold in metres of the city model")
       .short_name("d")

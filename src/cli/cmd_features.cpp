@@ -26,7 +26,7 @@ int cmd_features(int argc, char** argv) {
   int resolution = 1;
   FeatureStageOptions options;
   ProviderChoice choice;
-  args.bind("scene", scene_dir, "scene directory (COLMAP or Pix4D)").required();
+  args.bind("scene", scene_dir, "scene directory (COLMAP, OPF or Pix4D)").required();
   feature_stage_options().declare(args, options);
   provider_options().declare(args, choice);
   args.bind("resolution", resolution, "divide the image size by 1, 2, 4 or 8 (as for raycast)").short_name("r")

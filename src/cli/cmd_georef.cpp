@@ -30,7 +30,7 @@ int cmd_georef(int argc, char** argv) {
   CityModelOptions model;
   GeorefOptions o;
   bool json = false, no_icp = false;
-  args.bind("scene", scene_dir, "scene directory (COLMAP or Pix4D) whose images carry EXIF GPS").required()
+  args.bind("scene", scene_dir, "scene directory (COLMAP, OPF or Pix4D) whose images carry EXIF GPS").required()
       .bind("city", city_path, "CityGML / CityJSON / CityJSONSeq city model").required()
       .bind("lod", model.lod, "level of detail: 1, 2, 3 or highest", lod_codec())
       .bind("taxonomy", model.taxonomy_path, "taxonomy JSON; the built-in one if not given")

@@ -24,7 +24,7 @@ int cmd_raycast(int argc, char** argv) {
   fs::path out;
   SceneOptions scene_options;
   CityMeshOptions city_options;
-  args.bind("scene", scene_dir, "scene directory (COLMAP or Pix4D)").required();
+  args.bind("scene", scene_dir, "scene directory (COLMAP, OPF or Pix4D)").required();
   city_options.bind(args)
       .bind("resolution", scene_options.resolution_factor,
             "divide the image size by 1, 2, 4 or 8 (as the training images)")

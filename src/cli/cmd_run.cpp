@@ -13,7 +13,7 @@ namespace cls {
 
 int cmd_run(int argc, char** argv) {
   Args args("run",
-            std::string("Run every stage on a scene directory (COLMAP or Pix4D, images under SCENE/images), reusing "
+            std::string("Run every stage on a scene directory (COLMAP, OPF or Pix4D, images under SCENE/images), reusing "
                         "stages whose inputs have not changed: label maps, features, autoencoder, photometric 3DGS, "
                         "the language fields of CityLangSplat and of the LangSplat baseline, queries for the "
                         "taxonomy's classes and, when SCENE/gt/points.ply exists, the evaluation. The city model "

@@ -20,6 +20,7 @@
 #include "georef/gps_footprint.h"
 #include "scene/colmap.h"
 #include "scene/exif_gps.h"
+#include "scene/opf.h"
 #include "scene/pix4d.h"
 #include "scene/image_loader.h"
 #include "scene/scene.h"
@@ -159,7 +160,7 @@ int scene_info(int argc, char** argv) {
 int scene_convert(int argc, char** argv) {
   Args args("scene convert", "Write a scene's cameras and poses as a COLMAP model (lossless for COLMAP input).");
   std::string dir, out, format = "bin";
-  args.positional("DIR", dir, "scene directory (COLMAP model or Pix4D project)")
+  args.positional("DIR", dir, "scene directory (COLMAP model, OPF or Pix4D project)")
       .bind("out", out, "output model directory (cameras, images, points3D are written into it)")
       .required()
       .bind("format", format, "output format: bin or txt", choice_codec({"bin", "txt"}));
@@ -167,11 +168,19 @@ int scene_convert(int argc, char** argv) {
 
   ColmapModel model;
   const std::string model_dir = find_colmap_model(dir);
+  const std::string opf = model_dir.empty() ? find_opf_project(dir) : std::string();
   if (!model_dir.empty()) {
     model = read_colmap(model_dir);
+  } else if (!opf.empty()) {  // cameras as Pix4D's, with the tie points (no tracks)
+    const OpfProject project = read_opf_project(opf);
+    model = pix4d_to_colmap(project.views, opf);
+    for (const OpfPoint& p : project.points) {
+      const uint64_t id = model.points.size() + 1;
+      model.points[id] = ColmapPoint3D{id, p.xyz, p.rgb, 0, {}};
+    }
   } else {
     const std::string pix4d = find_pix4d_calibration(dir);
-    if (pix4d.empty()) fail(dir, "no COLMAP model and no Pix4D calibrated_camera_parameters.txt found");
+    if (pix4d.empty()) fail(dir, "no COLMAP model, OPF project or Pix4D calibrated_camera_parameters.txt found");
     model = pix4d_to_colmap(read_pix4d_calibrated_cameras(pix4d), pix4d);
   }
   (format == "bin" ? write_colmap_binary : write_colmap_text)(out, model);

@@ -21,7 +21,7 @@ int cmd_train_language(int argc, char** argv) {
   int resolution = 1;
   LanguageTrainOptions o;
   o.test_every = 8;  // train-rgb's split
-  args.bind("scene", scene_dir, "scene directory (COLMAP or Pix4D) the features were computed for").required();
+  args.bind("scene", scene_dir, "scene directory (COLMAP, OPF or Pix4D) the features were computed for").required();
   language_train_options().declare(args, o);
   args.bind("baseline", baseline,
             "'langsplat': LangSplat's objective (plain L1 to the SAM targets, no CityGML term); "

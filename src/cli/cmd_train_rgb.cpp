@@ -23,7 +23,7 @@ int cmd_train_rgb(int argc, char** argv) {
   int resolution = 1;
   RgbTrainOptions o;
   o.densify_until = -1;  // auto
-  args.bind("scene", scene_dir, "scene directory (COLMAP or Pix4D, images/)").required()
+  args.bind("scene", scene_dir, "scene directory (COLMAP, OPF or Pix4D, images/)").required()
       .bind("resolution", resolution, "3DGS-style downscaling factor: 1, 2, 4 or 8").short_name("r");
   rgb_train_options().declare(args, o);
   if (!args.parse(argc, argv)) return 0;

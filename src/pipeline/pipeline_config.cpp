@@ -79,7 +79,7 @@ OptionList<PipelineConfig> make_pipeline_options() {
   using C = PipelineConfig;
   using R = OptionRole;
   OptionList<C> o;
-  o.add("scene", &C::scene_dir, "scene directory (COLMAP or Pix4D, images under SCENE_DIR/images)", R::Location)
+  o.add("scene", &C::scene_dir, "scene directory (COLMAP, OPF or Pix4D, images under SCENE_DIR/images)", R::Location)
       .positional("SCENE_DIR").per_scene()
       .add("out", &C::out_dir, "output directory", R::Location).default_text("SCENE_DIR/citylangsplat").per_scene()
       .add("city", &C::city, "city model: CityGML, CityJSON or CityJSONSeq (overrides the config)", R::Location)

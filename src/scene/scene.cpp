@@ -9,6 +9,7 @@
 #include "core/log.h"
 #include "scene/colmap.h"
 #include "scene/image_loader.h"
+#include "scene/opf.h"
 #include "scene/pix4d.h"
 #include "scene/undistort.h"
 
@@ -60,6 +61,22 @@ void load_pix4d(Scene& scene, const std::string& file, const fs::path& image_dir
   }
 }
 
+// An OPF project: per-view cameras (as Pix4D), images where its camera list says, tie points.
+void load_opf(Scene& scene, const std::string& file, const SceneOptions& options) {
+  scene.source = "opf";
+  const OpfProject project = read_opf_project(file);
+  for (size_t i = 0; i < project.views.size(); ++i) {
+    const Pix4dView& p = project.views[i];
+    const PinholeCamera loaded = loaded_camera(p.camera, p.radial_k3, options, file + " camera '" + p.name + "'");
+    SceneView v = make_view(static_cast<uint32_t>(i + 1), p.name, {}, p.camera, p.radial_k3, loaded, p.pose);
+    v.image_path = project.images[i];
+    scene.views.push_back(std::move(v));
+  }
+  uint64_t id = 0;
+  for (const OpfPoint& p : project.points)
+    scene.points.push_back(SparsePoint{++id, Vec3d{p.xyz[0], p.xyz[1], p.xyz[2]}, p.rgb, 0});
+}
+
 }  // namespace
 
 Scene load_scene(const std::string& dir, const SceneOptions& options) {
@@ -72,13 +89,16 @@ Scene load_scene(const std::string& dir, const SceneOptions& options) {
   const fs::path image_dir = root / "images";
 
   const std::string model_dir = find_colmap_model(root.string());
+  const std::string opf = model_dir.empty() ? find_opf_project(root.string()) : std::string();
   if (!model_dir.empty()) {
     load_colmap(scene, model_dir, image_dir, options);
+  } else if (!opf.empty()) {
+    load_opf(scene, opf, options);
   } else {
     const std::string pix4d = find_pix4d_calibration(root.string());
     if (pix4d.empty())
       fail(dir, "no camera model found: expected a COLMAP model (cameras/images/points3D .bin or .txt) in sparse/0, "
-                "sparse or the directory itself, or a Pix4D *calibrated_camera_parameters.txt");
+                "sparse or the directory itself, an OPF project (*.opf) or a Pix4D *calibrated_camera_parameters.txt");
     load_pix4d(scene, pix4d, image_dir, options);
   }
   // Views in name order, as 3DGS sorts them, whatever the ids.
@@ -86,7 +106,7 @@ Scene load_scene(const std::string& dir, const SceneOptions& options) {
             [](const SceneView& a, const SceneView& b) { return a.name < b.name; });
 
   if (options.check_images) {
-    if (!is_dir(image_dir)) fail(image_dir.string(), "image folder not found");
+    if (scene.source != "opf" && !is_dir(image_dir)) fail(image_dir.string(), "image folder not found");
     for (const SceneView& v : scene.views)
       if (!is_file(v.image_path)) fail(v.image_path, "image not found (view '" + v.name + "')");
   }

@@ -34,14 +34,14 @@ struct SceneOptions {
 
 struct Scene {
   std::string root;
-  std::string source;  // "colmap-bin", "colmap-txt" or "pix4d"
+  std::string source;  // "colmap-bin", "colmap-txt", "opf" or "pix4d"
   std::vector<SceneView> views;
   std::vector<SparsePoint> points;
 };
 
 // Loads a scene directory. Looks for, in order: DIR/sparse/0, DIR/sparse, DIR (COLMAP, binary
-// preferred over text), then a Pix4D calibrated_camera_parameters.txt under DIR. Images are
-// looked up under DIR/images. Distorted cameras become pinhole views (see undistort.h).
+// preferred over text), an OPF project DIR/*.opf (opf.h), then a Pix4D calibrated_camera_parameters.txt
+// under DIR. Images are looked up under DIR/images (OPF: where its camera list says). Distorted cameras become pinhole views (see undistort.h).
 // Any problem is a cls::Error naming the file and what is wrong.
 Scene load_scene(const std::string& dir, const SceneOptions& options = {});
 
