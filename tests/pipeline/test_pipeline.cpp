@@ -255,9 +255,10 @@ TEST(Pipeline, ASecondRunReusesEveryStageAndChangedInputsRedoExactlyTheirDependa
   // The stages in the order they ran, each with its time.
   std::vector<std::string> order;
   for (const auto& s : record["stages"]) order.push_back(s.get<std::string>());
-  std::vector<std::string> expected = {"align"};
+  std::vector<std::string> expected = {"georef", "align"};
   expected.insert(expected.end(), kAllStages.begin(), kAllStages.end());
   EXPECT_EQ(order, expected);
+  EXPECT_EQ(status(record, "georef"), "skipped: a city transform is given") << "synth's scene.json names one";
 
   const auto stamp_time = fs::last_write_time(RunLayout::stamp_in(RunLayout(out).labels()));
   ASSERT_EQ(run_pipeline(c).outcome, PipelineOutcome::Finished);

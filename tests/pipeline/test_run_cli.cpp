@@ -105,7 +105,7 @@ TEST(RunCli, TinyModelsRunEveryStageOnTheBundledExampleAndASecondRunReusesThem) 
   if (browser_status != 77) EXPECT_EQ(browser_status, 0) << browser;
   // run.json lists the stages in the order they ran, each with its wall time.
   ASSERT_TRUE(record["stages"].is_array());
-  EXPECT_EQ(record["stages"].front(), "align");
+  EXPECT_EQ(record["stages"].front(), "georef");  // skipped: the bundled example names its city transform
   for (const auto& stage : record["stages"]) {
     const std::string name = stage.get<std::string>();
     const size_t slash = name.find('/');
