@@ -29,21 +29,15 @@ CityTransform yaw_about(double degrees, Vec3d centre) {
 
 // Share of `points` within `gate` of the mesh once moved by `m`.
 double share_within(const ClosestPointQuery& mesh, const std::vector<Vec3d>& points, const CityTransform& m, double gate) {
-  std::vector<Vec3d> moved(points.size());
-  for (size_t i = 0; i < points.size(); ++i) moved[i] = m.apply(points[i]);
-  const std::vector<double> d = mesh.distances(moved);
-  return static_cast<double>(std::count_if(d.begin(), d.end(), [gate](double x) { return x <= gate; })) /
-         static_cast<double>(d.size());
+  return alignment_stats(distances_after(mesh, points, m, 1), gate).fraction_within;
 }
 
 // Mean truncated squared distance of `points` to the mesh once moved by `m` (distances capped at
 // `gate`): a robust least-squares cost that, unlike a count within the gate, still falls while points
 // approach their surfaces, so that the yaw that puts facade points on their walls wins.
 double truncated_cost(const ClosestPointQuery& mesh, const std::vector<Vec3d>& points, const CityTransform& m, double gate) {
-  std::vector<Vec3d> moved(points.size());
-  for (size_t i = 0; i < points.size(); ++i) moved[i] = m.apply(points[i]);
   double sum = 0;
-  for (double d : mesh.distances(moved)) sum += std::pow(std::min(d, gate), 2);
+  for (double d : distances_after(mesh, points, m, 1)) sum += std::pow(std::min(d, gate), 2);
   return sum / static_cast<double>(points.size());
 }
 

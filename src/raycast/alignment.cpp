@@ -24,10 +24,6 @@ AlignmentStats alignment_stats(std::vector<double> distances, double threshold) 
   return s;
 }
 
-namespace {
-
-// Distances of `points` moved by `motion` to the mesh, in city-model units: the transform scales model
-// metres into the scene frame.
 std::vector<double> distances_after(const ClosestPointQuery& mesh, std::vector<Vec3d> points,
                                     const CityTransform& motion, double scene_scale) {
   for (auto& p : points) p = motion.apply(p);
@@ -35,8 +31,6 @@ std::vector<double> distances_after(const ClosestPointQuery& mesh, std::vector<V
   for (double& d : distances) d /= scene_scale;
   return distances;
 }
-
-}  // namespace
 
 AlignmentStats check_alignment(const Scene& scene, const SceneCityModel& city, double threshold) {
   const ClosestPointQuery mesh(city.vertices, city.mesh.triangles);

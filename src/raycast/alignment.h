@@ -25,6 +25,11 @@ constexpr double kMisalignedFraction = 0.25;
 // Statistics of point-to-mesh distances; `distances` must not be empty.
 AlignmentStats alignment_stats(std::vector<double> distances, double threshold);
 
+// Distances of `points` moved by `motion` to the mesh, divided by `scene_scale` (the transform's scale of
+// model metres into the scene frame; 1 where the mesh is in model metres).
+std::vector<double> distances_after(const ClosestPointQuery& mesh, std::vector<Vec3d> points,
+                                    const CityTransform& motion, double scene_scale);
+
 // Distance of every sparse point of `scene` to the nearest triangle of the city mesh, in
 // city-model units (scene distances divided by the transform's scale); the scene must have points.
 AlignmentStats check_alignment(const Scene& scene, const SceneCityModel& city, double threshold);
