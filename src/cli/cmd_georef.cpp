@@ -3,7 +3,10 @@
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "citymodel/city_model.h"
 #include "cli/commands.h"
@@ -60,26 +63,28 @@ int cmd_georef(int argc, char** argv) {
   const Scene scene = load_scene(scene_dir);
   const SemanticMesh mesh = load_city_model(city_path, load_taxonomy(model), model.lod);
   if (mesh.num_triangles() == 0) fail(city_path, "the city model has no triangles at the requested LoD");
-  const bool has_truth = !truth_path.empty();
-  const CityTransform truth = has_truth ? read_city_transform(truth_path) : CityTransform{};
+  // Read before the work, so that a bad --truth fails first.
+  const std::optional<CityTransform> truth =
+      truth_path.empty() ? std::nullopt : std::optional<CityTransform>(read_city_transform(truth_path));
   const GeorefResult r = georeference(scene, scene_gps(scene), mesh, o, "georef");
   write_city_transform(out, r.transform);
 
-  nlohmann::json j = r.record;
-  j["out"] = out;
-  if (has_truth)
-    j["error_to_truth"] = {{"gps", difference_json(transform_difference(r.from_gps, truth, mesh))},
-                           {"searched", difference_json(transform_difference(r.searched, truth, mesh))},
-                           {"final", difference_json(transform_difference(r.transform, truth, mesh))}};
+  // Each step's transform against the truth, as (label, JSON key, difference).
+  std::vector<std::tuple<const char*, const char*, TransformDifference>> errors;
+  if (truth)
+    errors = {{"from GPS:    ", "gps", transform_difference(r.from_gps, *truth, mesh)},
+              {"after search:", "searched", transform_difference(r.searched, *truth, mesh)},
+              {"final:       ", "final", transform_difference(r.transform, *truth, mesh)}};
   if (json) {
+    nlohmann::json j = r.record;
+    j["out"] = out;
+    for (const auto& [label, key, d] : errors) j["error_to_truth"][key] = difference_json(d);
     std::printf("%s\n", j.dump().c_str());
     return kExitOk;
   }
-  if (has_truth) {
-    std::printf("error to truth  from GPS:      %s\n", describe(transform_difference(r.from_gps, truth, mesh)).c_str());
-    std::printf("                after search:  %s\n", describe(transform_difference(r.searched, truth, mesh)).c_str());
-    std::printf("                final:         %s\n", describe(transform_difference(r.transform, truth, mesh)).c_str());
-  }
+  for (size_t i = 0; i < errors.size(); ++i)
+    std::printf("%s %s  %s\n", i == 0 ? "error to truth " : "               ", std::get<0>(errors[i]),
+                describe(std::get<2>(errors[i])).c_str());
   std::printf("wrote %s\n", out.c_str());
   return kExitOk;
 }
