@@ -1,0 +1,43 @@
+#pragma once
+// ASPRS LAS point clouds (versions 1.0-1.4, point data record formats 0-10, uncompressed): the
+// densified clouds PIX4Dmapper, Metashape and most LiDAR sources export. A small reader of our own:
+// no Debian 12 package reads LAS (liblas left Debian; PDAL and LASzip are not among the packages
+// apt finds here), and the format is a fixed binary layout (ASPRS LAS 1.4 R15, tables 3-17).
+// Compressed LAZ is refused with what to run instead.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/math.h"
+
+namespace cls {
+
+struct LasHeader {
+  int version_major = 1, version_minor = 2;
+  int point_format = 0;           // 0-10
+  uint32_t record_length = 0;     // bytes per point (the format's minimum plus extra bytes)
+  uint64_t point_count = 0;
+  uint32_t point_offset = 0;      // byte offset of the first point
+  Vec3d scale{}, offset{};        // coordinate = integer * scale + offset
+  Vec3d min{}, max{};             // the header's bounding box
+  bool has_rgb = false;
+};
+
+struct LasPoints {
+  LasHeader header;
+  std::vector<Vec3d> xyz;
+  std::vector<std::array<uint8_t, 3>> rgb;  // 8 bit (16-bit LAS colours scaled); empty without colour
+  std::vector<uint8_t> classification;      // ASPRS class per point
+};
+
+// Parses a whole LAS file held in memory, keeping every `stride`-th point (1 = all); `name` (the
+// file) prefixes every error. A header that promises more points than the file holds, an unknown
+// point format, LAZ, or a coordinate that is not finite is a cls::Error.
+LasPoints parse_las(std::string_view bytes, const std::string& name, uint64_t stride = 1);
+// Reads the header only, then the points as parse_las does.
+LasHeader read_las_header(const std::string& path);
+LasPoints read_las(const std::string& path, uint64_t stride = 1);
+
+}  // namespace cls
