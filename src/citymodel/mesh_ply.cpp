@@ -1,6 +1,7 @@
 #include "citymodel/mesh_ply.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -107,15 +108,16 @@ void write_mesh_ply(const std::string& path, const SemanticMesh& mesh, const Tax
   log_info(cat("wrote ", path, ": ", mesh.vertices.size(), " vertices, ", mesh.num_triangles(), " triangles"));
 }
 
-ColouredMesh read_mesh_ply(const std::string& path) {
-  const std::string bytes = read_text_file(path);
+ColouredMesh read_mesh_ply(const std::string& path) { return parse_mesh_ply(read_text_file(path), path); }
+
+ColouredMesh parse_mesh_ply(std::string_view bytes, const std::string& path) {
   const size_t end = bytes.find("end_header\n");
   if (bytes.rfind("ply\nformat binary_little_endian 1.0\n", 0) != 0 || end == std::string::npos)
     fail(path, "not a binary little-endian PLY");
   // The header without its comments must be exactly write_mesh_ply's, up to the counts.
   std::string header, line;
   size_t vertices = 0, faces = 0;
-  std::istringstream in(bytes.substr(0, end));
+  std::istringstream in(std::string(bytes.substr(0, end)));
   while (std::getline(in, line)) {
     if (line.rfind("comment ", 0) == 0) continue;
     if (std::sscanf(line.c_str(), "element vertex %zu", &vertices) == 1) line = "element vertex N";
@@ -126,15 +128,18 @@ ColouredMesh read_mesh_ply(const std::string& path) {
                                kVertexProperties + "element face N\n" + kFaceProperties;
   if (header != expected) fail(path, "not a semantic-mesh PLY of `citymodel export` / `raycast` (other properties)");
   const size_t body = end + std::strlen("end_header\n");
-  if (vertices > (bytes.size() - body) / 12 || bytes.size() - body != vertices * 12 + faces * kFaceBytes)
-    fail(path, cat("truncated or oversized: ", bytes.size() - body, " bytes of data for ", vertices, " vertices and ",
+  const size_t data = bytes.size() - body;
+  if (vertices > data / 12 || faces > (data - vertices * 12) / kFaceBytes || data != vertices * 12 + faces * kFaceBytes)
+    fail(path, cat("truncated or oversized: ", data, " bytes of data for ", vertices, " vertices and ",
                    faces, " faces"));
   ColouredMesh mesh;
   const char* p = bytes.data() + body;
   mesh.vertices.resize(vertices);
-  for (Vec3f& v : mesh.vertices) {
+  for (size_t i = 0; i < vertices; ++i, p += 12) {
+    Vec3f& v = mesh.vertices[i];
     v = {get_le<float>(p), get_le<float>(p + 4), get_le<float>(p + 8)};
-    p += 12;
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+      fail(path, cat("vertex ", i, " is not finite: the file must hold finite numbers only"));
   }
   mesh.triangles.resize(faces);
   mesh.colours.resize(faces);

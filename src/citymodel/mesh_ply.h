@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "citymodel/city_transform.h"
@@ -28,7 +29,9 @@ struct ColouredMesh {
   std::vector<std::array<uint8_t, 3>> colours;  // per triangle
 };
 // cls::Error naming the file when it is not a PLY of write_mesh_ply's layout, is truncated, or a
-// face indexes beyond the vertices.
+// face indexes beyond the vertices, or a vertex is not finite.
 ColouredMesh read_mesh_ply(const std::string& path);
+// The same from the file's bytes; `path` names it in errors.
+ColouredMesh parse_mesh_ply(std::string_view bytes, const std::string& path);
 
 }  // namespace cls

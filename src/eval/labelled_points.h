@@ -15,10 +15,10 @@ struct LabelledPoints {
   size_t size() const { return positions.size(); }
 };
 
-// Reads the vertex element of a PLY file (ascii or binary_little_endian; any scalar property types;
-// other elements before/after are skipped if they come after the vertices). Needs x, y, z and the
-// integer property `class_property` (default "class"). cls::Error naming the file on malformed or
-// truncated input or missing properties.
+// Reads the vertex element of a PLY file (core/ply.h: ascii or binary_little_endian; any scalar types;
+// elements after the vertices are skipped). Needs x, y, z (finite) and the integer property
+// `class_property` (default "class"). cls::Error naming the file on malformed or truncated input,
+// NaN or infinite coordinates, or missing properties.
 LabelledPoints read_labelled_points(const std::string& path, const std::string& class_property = "class");
 
 // Binary little-endian PLY with float x y z and int `class`, written atomically (tests and tools).

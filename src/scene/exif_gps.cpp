@@ -92,20 +92,28 @@ GpsExtent gps_extent(const std::vector<GpsFix>& fixes) {
   return e;
 }
 
-std::optional<GpsFix> read_exif_gps(const std::string& path) {
+namespace {
+
+// The EXIF of an image libexiv2 opens from `source` (a path, or bytes and their size), nullopt for a
+// format it does not know (PPM, EXR, ...: no EXIF it could read); its errors name `name`.
+template <class... Source>
+std::optional<Exiv2::ExifData> exif_of(const std::string& name, const Source&... source) {
   mute_exiv2();
-  Exiv2::ExifData exif;
   try {
-    // A format libexiv2 does not know (PPM, EXR, ...) carries no EXIF it could read: no position.
-    if (Exiv2::ImageFactory::getType(path) == Exiv2::ImageType::none) return std::nullopt;
-    auto image = Exiv2::ImageFactory::open(path);
+    if (Exiv2::ImageFactory::getType(source...) == Exiv2::ImageType::none) return std::nullopt;
+    auto image = Exiv2::ImageFactory::open(source...);
     image->readMetadata();
-    exif = image->exifData();
+    return image->exifData();
   } catch (const Exiv2::Error& e) {
-    fail(path, std::string("cannot read the image's metadata (libexiv2): ") + e.what());
+    fail(name, std::string("cannot read the image's metadata (libexiv2): ") + e.what());
   } catch (const std::exception& e) {  // libexiv2 throws std:: exceptions too on damaged files
-    fail(path, std::string("cannot read the image's metadata (libexiv2): ") + e.what());
+    fail(name, std::string("cannot read the image's metadata (libexiv2): ") + e.what());
   }
+}
+
+std::optional<GpsFix> gps_of(const std::string& path, const std::optional<Exiv2::ExifData>& data) {
+  if (!data) return std::nullopt;
+  const Exiv2::ExifData& exif = *data;
   const Exiv2::Exifdatum* lat = find(exif, "Exif.GPSInfo.GPSLatitude");
   const Exiv2::Exifdatum* lon = find(exif, "Exif.GPSInfo.GPSLongitude");
   if (!lat && !lon) return std::nullopt;
@@ -132,6 +140,14 @@ std::optional<GpsFix> read_exif_gps(const std::string& path) {
     fix.map_datum.erase(fix.map_datum.find_last_not_of(std::string(" \0", 2)) + 1);
   }
   return fix;
+}
+
+}  // namespace
+
+std::optional<GpsFix> read_exif_gps(const std::string& path) { return gps_of(path, exif_of(path, path)); }
+
+std::optional<GpsFix> parse_exif_gps(std::string_view bytes, const std::string& name) {
+  return gps_of(name, exif_of(name, reinterpret_cast<const Exiv2::byte*>(bytes.data()), static_cast<long>(bytes.size())));
 }
 
 namespace {

@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace cls {
@@ -32,6 +33,8 @@ GpsExtent gps_extent(const std::vector<GpsFix>& fixes);
 // or out of range: a missing or unknown N/S/E/W reference, a zero denominator, minutes or seconds of
 // 60 and more, a latitude over 90 or a longitude over 180 degrees.
 std::optional<GpsFix> read_exif_gps(const std::string& path);
+// The same from an image file held in memory; `name` (the file) prefixes every error.
+std::optional<GpsFix> parse_exif_gps(std::string_view bytes, const std::string& name);
 
 // Writes `fix` into the image's EXIF as a GPS receiver does (degrees, minutes and seconds to 1e-4",
 // about 3 mm; altitude to the millimetre with its reference; GPSMapDatum when set), keeping its other

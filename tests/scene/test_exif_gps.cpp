@@ -41,6 +41,11 @@ TEST(ExifGps, DegreesMinutesSecondsAndReferencesGiveSignedDegrees) {
     ASSERT_TRUE(fix->altitude.has_value());
     EXPECT_DOUBLE_EQ(*fix->altitude, 35.5);
     EXPECT_EQ(fix->map_datum, "WGS-84");
+    const auto from_memory = parse_exif_gps(read_text_file(dir / name), name);
+    ASSERT_TRUE(from_memory.has_value());
+    EXPECT_EQ(from_memory->latitude, fix->latitude);
+    EXPECT_EQ(from_memory->longitude, fix->longitude);
+    EXPECT_EQ(from_memory->altitude, fix->altitude);
   }
   // South, west, below sea level; a position without altitude.
   auto south = with(with(with(kParis, "Exif.GPSInfo.GPSLatitudeRef", "S"), "Exif.GPSInfo.GPSLongitudeRef", "W"),
@@ -92,6 +97,8 @@ TEST(ExifGps, MalformedOrOutOfRangeTagsNameTheFileAndTheTag) {
   for (const auto& [tags, message] : cases) {
     const fs::path path = test::photo_with_exif(dir, "bad" + std::to_string(k++) + ".jpg", tags);
     test::expect_error([&] { read_exif_gps(path.string()); }, {path.string() + ": EXIF", message});
+    // the same file from memory (what the fuzzer feeds)
+    test::expect_error([&] { parse_exif_gps(read_text_file(path), "memory.jpg"); }, {"memory.jpg: EXIF", message});
   }
   const fs::path text = dir / "notes.jpg";
   write_text_atomic(text, "not an image");
