@@ -1,6 +1,7 @@
 #include "scene/scene.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 
@@ -11,6 +12,7 @@
 #include "scene/image_loader.h"
 #include "scene/opf.h"
 #include "scene/pix4d.h"
+#include "scene/pix4d_project.h"
 #include "scene/undistort.h"
 
 namespace cls {
@@ -51,14 +53,44 @@ void load_colmap(Scene& scene, const std::string& model_dir, const fs::path& ima
     scene.points.push_back(SparsePoint{id, Vec3d{p.xyz[0], p.xyz[1], p.xyz[2]}, p.rgb, p.error});
 }
 
-// Pix4D calibrates every image separately, so each view has its own camera.
-void load_pix4d(Scene& scene, const std::string& file, const fs::path& image_dir, const SceneOptions& options) {
+// The cloud must lie where the cameras are: a cloud in another frame (an offset not subtracted, another
+// CRS) would start the Gaussians far away from everything the photos see.
+void check_cloud_near_cameras(const Scene& scene, const std::vector<std::string>& files) {
+  if (scene.points.empty() || scene.views.empty()) return;
+  Vec3d lo{INFINITY, INFINITY, INFINITY}, hi = -lo, mean{};
+  for (const SceneView& v : scene.views) {
+    const Vec3d c = v.pose.center();
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], c[k]), hi[k] = std::max(hi[k], c[k]);
+    mean = mean + c * (1.0 / scene.views.size());
+  }
+  std::vector<double> d;
+  for (const SparsePoint& p : scene.points) d.push_back(norm(p.xyz - mean));
+  std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
+  const double spread = norm(hi - lo), median = d[d.size() / 2];
+  if (median > 10 * spread + 1000)
+    fail(files.front(), cat("the point cloud lies ", median, " from the cameras (which span ", spread,
+                            "): is it in the project's output CRS, with the offset in *_offset.xyz?"));
+}
+
+// Pix4D calibrates every image separately, so each view has its own camera. The project's densified cloud,
+// when there is one, gives the points; its offset and output CRS, the frame.
+void load_pix4d(Scene& scene, const Pix4dProject& project, const fs::path& image_dir, const SceneOptions& options) {
   scene.source = "pix4d";
+  const std::string& file = project.calibration;
   uint32_t id = 0;
   for (const Pix4dView& p : read_pix4d_calibrated_cameras(file)) {
     const PinholeCamera loaded = loaded_camera(p.camera, p.radial_k3, options, file + " camera '" + p.name + "'");
     scene.views.push_back(make_view(++id, p.name, image_dir, p.camera, p.radial_k3, loaded, p.pose));
   }
+  if (!project.offset_file.empty() || !project.crs_file.empty())
+    scene.frame = SceneFrame{project.crs, 1, -project.offset, project.offset_file.empty() ? project.crs_file : project.offset_file};
+  if (project.clouds.empty()) return;
+  const PointCloud cloud = read_pix4d_cloud(project, options.max_cloud_points);
+  for (size_t i = 0; i < cloud.xyz.size(); ++i) scene.points.push_back(SparsePoint{i + 1, cloud.xyz[i], cloud.rgb[i], 0});
+  check_cloud_near_cameras(scene, project.clouds);
+  log_info(cat("scene: ", scene.points.size(), " of the ", cloud.total, " points of the densified cloud (",
+               project.clouds.size(), " file(s) from ", project.clouds.front(), ")",
+               scene.points.size() < cloud.total ? cat("; thinned to at most ", options.max_cloud_points) : ""));
 }
 
 // An OPF project: per-view cameras (as Pix4D), images where its camera list says, tie points.
@@ -75,6 +107,15 @@ void load_opf(Scene& scene, const std::string& file, const SceneOptions& options
   uint64_t id = 0;
   for (const OpfPoint& p : project.points)
     scene.points.push_back(SparsePoint{++id, Vec3d{p.xyz[0], p.xyz[1], p.xyz[2]}, p.rgb, 0});
+  // The processing CRS is base_to_canonical of the CRS: a similarity only without swap_xy (a
+  // reflection) and with one scale for all axes.
+  const OpfReferenceFrame& f = project.frame;
+  if (f.crs.empty()) return;
+  if (f.swap_xy || f.scale[0] != f.scale[1] || f.scale[0] != f.scale[2] || !(f.scale[0] > 0))
+    log_warn(cat(file, ": the scene reference frame swaps x and y or scales the axes differently; its CRS is not "
+                       "used as the scene's frame"));
+  else
+    scene.frame = SceneFrame{f.crs, f.scale[0], Vec3d{f.shift[0], f.shift[1], f.shift[2]}, file};
 }
 
 }  // namespace
@@ -95,8 +136,8 @@ Scene load_scene(const std::string& dir, const SceneOptions& options) {
   } else if (!opf.empty()) {
     load_opf(scene, opf, options);
   } else {
-    const std::string pix4d = find_pix4d_calibration(root.string());
-    if (pix4d.empty())
+    const Pix4dProject pix4d = find_pix4d_project(root.string());
+    if (pix4d.calibration.empty())
       fail(dir, "no camera model found: expected a COLMAP model (cameras/images/points3D .bin or .txt) in sparse/0, "
                 "sparse or the directory itself, an OPF project (*.opf) or a Pix4D *calibrated_camera_parameters.txt");
     load_pix4d(scene, pix4d, image_dir, options);

@@ -2,6 +2,7 @@
 // A calibrated scene: undistorted pinhole views with poses, sparse points, and lazily loaded images.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,18 @@ struct SceneOptions {
   int resolution_factor = 1;  // 3DGS-style -r 1|2|4|8: divide the image size by this
   int target_width = 0;       // alternatively: resize so that width == target_width (0 = off)
   bool check_images = true;   // fail early if an image file is missing
+  // A densified cloud (PIX4Dmapper) is thinned to this many points (every k-th): the Gaussians
+  // start from it, and 3DGS scenes start from 0.1-1 M points.
+  uint64_t max_cloud_points = 1000000;
+};
+
+// Where the scene frame lies in a CRS, when its source says so: scene = scale * crs + shift.
+// PIX4Dmapper: its offset (scale 1, shift -offset) and output CRS; OPF: the scene reference frame.
+struct SceneFrame {
+  std::string crs;     // as the source writes it (WKT, EPSG:N, ...); "" when it names none
+  double scale = 1;
+  Vec3d shift{};
+  std::string source;  // the file that says so
 };
 
 struct Scene {
@@ -37,11 +50,14 @@ struct Scene {
   std::string source;  // "colmap-bin", "colmap-txt", "opf" or "pix4d"
   std::vector<SceneView> views;
   std::vector<SparsePoint> points;
+  std::optional<SceneFrame> frame;
 };
 
 // Loads a scene directory. Looks for, in order: DIR/sparse/0, DIR/sparse, DIR (COLMAP, binary
 // preferred over text), an OPF project DIR/*.opf (opf.h), then a Pix4D calibrated_camera_parameters.txt
-// under DIR. Images are looked up under DIR/images (OPF: where its camera list says). Distorted cameras become pinhole views (see undistort.h).
+// under DIR (with the project's offset, output CRS and densified cloud: pix4d_project.h). Images are
+// looked up under DIR/images (OPF: where its camera list says). Distorted cameras become pinhole views
+// (see undistort.h).
 // Any problem is a cls::Error naming the file and what is wrong.
 Scene load_scene(const std::string& dir, const SceneOptions& options = {});
 
