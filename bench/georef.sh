@@ -56,7 +56,7 @@ for s in $scenes; do
 import json, sys
 name, seed, err, secs, out = sys.argv[1:6]
 j = json.loads(out)["error_to_truth"]
-g, s, f = j["gps"], j["searched"], j["final"]
+g, s, f = j["start"], j["searched"], j["final"]
 ok = f["max_displacement"] <= 0.03 and f["rotation_deg"] <= 0.05
 print(f'{name:<10} {seed:<4} {err:<36} {g["max_displacement"]:9.3f} {s["max_displacement"]:9.3f} '
       f'{f["max_displacement"]:9.4f} {f["rotation_deg"]:9.4f} {"yes" if ok else "NO":>6} {secs:>7}')

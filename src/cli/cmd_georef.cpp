@@ -1,5 +1,5 @@
-// citylangsplat georef: the city transform from the photos' EXIF GPS, the city mesh and ICP, with no
-// transform given (pipeline/georeferencing.h).
+// citylangsplat georef: the city transform from the frame a Pix4D/OPF project names or the photos' EXIF
+// GPS, the city mesh and ICP, with no transform given (pipeline/georeferencing.h).
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -27,9 +27,10 @@ int cmd_georef(int argc, char** argv) {
             "ellipsoid to EGM96 where proj-data has its grid), the camera centres fitted to them robustly (least "
             "median of squares: phones' outliers are rejected), then the vertical offset (ellipsoidal or sea-level "
             "heights, the phone's bias) and, when the cameras' spread is short against the GPS noise, the yaw "
-            "searched so that most sparse points lie on the city mesh, and last align's ICP. Prints each step; "
-            "writes the transform to --out. See docs/alignment.md.");
-  std::string scene_dir, city_path, out, truth_path;
+            "searched so that most sparse points lie on the city mesh, and last align's ICP. A PIX4Dmapper project "
+            "with its offset and output CRS, or an OPF project with a scene reference frame, starts from that "
+            "frame instead (--from). Prints each step; writes the transform to --out. See docs/alignment.md.");
+  std::string scene_dir, city_path, out, truth_path, from = "auto";
   CityModelOptions model;
   GeorefOptions o;
   bool json = false, no_icp = false;
@@ -40,6 +41,9 @@ int cmd_georef(int argc, char** argv) {
       .bind("crs", o.crs, "the city model's CRS when its file names none or another (EPSG:N; default: its srsName / "
                           "referenceSystem)")
       .bind("out", out, "where to write the transform JSON (city CRS -> scene)").required()
+      .bind("from", from, "the start: the frame the project names (frame), the photos' GPS (gps), or auto (the "
+                          "frame where the scene has one)", choice_codec({"auto", "frame", "gps"}))
+      .bind("frame-shift-range", o.frame_shift_range, "--from frame: metres searched horizontally about the frame")
       .bind("vertical-range", o.vertical_range, "metres searched above and below the GPS heights")
       .bind("search-gate", o.search_gate, "metres: a sparse point counts as on the model within this in the search")
       .flag("no-icp", no_icp, "stop after the search (no ICP)")
@@ -58,6 +62,8 @@ int cmd_georef(int argc, char** argv) {
   if (!(o.vertical_range >= 0 && std::isfinite(o.vertical_range)))
     throw UsageError("georef: --vertical-range must be a non-negative number");
   if (!(o.search_gate > 0 && std::isfinite(o.search_gate))) throw UsageError("georef: --search-gate must be positive");
+  if (!(o.frame_shift_range >= 0 && std::isfinite(o.frame_shift_range)))
+    throw UsageError("georef: --frame-shift-range must be a non-negative number");
   if (!(o.threshold >= 0 && std::isfinite(o.threshold))) throw UsageError("georef: --distance must be a non-negative number");
 
   const Scene scene = load_scene(scene_dir);
@@ -66,13 +72,16 @@ int cmd_georef(int argc, char** argv) {
   // Read before the work, so that a bad --truth fails first.
   const std::optional<CityTransform> truth =
       truth_path.empty() ? std::nullopt : std::optional<CityTransform>(read_city_transform(truth_path));
-  const GeorefResult r = georeference(scene, scene_gps(scene), mesh, o, "georef");
+  const GeorefResult r = from == "frame" || (from == "auto" && scene.frame)
+                             ? georeference_frame(scene, mesh, o, "georef")
+                             : georeference(scene, scene_gps(scene), mesh, o, "georef");
   write_city_transform(out, r.transform);
 
   // Each step's transform against the truth, as (label, JSON key, difference).
   std::vector<std::tuple<const char*, const char*, TransformDifference>> errors;
   if (truth)
-    errors = {{"from GPS:    ", "gps", transform_difference(r.from_gps, *truth, mesh)},
+    errors = {{r.record.value("start", "") == "frame" ? "from frame:  " : "from GPS:    ", "start",
+               transform_difference(r.start, *truth, mesh)},
               {"after search:", "searched", transform_difference(r.searched, *truth, mesh)},
               {"final:       ", "final", transform_difference(r.transform, *truth, mesh)}};
   if (json) {

@@ -11,11 +11,6 @@
 namespace cls {
 namespace {
 
-// The CRS object of EPSG:`code` from PROJ's database, nullptr when it has none.
-PJ* create_epsg(PJ_CONTEXT* context, int code) {
-  return proj_create(context, ("EPSG:" + std::to_string(code)).c_str());
-}
-
 // PROJ logs failed look-ups to stderr; our errors say what went wrong instead.
 PJ_CONTEXT* quiet_context() {
   PJ_CONTEXT* context = proj_context_create();
@@ -27,7 +22,7 @@ PJ_CONTEXT* quiet_context() {
 
 std::optional<bool> is_vertical_crs(int code) {
   PJ_CONTEXT* context = quiet_context();
-  PJ* crs = create_epsg(context, code);
+  PJ* crs = proj_create(context, ("EPSG:" + std::to_string(code)).c_str());
   std::optional<bool> vertical;
   if (crs && proj_is_crs(crs)) vertical = proj_get_type(crs) == PJ_TYPE_VERTICAL_CRS;
   proj_destroy(crs);
@@ -35,54 +30,77 @@ std::optional<bool> is_vertical_crs(int code) {
   return vertical;
 }
 
-GpsProjection::GpsProjection(int epsg) : epsg_(epsg), context_(quiet_context()) {
-  const std::string name = "EPSG:" + std::to_string(epsg);
-  PJ* target = create_epsg(context_, epsg);
-  if (!target || !proj_is_crs(target)) {
-    proj_destroy(target);
-    proj_context_destroy(context_);
-    throw Error(cat(name, ": PROJ's database (proj-data) has no such coordinate reference system"));
+CrsTransform::CrsTransform(const std::string& from, const std::string& to, const std::string& purpose)
+    : context_(quiet_context()) {
+  std::string problem;
+  // The horizontal part of a CRS given as PROJ reads it (EPSG:N, WKT, PROJJSON, ...); nullptr and
+  // `problem` set when there is none.
+  auto horizontal = [&](const std::string& definition) -> PJ* {
+    PJ* crs = proj_create(context_, definition.c_str());
+    if (!crs || !proj_is_crs(crs)) {
+      proj_destroy(crs);
+      problem = cat(definition, ": PROJ (and its database, proj-data) does not know this coordinate reference system");
+      return nullptr;
+    }
+    if (proj_get_type(crs) == PJ_TYPE_COMPOUND_CRS) {  // e.g. 7415: RD New + NAP height
+      PJ* first = proj_crs_get_sub_crs(context_, crs, 0);
+      proj_destroy(crs);
+      crs = first;
+    }
+    if (!crs || proj_get_type(crs) == PJ_TYPE_VERTICAL_CRS) {
+      proj_destroy(crs);
+      problem = cat(definition, " is a vertical CRS: ", purpose, " need one with horizontal axes");
+      return nullptr;
+    }
+    return crs;
+  };
+  PJ* source = horizontal(from);
+  PJ* target = source ? horizontal(to) : nullptr;
+  if (source && target) {
+    PJ* raw = proj_create_crs_to_crs_from_pj(context_, source, target, nullptr, nullptr);
+    // The axis order a GIS shows (longitude first; easting first): what forward() hands in and out.
+    transform_ = raw ? proj_normalize_for_visualization(context_, raw) : nullptr;
+    proj_destroy(raw);
+    if (!transform_) problem = cat("PROJ has no transformation from ", from, " to ", to);
   }
-  if (proj_get_type(target) == PJ_TYPE_COMPOUND_CRS) {  // e.g. 7415: RD New + NAP height
-    PJ* horizontal = proj_crs_get_sub_crs(context_, target, 0);
-    proj_destroy(target);
-    target = horizontal;
-  }
-  if (!target || proj_get_type(target) == PJ_TYPE_VERTICAL_CRS) {
-    proj_destroy(target);
-    proj_context_destroy(context_);
-    throw Error(cat(name, " is a vertical CRS: the photos' positions need one with horizontal axes"));
-  }
-  PJ* wgs84 = create_epsg(context_, 4326);
-  PJ* raw = proj_create_crs_to_crs_from_pj(context_, wgs84, target, nullptr, nullptr);
-  // The axis order a GIS shows (longitude first; easting first): what project() hands in and out.
-  transform_ = raw ? proj_normalize_for_visualization(context_, raw) : nullptr;
-  proj_destroy(raw);
-  proj_destroy(wgs84);
+  proj_destroy(source);
   proj_destroy(target);
   if (!transform_) {
     proj_context_destroy(context_);
-    throw Error(cat(name, ": PROJ has no transformation from WGS 84 (EPSG:4326) to it"));
+    throw Error(problem);
   }
 }
 
-GpsProjection::~GpsProjection() {
+CrsTransform::~CrsTransform() {
   proj_destroy(transform_);
   proj_context_destroy(context_);
 }
 
+std::optional<std::array<double, 2>> CrsTransform::forward(double x, double y) const {
+  const PJ_COORD out = proj_trans(transform_, PJ_FWD, proj_coord(x, y, 0, 0));
+  if (!std::isfinite(out.xy.x) || !std::isfinite(out.xy.y)) return std::nullopt;
+  return std::array<double, 2>{out.xy.x, out.xy.y};
+}
+
+std::optional<std::array<double, 2>> CrsTransform::inverse(double x, double y) const {
+  const PJ_COORD out = proj_trans(transform_, PJ_INV, proj_coord(x, y, 0, 0));
+  if (!std::isfinite(out.xy.x) || !std::isfinite(out.xy.y)) return std::nullopt;
+  return std::array<double, 2>{out.xy.x, out.xy.y};
+}
+
+GpsProjection::GpsProjection(int epsg)
+    : epsg_(epsg), wgs84_to_crs_("EPSG:4326", "EPSG:" + std::to_string(epsg), "the photos' positions") {}
+
 std::array<double, 2> GpsProjection::project(double latitude, double longitude) const {
-  const PJ_COORD out = proj_trans(transform_, PJ_FWD, proj_coord(longitude, latitude, 0, 0));
-  if (!std::isfinite(out.xy.x) || !std::isfinite(out.xy.y))
-    throw Error(cat("EPSG:", epsg_, ": the GPS position ", latitude, ", ", longitude, " lies outside what it can represent"));
-  return {out.xy.x, out.xy.y};
+  const auto xy = wgs84_to_crs_.forward(longitude, latitude);
+  if (!xy) throw Error(cat("EPSG:", epsg_, ": the GPS position ", latitude, ", ", longitude, " lies outside what it can represent"));
+  return *xy;
 }
 
 std::array<double, 2> GpsProjection::unproject(double x, double y) const {
-  const PJ_COORD out = proj_trans(transform_, PJ_INV, proj_coord(x, y, 0, 0));
-  if (!std::isfinite(out.lp.lam) || !std::isfinite(out.lp.phi))
-    throw Error(cat("EPSG:", epsg_, ": the position ", x, ", ", y, " has no latitude and longitude"));
-  return {out.lp.phi, out.lp.lam};  // normalized for visualization: longitude first, in degrees
+  const auto lonlat = wgs84_to_crs_.inverse(x, y);
+  if (!lonlat) throw Error(cat("EPSG:", epsg_, ": the position ", x, ", ", y, " has no latitude and longitude"));
+  return {(*lonlat)[1], (*lonlat)[0]};
 }
 
 Egm96Geoid::Egm96Geoid() : context_(quiet_context()) {

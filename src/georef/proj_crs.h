@@ -1,8 +1,9 @@
 #pragma once
 // Coordinate reference systems through PROJ (Debian's libproj-dev and its EPSG database): the
-// photos' WGS 84 GPS positions in a city model's projected CRS.
+// photos' WGS 84 GPS positions, and a photogrammetry project's output CRS, in a city model's CRS.
 #include <array>
 #include <optional>
+#include <string>
 
 // PROJ's handles, declared here so that only proj_crs.cpp includes <proj.h>.
 struct pj_ctx;
@@ -14,16 +15,33 @@ namespace cls {
 // geographic, compound); nullopt for a code PROJ's database does not hold.
 std::optional<bool> is_vertical_crs(int code);
 
+// x, y of one CRS -> x, y of another through PROJ (of compound CRSs their horizontal parts), in the
+// axis order a GIS shows (longitude first; easting first). Heights are not converted: which vertical
+// datum a height is in is for the georeferencing to find out.
+class CrsTransform {
+ public:
+  // `from`, `to`: as PROJ reads them (EPSG:N, WKT, PROJJSON). cls::Error for a CRS PROJ does not
+  // know, a vertical CRS (`purpose` says what needed a horizontal one), or no transformation.
+  CrsTransform(const std::string& from, const std::string& to, const std::string& purpose);
+  ~CrsTransform();
+  CrsTransform(const CrsTransform&) = delete;
+  CrsTransform& operator=(const CrsTransform&) = delete;
+
+  // nullopt for a position the target cannot represent (PROJ returns infinity there).
+  std::optional<std::array<double, 2>> forward(double x, double y) const;
+  std::optional<std::array<double, 2>> inverse(double x, double y) const;
+
+ private:
+  pj_ctx* context_ = nullptr;
+  PJconsts* transform_ = nullptr;
+};
+
 // WGS 84 latitude / longitude (degrees) -> easting / northing (or the CRS's own x, y in the order a
-// GIS shows them) of EPSG:`epsg`; of a compound CRS its horizontal part. Heights are not converted:
-// which vertical datum a phone's altitude is in is for the georeferencing to find out.
+// GIS shows them) of EPSG:`epsg`; of a compound CRS its horizontal part.
 class GpsProjection {
  public:
   // cls::Error for a code PROJ does not know, a vertical CRS, or no transformation from WGS 84.
   explicit GpsProjection(int epsg);
-  ~GpsProjection();
-  GpsProjection(const GpsProjection&) = delete;
-  GpsProjection& operator=(const GpsProjection&) = delete;
 
   // cls::Error for a position the CRS cannot represent (PROJ returns infinity there).
   std::array<double, 2> project(double latitude, double longitude) const;
@@ -33,8 +51,7 @@ class GpsProjection {
 
  private:
   int epsg_;
-  pj_ctx* context_ = nullptr;
-  PJconsts* transform_ = nullptr;
+  CrsTransform wgs84_to_crs_;
 };
 
 // The EGM96 geoid's height above the WGS 84 ellipsoid (N, metres) at a position, through PROJ's

@@ -73,6 +73,119 @@ std::string metres(double m) {
   return text;
 }
 
+// Steps 3 and 4 from `start` (scene -> the model's local frame, CRS minus its origin): the search
+// against the mesh, within r.yaw_range_deg and r.horizontal_range as the start leaves them open and
+// options.vertical_range, then ICP. Sets r.searched, r.transform, the search's and ICP's fields and
+// their part of r.record.
+void search_and_refine(const Scene& scene, const SemanticMesh& mesh, const GeorefOptions& options,
+                       const std::string& context, const CityTransform& start, GeorefResult& r) {
+  const CityTransform to_local = translation({-mesh.origin[0], -mesh.origin[1], -mesh.origin[2]});
+  // Step 3: vertical offset and yaw against the mesh, the sparse points placed by the GPS similarity.
+  CityTransform searched_local = start;
+  if (scene.points.empty()) {
+    r.icp_problem = "the scene has no sparse points";
+    log_warn(cat(context, ": the scene has no sparse points: heights and yaw stay as GPS gives them, and no ICP"));
+  } else {
+    const ClosestPointQuery local_mesh(scene_vertices(mesh, to_local), mesh.triangles);
+    const size_t stride = (scene.points.size() + kSearchPoints - 1) / kSearchPoints;
+    std::vector<Vec3d> points;
+    Vec3d centre{};
+    for (size_t i = 0; i < scene.points.size(); i += stride) {
+      points.push_back(start.apply(scene.points[i].xyz));
+      centre = centre + points.back();
+    }
+    centre = (1.0 / points.size()) * centre;
+    double radius = 0;  // horizontal reach of the points about their centre
+    for (const Vec3d& p : points) radius = std::max(radius, std::hypot(p.x - centre.x, p.y - centre.y));
+    const double gate = options.search_gate;
+    const double yaw_step = radius > 0 ? std::min(5.0, (gate / 2) / radius * 180 / M_PI) : 5.0;
+    if (r.yaw_range_deg < yaw_step) r.yaw_range_deg = 0;
+    r.search_fraction_before = share_within(local_mesh, points, CityTransform::identity(), gate);
+    // Coordinate descent over the grids: the height first (the largest error), then yaw with height,
+    // then the horizontal shift, then the height finely. The scale is left to ICP: a search of it
+    // against the truncated cost prefers points spread beyond the model (FZK-Haus: +30 % from -0.4 %).
+    std::vector<Candidate> grid;
+    for (double dz : steps(-options.vertical_range, options.vertical_range, gate / 2)) grid.push_back({0, 0, 0, dz});
+    Candidate c = best_of(local_mesh, points, centre, grid, gate);
+    if (r.yaw_range_deg > 0) {
+      grid.clear();
+      for (double yaw : steps(-r.yaw_range_deg, r.yaw_range_deg, yaw_step))
+        for (double dz : steps(c.dz - 2 * gate, c.dz + 2 * gate, gate / 2)) grid.push_back({yaw, 0, 0, dz});
+      c = best_of(local_mesh, points, centre, grid, gate);
+    }
+    grid.clear();
+    for (double dx : steps(-r.horizontal_range, r.horizontal_range, gate / 2))
+      for (double dy : steps(-r.horizontal_range, r.horizontal_range, gate / 2)) grid.push_back({c.yaw, dx, dy, c.dz});
+    c = best_of(local_mesh, points, centre, grid, gate);
+    grid.clear();
+    for (double dz : steps(c.dz - gate, c.dz + gate, gate / 8)) grid.push_back({c.yaw, c.dx, c.dy, dz});
+    c = best_of(local_mesh, points, centre, grid, gate / 4);
+    r.vertical_offset = c.dz;
+    r.yaw_deg = c.yaw;
+    r.horizontal_shift = std::hypot(c.dx, c.dy);
+    const CityTransform found = c.motion(centre);
+    r.search_fraction = share_within(local_mesh, points, found, gate);
+    searched_local = found * start;
+    log_info(cat(context, ": search against the city model: vertical offset ", metres(c.dz), " (searched +-",
+                 options.vertical_range, " m)",
+                 r.yaw_range_deg > 0 ? cat(", yaw ", c.yaw, " deg (searched +-", r.yaw_range_deg, " deg)") : std::string(),
+                 ", horizontal shift ", metres(r.horizontal_shift), " (searched +-", metres(r.horizontal_range), "); ", 100 * r.search_fraction_before, "% -> ", 100 * r.search_fraction, "% of the sparse points within ",
+                 gate, " m of the model"));
+  }
+  r.searched = inverse(searched_local) * to_local;
+  r.transform = r.searched;
+
+  // Step 4: ICP from there.
+  if (!options.refine && r.icp_problem.empty()) r.icp_problem = "not asked for";
+  if (r.icp_problem.empty()) {
+    SceneCityModel placed;
+    placed.mesh = mesh;
+    placed.transform = r.searched;
+    placed.vertices = scene_vertices(mesh, placed.transform);
+    try {
+      r.icp = refine_alignment(sparse_points(scene), placed, options.icp, options.threshold);
+    } catch (const Error& e) {
+      r.icp_problem = e.what();
+    }
+    if (r.icp) {
+      const TransformDifference change = transform_difference(r.icp->refined, r.searched, mesh);
+      log_info(cat(context, ": ICP moves the model by up to ", metres(change.max_displacement), " (", change.rotation_deg,
+                   " deg, scale ", 100 * change.scale, "%); ", 100 * r.icp->before.fraction_within, "% -> ",
+                   100 * r.icp->after.fraction_within, "% of sparse points within ", options.threshold, " m, ",
+                   100 * r.icp->fine_after.fraction_within, "% within ", r.icp->fine_after.threshold, " m"));
+      // ICP may turn the model as far as the start leaves the yaw open, and a few degrees of tilt beyond.
+      const double turn = std::max(2 * r.yaw_range_deg, kIcpTrustedTurnDeg);
+      if (r.icp->icp.conditioning < kIcpWeakConditioning)
+        r.icp_problem = cat("the sparse points leave part of the motion unconstrained (conditioning ",
+                            r.icp->icp.conditioning, ")");
+      else if (change.rotation_deg > turn)
+        r.icp_problem = cat("it turns the model by ", change.rotation_deg, " deg, more than the start leaves open (", turn,
+                            " deg): it may have slid onto other surfaces, and cannot be trusted");
+      else
+        r.transform = r.icp->refined;
+    }
+    if (!r.icp_problem.empty())
+      log_warn(cat(context, ": ICP: ", r.icp_problem, "; the searched transform is kept"));
+  }
+
+  r.record["vertical_offset"] = r.vertical_offset;
+  r.record["yaw_deg"] = r.yaw_deg;
+  r.record["yaw_range_deg"] = r.yaw_range_deg;
+  r.record["horizontal_shift"] = r.horizontal_shift;
+  r.record["horizontal_range"] = r.horizontal_range;
+  r.record["search"] = {{"gate", options.search_gate},
+                        {"fraction_before", r.search_fraction_before},
+                        {"fraction_after", r.search_fraction}};
+  if (r.icp)
+    r.record["icp"] = {{"applied", r.icp_problem.empty()},
+                       {"conditioning", r.icp->icp.conditioning},
+                       {"fraction_within", r.icp->after.fraction_within},
+                       {"fraction_within_finest", r.icp->fine_after.fraction_within},
+                       {"threshold", options.threshold},
+                       {"finest", r.icp->fine_after.threshold}};
+  if (!r.icp_problem.empty()) r.record["icp_problem"] = r.icp_problem;
+}
+
 }  // namespace
 
 std::vector<std::optional<GpsFix>> scene_gps(const Scene& scene) {
@@ -135,111 +248,24 @@ GeorefResult georeference(const Scene& scene, const std::vector<std::optional<Gp
                         : cat(context, ": heights: as written (the EGM96 grid egm96_15.gtx of proj-data is not "
                                        "installed); the vertical search finds the datum"));
   const CityTransform to_local = translation({-mesh.origin[0], -mesh.origin[1], -mesh.origin[2]});
-  r.from_gps = inverse(r.gps.transform) * to_local;
+  r.start = inverse(r.gps.transform) * to_local;
 
-  // Step 3: vertical offset and yaw against the mesh, the sparse points placed by the GPS similarity.
-  CityTransform searched_local = r.gps.transform;
-  if (scene.points.empty()) {
-    r.icp_problem = "the scene has no sparse points";
-    log_warn(cat(context, ": the scene has no sparse points: heights and yaw stay as GPS gives them, and no ICP"));
-  } else {
-    const ClosestPointQuery local_mesh(scene_vertices(mesh, to_local), mesh.triangles);
-    const size_t stride = (scene.points.size() + kSearchPoints - 1) / kSearchPoints;
-    std::vector<Vec3d> points;
-    Vec3d centre{};
-    for (size_t i = 0; i < scene.points.size(); i += stride) {
-      points.push_back(r.gps.transform.apply(scene.points[i].xyz));
-      centre = centre + points.back();
-    }
-    centre = (1.0 / points.size()) * centre;
-    double radius = 0;  // horizontal reach of the points about their centre
-    for (const Vec3d& p : points) radius = std::max(radius, std::hypot(p.x - centre.x, p.y - centre.y));
-    // How far the yaw may be off: three standard errors of the GPS fit's rotation about the vertical.
-    Vec3d mean{};
-    size_t inliers = 0;
-    for (size_t i = 0; i < positions.size(); ++i)
-      if (r.gps.inlier[i]) mean = mean + positions[i], ++inliers;
-    mean = (1.0 / inliers) * mean;
-    double spread = 0;
-    for (size_t i = 0; i < positions.size(); ++i)
-      if (r.gps.inlier[i]) spread += std::pow(positions[i].x - mean.x, 2) + std::pow(positions[i].y - mean.y, 2);
-    spread = std::sqrt(spread / inliers);
-    const double gate = options.search_gate;
-    const double yaw_step = radius > 0 ? std::min(5.0, (gate / 2) / radius * 180 / M_PI) : 5.0;
-    r.yaw_range_deg = spread > 0 ? std::min(180.0, 3 * std::atan(r.gps.rms / (spread * std::sqrt(inliers))) * 180 / M_PI) : 180;
-    if (r.yaw_range_deg < yaw_step) r.yaw_range_deg = 0;
-    // How far the model may be off horizontally at the points: three standard errors of the GPS fit's
-    // centre, and a gate.
-    r.horizontal_range = std::min(options.vertical_range, 3 * r.gps.rms / std::sqrt(inliers) + gate);
-    r.search_fraction_before = share_within(local_mesh, points, CityTransform::identity(), gate);
-    // Coordinate descent over the grids: the height first (the largest error), then yaw with height,
-    // then the horizontal shift, then the height finely. The scale is left to ICP: a search of it
-    // against the truncated cost prefers points spread beyond the model (FZK-Haus: +30 % from -0.4 %).
-    std::vector<Candidate> grid;
-    for (double dz : steps(-options.vertical_range, options.vertical_range, gate / 2)) grid.push_back({0, 0, 0, dz});
-    Candidate c = best_of(local_mesh, points, centre, grid, gate);
-    if (r.yaw_range_deg > 0) {
-      grid.clear();
-      for (double yaw : steps(-r.yaw_range_deg, r.yaw_range_deg, yaw_step))
-        for (double dz : steps(c.dz - 2 * gate, c.dz + 2 * gate, gate / 2)) grid.push_back({yaw, 0, 0, dz});
-      c = best_of(local_mesh, points, centre, grid, gate);
-    }
-    grid.clear();
-    for (double dx : steps(-r.horizontal_range, r.horizontal_range, gate / 2))
-      for (double dy : steps(-r.horizontal_range, r.horizontal_range, gate / 2)) grid.push_back({c.yaw, dx, dy, c.dz});
-    c = best_of(local_mesh, points, centre, grid, gate);
-    grid.clear();
-    for (double dz : steps(c.dz - gate, c.dz + gate, gate / 8)) grid.push_back({c.yaw, c.dx, c.dy, dz});
-    c = best_of(local_mesh, points, centre, grid, gate / 4);
-    r.vertical_offset = c.dz;
-    r.yaw_deg = c.yaw;
-    r.horizontal_shift = std::hypot(c.dx, c.dy);
-    const CityTransform found = c.motion(centre);
-    r.search_fraction = share_within(local_mesh, points, found, gate);
-    searched_local = found * r.gps.transform;
-    log_info(cat(context, ": search against the city model: vertical offset ", metres(c.dz), " (searched +-",
-                 options.vertical_range, " m)",
-                 r.yaw_range_deg > 0 ? cat(", yaw ", c.yaw, " deg (searched +-", r.yaw_range_deg, " deg)") : std::string(),
-                 ", horizontal shift ", metres(r.horizontal_shift), " (searched +-", metres(r.horizontal_range), "); ", 100 * r.search_fraction_before, "% -> ", 100 * r.search_fraction, "% of the sparse points within ",
-                 gate, " m of the model"));
-  }
-  r.searched = inverse(searched_local) * to_local;
-  r.transform = r.searched;
-
-  // Step 4: ICP from there.
-  if (!options.refine && r.icp_problem.empty()) r.icp_problem = "not asked for";
-  if (r.icp_problem.empty()) {
-    SceneCityModel placed;
-    placed.mesh = mesh;
-    placed.transform = r.searched;
-    placed.vertices = scene_vertices(mesh, placed.transform);
-    try {
-      r.icp = refine_alignment(sparse_points(scene), placed, options.icp, options.threshold);
-    } catch (const Error& e) {
-      r.icp_problem = e.what();
-    }
-    if (r.icp) {
-      const TransformDifference change = transform_difference(r.icp->refined, r.searched, mesh);
-      log_info(cat(context, ": ICP moves the model by up to ", metres(change.max_displacement), " (", change.rotation_deg,
-                   " deg, scale ", 100 * change.scale, "%); ", 100 * r.icp->before.fraction_within, "% -> ",
-                   100 * r.icp->after.fraction_within, "% of sparse points within ", options.threshold, " m, ",
-                   100 * r.icp->fine_after.fraction_within, "% within ", r.icp->fine_after.threshold, " m"));
-      // ICP may turn the model as far as the GPS leaves the yaw open, and a few degrees of tilt beyond.
-      const double turn = std::max(2 * r.yaw_range_deg, kIcpTrustedTurnDeg);
-      if (r.icp->icp.conditioning < kIcpWeakConditioning)
-        r.icp_problem = cat("the sparse points leave part of the motion unconstrained (conditioning ",
-                            r.icp->icp.conditioning, ")");
-      else if (change.rotation_deg > turn)
-        r.icp_problem = cat("it turns the model by ", change.rotation_deg, " deg, more than the GPS leaves open (", turn,
-                            " deg): it may have slid onto other surfaces, and cannot be trusted");
-      else
-        r.transform = r.icp->refined;
-    }
-    if (!r.icp_problem.empty())
-      log_warn(cat(context, ": ICP: ", r.icp_problem, "; the searched transform is kept"));
-  }
-
-  r.record = {{"crs", cat("EPSG:", r.epsg)},
+  // How far the yaw may be off: three standard errors of the GPS fit's rotation about the vertical.
+  Vec3d mean{};
+  size_t inliers = 0;
+  for (size_t i = 0; i < positions.size(); ++i)
+    if (r.gps.inlier[i]) mean = mean + positions[i], ++inliers;
+  mean = (1.0 / inliers) * mean;
+  double spread = 0;
+  for (size_t i = 0; i < positions.size(); ++i)
+    if (r.gps.inlier[i]) spread += std::pow(positions[i].x - mean.x, 2) + std::pow(positions[i].y - mean.y, 2);
+  spread = std::sqrt(spread / inliers);
+  r.yaw_range_deg = spread > 0 ? std::min(180.0, 3 * std::atan(r.gps.rms / (spread * std::sqrt(inliers))) * 180 / M_PI) : 180;
+  // How far the model may be off horizontally at the points: three standard errors of the GPS fit's
+  // centre, and a gate.
+  r.horizontal_range = std::min(options.vertical_range, 3 * r.gps.rms / std::sqrt(inliers) + options.search_gate);
+  r.record = {{"start", "gps"},
+              {"crs", cat("EPSG:", r.epsg)},
               {"images", r.images},
               {"fixes", r.fixes},
               {"without_altitude", r.without_altitude},
@@ -249,23 +275,62 @@ GeorefResult georeference(const Scene& scene, const std::vector<std::optional<Gp
               {"gps_rms", r.gps.rms},
               {"scene_scale", r.gps.transform.scale()},
               {"geoid", r.undulation ? nlohmann::json("EGM96") : nlohmann::json(nullptr)},
-              {"undulation", r.undulation ? nlohmann::json(*r.undulation) : nlohmann::json(nullptr)},
-              {"vertical_offset", r.vertical_offset},
-              {"yaw_deg", r.yaw_deg},
-              {"yaw_range_deg", r.yaw_range_deg},
-              {"horizontal_shift", r.horizontal_shift},
-              {"horizontal_range", r.horizontal_range},
-              {"search", {{"gate", options.search_gate},
-                          {"fraction_before", r.search_fraction_before},
-                          {"fraction_after", r.search_fraction}}}};
-  if (r.icp)
-    r.record["icp"] = {{"applied", r.icp_problem.empty()},
-                       {"conditioning", r.icp->icp.conditioning},
-                       {"fraction_within", r.icp->after.fraction_within},
-                       {"fraction_within_finest", r.icp->fine_after.fraction_within},
-                       {"threshold", options.threshold},
-                       {"finest", r.icp->fine_after.threshold}};
-  if (!r.icp_problem.empty()) r.record["icp_problem"] = r.icp_problem;
+              {"undulation", r.undulation ? nlohmann::json(*r.undulation) : nlohmann::json(nullptr)}};
+  search_and_refine(scene, mesh, options, context, r.gps.transform, r);
+  return r;
+}
+
+GeorefResult georeference_frame(const Scene& scene, const SemanticMesh& mesh, const GeorefOptions& options,
+                                const std::string& context) {
+  if (!scene.frame) fail(scene.root, "the scene names no frame in a CRS (a PIX4Dmapper offset or an OPF scene reference frame)");
+  const SceneFrame& frame = *scene.frame;
+  GeorefResult r;
+  r.epsg = city_model_crs(mesh.source_path, mesh.crs, options.crs).horizontal_epsg;
+  r.images = scene.views.size();
+  const std::string city_crs = cat("EPSG:", r.epsg);
+  std::string frame_crs = frame.crs;
+  if (frame_crs.empty()) {
+    frame_crs = city_crs;
+    log_warn(cat(context, ": ", frame.source, " names no CRS: taken to be the city model's (", city_crs, ")"));
+  }
+  // City CRS -> frame CRS, as a similarity fitted to PROJ's transformation of a grid over the model
+  // (+-1 km about its origin): exact where both CRSs are the same, and within millimetres across a
+  // city block between two projections of one datum. Heights pass unchanged.
+  const CrsTransform crs(city_crs, frame_crs, "a photogrammetry project's frame");
+  std::vector<Vec3d> local, in_frame;
+  for (double x : {-1000.0, 0.0, 1000.0})
+    for (double y : {-1000.0, 0.0, 1000.0})
+      for (double z : {0.0, 100.0}) {
+        const auto xy = crs.forward(mesh.origin[0] + x, mesh.origin[1] + y);
+        if (!xy) fail(frame.source, cat("its CRS cannot represent the city model's position (", city_crs, ")"));
+        local.push_back({x, y, z});
+        in_frame.push_back({(*xy)[0] - mesh.origin[0], (*xy)[1] - mesh.origin[1], z});
+      }
+  const SimilarityFit fit = robust_similarity(local, in_frame);
+  double fit_error = 0;
+  for (double e : fit.residuals) fit_error = std::max(fit_error, e);
+  // local -> scene: scene = scale * (frame CRS) + shift, the frame CRS = fit(local) + origin.
+  const Vec3d origin{mesh.origin[0], mesh.origin[1], mesh.origin[2]};
+  const CityTransform local_to_scene =
+      translation(frame.scale * origin + frame.shift) * similarity_transform(frame.scale, Mat3d::identity(), {}) * fit.transform;
+  const CityTransform to_local = translation(-1.0 * origin);
+  r.start = local_to_scene * to_local;
+  log_info(cat(context, ": the scene's frame from ", frame.source, ": ", frame_crs.size() > 60 ? frame_crs.substr(0, 57) + "..." : frame_crs,
+               ", scale ", frame.scale, ", shift ", metres(frame.shift.x), " ", metres(frame.shift.y), " ", metres(frame.shift.z),
+               frame_crs == city_crs ? std::string() : cat("; to the city model's ", city_crs, " within ", metres(fit_error))));
+  // The frame's orientation comes from all cameras: only its position and heights are searched
+  // (a project georeferenced by the drone's GPS alone is metres off, its heights often more).
+  r.yaw_range_deg = 0;
+  r.horizontal_range = options.frame_shift_range;
+  r.record = {{"start", "frame"},
+              {"crs", city_crs},
+              {"frame", frame.source},
+              {"frame_crs", frame_crs},
+              {"frame_scale", frame.scale},
+              {"frame_shift", {frame.shift.x, frame.shift.y, frame.shift.z}},
+              {"crs_fit_error", fit_error},
+              {"images", r.images}};
+  search_and_refine(scene, mesh, options, context, inverse(local_to_scene), r);
   return r;
 }
 

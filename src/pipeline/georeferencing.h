@@ -10,7 +10,9 @@
 //      against the GPS noise the yaw, and the horizontal shift the GPS noise leaves (beyond ICP's
 //      capture); the cost is the sparse points' truncated squared distance to the mesh;
 //   4. point-to-plane ICP of the sparse points onto the mesh (align's refinement).
-// `georef` runs it alone, `run --georef` before the label maps.
+// A photogrammetry project that names its frame in a CRS (PIX4Dmapper's offset and output CRS, an OPF
+// scene reference frame: Scene::frame) starts from that frame instead of steps 1-2
+// (georeference_frame). `georef` runs it alone, `run --georef` before the label maps.
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -28,6 +30,7 @@ struct GeorefOptions {
   std::string crs;               // EPSG:N; "": the city model's own (srsName / referenceSystem)
   double vertical_range = 100;   // metres searched above and below the GPS heights (after EGM96)
   double search_gate = 2;        // metres: a point counts as on the mesh within this in the coarse search
+  double frame_shift_range = 5;  // metres searched horizontally about a project's frame (georeference_frame)
   bool refine = true;            // step 4 (ICP)
   IcpOptions icp;                // step 4's gates, in metres of the city model
   double threshold = 0.5;        // metres: the printed share of points near the mesh
@@ -35,7 +38,7 @@ struct GeorefOptions {
 
 struct GeorefResult {
   CityTransform transform;   // city CRS -> scene frame: the final one
-  CityTransform from_gps;    // after step 2 (GPS alone, EGM96 heights)
+  CityTransform start;       // after step 2: GPS alone (EGM96 heights), or the project's frame
   CityTransform searched;    // after step 3
   int epsg = 0;
   size_t images = 0, fixes = 0, without_altitude = 0;
@@ -60,5 +63,13 @@ std::vector<std::optional<GpsFix>> scene_gps(const Scene& scene);
 // step with `context` ("georef", "run: georef").
 GeorefResult georeference(const Scene& scene, const std::vector<std::optional<GpsFix>>& gps,
                           const SemanticMesh& mesh, const GeorefOptions& options, const std::string& context);
+
+// The same from the frame the scene's source names (Scene::frame: a PIX4Dmapper project's offset and
+// output CRS, an OPF scene reference frame) instead of GPS: the frame's CRS taken into the city
+// model's through PROJ, then steps 3 (vertical offset and a horizontal shift within
+// options.frame_shift_range; no yaw) and 4. cls::Error when the scene names no frame, or PROJ does
+// not know its CRS.
+GeorefResult georeference_frame(const Scene& scene, const SemanticMesh& mesh, const GeorefOptions& options,
+                                const std::string& context);
 
 }  // namespace cls

@@ -29,7 +29,8 @@ void PipelineConfig::validate() const {
   if (!(align_distance >= 0)) throw UsageError("run: --align-distance must be >= 0");
   // What the codecs check for the command line and files, for a configuration made in code.
   if (align != "off" && align != "refine" && align != "auto") throw UsageError("run: --align must be off, refine or auto");
-  if (georef != "off" && georef != "gps" && georef != "auto") throw UsageError("run: --georef must be off, gps or auto");
+  if (georef != "off" && georef != "gps" && georef != "frame" && georef != "auto")
+    throw UsageError("run: --georef must be off, frame, gps or auto");
   if (regions != "class" && regions != "instance") throw UsageError("run: --regions must be class or instance");
   const std::vector<std::string> steps = pipeline_step_names();
   const auto step = std::find(steps.begin(), steps.end(), stop_after);
@@ -96,9 +97,10 @@ OptionList<PipelineConfig> make_pipeline_options() {
       .add("resolution", &C::resolution, "divide the image size by 1, 2, 4 or 8").short_name("r")
       .add("align-distance", &C::align_distance, "alignment check: distance threshold in city-model metres")
       .add("georef", &C::georef,
-           "find the city transform from the photos' EXIF GPS before aligning (as `georef`): gps, off, or auto "
-           "(when no city transform is given and at least 3 photos carry a GPS position with an altitude)",
-           R::Setting, choice_codec({"off", "gps", "auto"}))
+           "find the city transform before aligning (as `georef`): from the frame a Pix4D/OPF project names (frame), "
+           "from the photos' EXIF GPS (gps), off, or auto (when no city transform is given: frame if the project "
+           "names one, else gps if at least 3 photos carry a GPS position with an altitude)",
+           R::Setting, choice_codec({"off", "frame", "gps", "auto"}))
       .add("crs", &C::crs, "with --georef: the city model's CRS (EPSG:N; default: its srsName / referenceSystem)",
            R::Setting)
       .per_scene()

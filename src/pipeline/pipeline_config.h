@@ -20,7 +20,7 @@ struct PipelineConfig {
   CityModelOptions city_options;
   int resolution = 1;                      // 3DGS-style image downscaling: 1, 2, 4 or 8
   double align_distance = 0.5;             // alignment check threshold (city-model metres)
-  std::string georef = "auto";             // the city transform from the photos' GPS: off, gps or auto (stage_georef.cpp)
+  std::string georef = "auto";             // the city transform from a project's frame or the photos' GPS: off, frame, gps or auto (stage_georef.cpp)
   std::string crs;                         // the city model's CRS for --georef ("" = its srsName / referenceSystem)
   std::string align = "auto";              // refine the city transform: off, refine or auto (city_alignment.h)
   ProviderChoice features = auto_features();  // --models (auto: real weights where found), --clip, --sam

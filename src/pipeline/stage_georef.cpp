@@ -1,7 +1,8 @@
-// The georef stage: the city transform from the photos' EXIF GPS (pipeline/georeferencing.h), when
-// --georef gps, or auto with no city transform given and GPS in at least 3 photos. Its transform is
-// written to the run's georef transform (RunLayout::georef_transform) and used from then on (align
-// refines from it).
+// The georef stage: the city transform from the frame a photogrammetry project names (--georef frame)
+// or from the photos' EXIF GPS (--georef gps), pipeline/georeferencing.h; with auto and no city
+// transform given, the frame when the scene has one, else GPS when at least 3 photos carry it. Its
+// transform is written to the run's georef transform (RunLayout::georef_transform) and used from then
+// on (align refines from it).
 #include <filesystem>
 
 #include "core/log.h"
@@ -20,16 +21,21 @@ std::vector<Stage> georef_stages(RunContext& run) {
     if (c.georef == "off") return StageReport::with(StageStatus::Skipped, "--georef off");
     if (c.georef == "auto" && !c.city_transform.empty())
       return StageReport::with(StageStatus::Skipped, "a city transform is given");
-    const std::vector<std::optional<GpsFix>> gps = scene_gps(run.scene);
-    size_t usable = 0;
-    for (const auto& g : gps) usable += g && g->altitude;
-    if (c.georef == "auto" && usable < 3)
-      return StageReport::with(StageStatus::Skipped,
-                               cat(usable, " of ", gps.size(), " photos carry a GPS position with an altitude; 3 are needed"));
     GeorefOptions options;
     options.crs = c.crs;
     options.threshold = c.align_distance;
-    const GeorefResult g = georeference(run.scene, gps, run.city.mesh, options, "run: georef");
+    GeorefResult g;
+    if (c.georef == "frame" || (c.georef == "auto" && run.scene.frame)) {
+      g = georeference_frame(run.scene, run.city.mesh, options, "run: georef");
+    } else {
+      const std::vector<std::optional<GpsFix>> gps = scene_gps(run.scene);
+      size_t usable = 0;
+      for (const auto& f : gps) usable += f && f->altitude;
+      if (c.georef == "auto" && usable < 3)
+        return StageReport::with(StageStatus::Skipped,
+                                 cat(usable, " of ", gps.size(), " photos carry a GPS position with an altitude; 3 are needed"));
+      g = georeference(run.scene, gps, run.city.mesh, options, "run: georef");
+    }
     std::filesystem::create_directories(out.parent_path());
     write_city_transform(out.string(), g.transform);
     run.city.transform = g.transform;

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "models/weights/pickle_reader.h"
 #include "models/weights/torch_archive.h"
 #include "models/weights/weight_file.h"
 
@@ -187,4 +188,18 @@ TEST(TorchArchive, CorruptArchivesGiveErrorsNamingTheFile) {
     if (std::string(other.data() + i, 8) == "data.pkl") other[i] = 'x';  // rename data.pkl
   write_bytes(dir.path / "other.zip", other);
   EXPECT_THROW(load_weight_file((dir.path / "other.zip").string()), Error);
+}
+
+// What fuzz_weights found: protocol-0 PUT / GET with a memo index that is not a number ended in
+// std::invalid_argument (an internal error) instead of a cls::Error naming the file.
+TEST(TorchArchive, APickleMemoIndexThatIsNotANumberIsAnError) {
+  for (const std::string program : {std::string("N") + "pabc\n.", std::string("N") + "p1\ng\n.",
+                                    std::string("N") + "p99999999999999999999999\n."}) {
+    try {
+      read_pickle(program, "sd.pt");
+      ADD_FAILURE() << "accepted: " << program;
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("sd.pt: data.pkl: memo index", 0), 0u) << e.what();
+    }
+  }
 }

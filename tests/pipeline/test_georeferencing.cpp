@@ -9,6 +9,7 @@
 #include "citymodel/city_model.h"
 #include "core/atomic_file.h"
 #include "core/run_layout.h"
+#include "error_of.h"
 #include "models/temp_dir.h"
 #include "pipeline/georeferencing.h"
 #include "pipeline/pipeline.h"
@@ -57,7 +58,7 @@ TEST(Georeferencing, FromPhoneGpsToTheTruthWithNoTransformGiven) {
   ASSERT_TRUE(r.undulation.has_value()) << "proj-data's EGM96 grid is a dependency (setup.sh)";
   // GPS alone is metres off (the noise); the search takes out the 50 m datum step less EGM96's 48 m
   // (lowering the GPS heights), give or take the fit's own vertical error.
-  const TransformDifference gps = transform_difference(r.from_gps, truth, mesh);
+  const TransformDifference gps = transform_difference(r.start, truth, mesh);
   EXPECT_GT(gps.centre, 0.3);
   EXPECT_NEAR(r.vertical_offset, -(50 - *r.undulation), 2.0);
   // ICP ends on the truth: within 3 cm and 0.05 deg (issue 34's goal).
@@ -105,4 +106,54 @@ TEST(Georeferencing, RunGeoreferencesAutomaticallyOnlyWithoutAGivenTransform) {
   record = nlohmann::json::parse(read_text_file(RunLayout(c.out_dir).run_json()));
   EXPECT_EQ(record["georef"]["status"], "skipped: a city transform is given");
   EXPECT_FALSE(fs::exists(RunLayout(c.out_dir).georef_transform()));
+}
+
+namespace {
+
+// The scene moved by the similarity `m` (x' = m x): points and camera poses. A camera's own
+// coordinates scale with the world, which leaves every pixel where it was.
+Scene moved(Scene scene, const CityTransform& m) {
+  const double s = m.scale();
+  const Mat3d R = m.rotation();
+  const Vec3d t = m.translation();
+  for (SparsePoint& p : scene.points) p.xyz = m.apply(p.xyz);
+  for (SceneView& v : scene.views) {
+    const Mat3d Rc = v.pose.R * transpose(R);
+    v.pose.t = s * v.pose.t - Rc * t;
+    v.pose.R = Rc;
+  }
+  return scene;
+}
+
+}  // namespace
+
+// A photogrammetry project that names its frame (PIX4Dmapper's offset and output CRS): the scene moved
+// into the city CRS less an offset, the offset given 2.4 m off horizontally and 3 m vertically (a
+// project georeferenced by a drone's GPS). From there the search and ICP end on the exact offset.
+TEST(Georeferencing, FromAProjectsFrameToTheTruth) {
+  const fs::path dir = gps_scene("frame", "h=1,v=1,outliers=0");
+  const SemanticMesh mesh = load_city_model(kFzk, Taxonomy::builtin(), 0);
+  const CityTransform truth = read_city_transform((dir / "city" / "transform_true.json").string());
+  const Vec3d offset{mesh.origin[0] - 12.5, mesh.origin[1] + 7.25, mesh.origin[2] - 100};
+  const CityTransform crs_to_scene = similarity_transform(1, Mat3d::identity(), -1.0 * offset);
+  // scene' = crs - offset = crs_to_scene * truth^-1 * scene
+  Scene scene = moved(load_scene(dir.string()), crs_to_scene * inverse(truth));
+  const Vec3d error{2.0, -1.3, 3.0};
+  scene.frame = SceneFrame{"EPSG:25832", 1, -1.0 * (offset + error), "test_offset.xyz"};
+
+  const GeorefResult r = georeference_frame(scene, mesh, GeorefOptions{}, "test");
+  EXPECT_EQ(r.record["start"], "frame");
+  EXPECT_NEAR(transform_difference(r.start, crs_to_scene, mesh).centre, norm(error), 1e-6);
+  const TransformDifference final = transform_difference(r.transform, crs_to_scene, mesh);
+  EXPECT_LT(final.max_displacement, 0.03) << r.record.dump();
+  EXPECT_LT(final.rotation_deg, 0.05);
+  EXPECT_TRUE(r.icp_problem.empty()) << r.icp_problem;
+
+  // A frame in a CRS PROJ does not know, and a scene without a frame: errors saying so.
+  scene.frame->crs = "EPSG:999999";
+  const std::string unknown = test::error_of([&] { georeference_frame(scene, mesh, GeorefOptions{}, "test"); });
+  EXPECT_NE(unknown.find("EPSG:999999: PROJ"), std::string::npos) << unknown;
+  scene.frame.reset();
+  const std::string none = test::error_of([&] { georeference_frame(scene, mesh, GeorefOptions{}, "test"); });
+  EXPECT_NE(none.find("names no frame"), std::string::npos) << none;
 }

@@ -1,5 +1,8 @@
 #include "models/weights/pickle_reader.h"
 
+#include <cerrno>
+#include <cctype>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 
@@ -102,10 +105,10 @@ class Machine {
         case 'q': memo_[u8()] = top(); break;
         case 'r': memo_[le(4)] = top(); break;
         case 0x94: memo_[memo_.size()] = top(); break;
-        case 'p': memo_[std::stoull(line())] = top(); break;
+        case 'p': memo_[memo_index(line())] = top(); break;
         case 'h': push(memo(u8())); break;
         case 'j': push(memo(le(4))); break;
-        case 'g': push(memo(std::stoull(line()))); break;
+        case 'g': push(memo(memo_index(line()))); break;
         case '0': pop(); break;
         case '1': pop_mark(); break;
         case '2': push(top()); break;
@@ -153,6 +156,15 @@ class Machine {
     std::string s = b_.substr(pos_, n);
     pos_ += n;
     return s;
+  }
+  // The decimal memo index of PUT / GET (protocol 0).
+  uint64_t memo_index(const std::string& text) const {
+    char* end = nullptr;
+    errno = 0;
+    const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
+    if (text.empty() || !std::isdigit(static_cast<unsigned char>(text[0])) || *end != '\0' || errno == ERANGE)
+      error("memo index '" + text.substr(0, 40) + "' is not a number");
+    return v;
   }
   std::string line() {
     const size_t end = b_.find('\n', pos_);
