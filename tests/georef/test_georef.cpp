@@ -3,11 +3,14 @@
 // PROJ (UTM on its central meridian: the meridian arc, scaled).
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <random>
 #include <string>
 
 #include "citymodel/city_model.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "georef/crs_name.h"
 #include "georef/gps_footprint.h"
@@ -95,6 +98,36 @@ TEST(GpsProjection, CodesItCannotUseAreErrorsNamingThem) {
     } catch (const Error& e) {
       EXPECT_NE(std::string(e.what()).find("EPSG:" + std::to_string(code)), std::string::npos) << e.what();
     }
+  }
+}
+
+// A project's CRS into a city model's: the OPF specification's example frame (WGS 84 / UTM 16N written as
+// WKT, as Pix4D writes it) is EPSG:32616 itself; across a zone boundary the symmetry of transverse
+// Mercator: 12 E lies 3 degrees east of zone 32's meridian and 3 degrees west of zone 33's, so its
+// eastings mirror about 500 km and its northings agree.
+TEST(CrsTransform, AProjectsWktAndANeighbouringZone) {
+  const std::string frame = nlohmann::json::parse(read_text_file(CLS_TEST_DATA "/opf/spec-examples/scene-reference-frame.json"))
+                                ["crs"]["definition"];
+  const CrsTransform same("EPSG:32616", frame, "a test");
+  const auto p = same.forward(746308.123, 3714810.973);
+  ASSERT_TRUE(p.has_value());
+  EXPECT_NEAR((*p)[0], 746308.123, 1e-6);
+  EXPECT_NEAR((*p)[1], 3714810.973, 1e-6);
+
+  const auto in32 = GpsProjection(25832).project(51.0, 12.0);
+  const CrsTransform zones("EPSG:25832", "EPSG:25833", "a test");
+  const auto in33 = zones.forward(in32[0], in32[1]);
+  ASSERT_TRUE(in33.has_value());
+  EXPECT_NEAR((*in33)[0] - 500000, -(in32[0] - 500000), 1e-3);
+  EXPECT_NEAR((*in33)[1], in32[1], 1e-3);
+  const auto back = zones.inverse((*in33)[0], (*in33)[1]);
+  EXPECT_NEAR((*back)[0], in32[0], 1e-6);
+
+  try {
+    CrsTransform("EPSG:25832", "PROJCRS[\"not a crs", "a test");
+    ADD_FAILURE() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("does not know this coordinate reference system"), std::string::npos) << e.what();
   }
 }
 
