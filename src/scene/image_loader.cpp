@@ -69,15 +69,27 @@ std::shared_ptr<const ImageLoader::CachedMaps> ImageLoader::maps_for(const LensC
 cv::Mat ImageLoader::load(const SceneView& view) {
   const std::string& path = view.image_path;
   if (!is_file(path)) fail(path, "image not found (view '" + view.name + "')");
-  cv::Mat image;
-  try {
-    image = cv::imread(path, cv::IMREAD_COLOR);
-  } catch (const cv::Exception& e) {
-    fail(path, std::string("cannot decode image: ") + e.what());
-  }
-  if (image.empty()) fail(path, "cannot decode image (corrupt file or unsupported format)");
+  auto decode = [&path](int flags) {
+    cv::Mat m;
+    try {
+      m = cv::imread(path, flags);
+    } catch (const cv::Exception& e) {
+      fail(path, std::string("cannot decode image: ") + e.what());
+    }
+    if (m.empty()) fail(path, "cannot decode image (corrupt file or unsupported format)");
+    return m;
+  };
+  // The pixels as stored: COLMAP (3.7 on) and Pix4D calibrate them so, whatever a phone's EXIF
+  // Orientation says. A calibration of the turned photo (a tool that applied the tag) is met too: the
+  // turned decode is taken when it, not the stored one, has the camera's size.
   const Camera& cam = view.source_camera;
-  if (image.cols != cam.width || image.rows != cam.height)
+  auto fits = [&cam](const cv::Mat& m) { return m.cols == cam.width && m.rows == cam.height; };
+  cv::Mat image = decode(cv::IMREAD_COLOR | cv::IMREAD_IGNORE_ORIENTATION);
+  if (!fits(image)) {
+    cv::Mat turned = decode(cv::IMREAD_COLOR);
+    if (fits(turned)) image = turned;
+  }
+  if (!fits(image))
     fail(path, "image is " + std::to_string(image.cols) + "x" + std::to_string(image.rows) + " but camera " +
                    std::to_string(cam.id) + " is " + std::to_string(cam.width) + "x" + std::to_string(cam.height));
 

@@ -180,3 +180,46 @@ TEST(Scene, BadModelsAreErrorsNamingTheFile) {
   expect_error([&] { load_scene((dir / "nope").string()); }, {"nope", "not found"});
   fs::remove_all(dir);
 }
+
+// A phone's portrait photo: stored landscape with EXIF Orientation 6 ("the 0th row is the visual right
+// side": shown turned 90 degrees clockwise). COLMAP and Pix4D calibrate the stored pixels, so those are
+// loaded; a calibration of the turned photo (a tool applied the tag first) gets the turned pixels.
+TEST(ImageLoader, ExifOrientationFollowsTheCalibration) {
+  const fs::path dir = test::fresh_dir("orientation");
+  cv::Mat stored(48, 64, CV_8UC3, cv::Scalar(0, 0, 0));
+  stored(cv::Rect(0, 0, 32, 48)).setTo(cv::Scalar(0, 0, 255));  // left half red (BGR)
+  cv::imwrite((dir / "raw.jpg").string(), stored);
+  {  // the photo's tag, as a phone writes it
+    auto image = Exiv2::ImageFactory::open((dir / "raw.jpg").string());
+    image->readMetadata();
+    Exiv2::ExifData exif;
+    exif["Exif.Image.Orientation"] = uint16_t(6);
+    image->setExifData(exif);
+    image->writeMetadata();
+  }
+  auto view_of = [&](int w, int h) {
+    SceneView v;
+    v.name = "raw.jpg";
+    v.image_path = (dir / "raw.jpg").string();
+    v.source_camera.id = 1;
+    v.source_camera.model = CameraModel::Pinhole;
+    v.source_camera.width = w;
+    v.source_camera.height = h;
+    v.source_camera.params = {50, 50, w / 2.0, h / 2.0};
+    v.camera = PinholeCamera{50, 50, w / 2.0, h / 2.0, w, h};
+    return v;
+  };
+  ImageLoader loader;
+  const cv::Mat as_stored = loader.load(view_of(64, 48));
+  ASSERT_EQ(as_stored.cols, 64);
+  EXPECT_GT(as_stored.at<cv::Vec3b>(24, 5)[2], 200);  // red on the left, as stored
+  EXPECT_LT(as_stored.at<cv::Vec3b>(24, 58)[2], 50);
+  const cv::Mat turned = loader.load(view_of(48, 64));
+  ASSERT_EQ(turned.cols, 48);
+  ASSERT_EQ(turned.rows, 64);
+  // Turned clockwise, the stored left half is the top half.
+  EXPECT_GT(turned.at<cv::Vec3b>(5, 24)[2], 200);
+  EXPECT_LT(turned.at<cv::Vec3b>(58, 24)[2], 50);
+  expect_error([&] { loader.load(view_of(100, 100)); }, {"raw.jpg", "64x48", "100x100"});
+  fs::remove_all(dir);
+}
