@@ -21,6 +21,7 @@ ProviderChoice PipelineConfig::auto_features() {
 void PipelineConfig::validate() const {
   if (resolution != 1 && resolution != 2 && resolution != 4 && resolution != 8)
     throw UsageError("run: --resolution must be 1, 2, 4 or 8");
+  if (max_side < 0) throw UsageError("run: --max-side must be 0 (off) or a number of pixels");
   if (rgb_iterations < 0 || language_iterations < 0 || autoencoder_epochs < 0)
     throw UsageError("run: iteration and epoch counts must not be negative (0: the feature provider's schedule)");
   if (!(alpha >= 0 && alpha <= 1)) throw UsageError("run: --alpha must be in [0, 1]");
@@ -95,6 +96,9 @@ OptionList<PipelineConfig> make_pipeline_options() {
            "taxonomy JSON (overrides the config; the built-in one if none)", R::Location)
       .per_scene()
       .add("resolution", &C::resolution, "divide the image size by 1, 2, 4 or 8").short_name("r")
+      .add("max-side", &C::max_side,
+           "with -r 1, photos whose longer side exceeds this many pixels are loaded at it (3DGS loads photos wider "
+           "than 1600 px at 1600); 0 keeps them whole")
       .add("align-distance", &C::align_distance, "alignment check: distance threshold in city-model metres")
       .add("georef", &C::georef,
            "find the city transform before aligning (as `georef`): from the frame a Pix4D/OPF project names (frame), "

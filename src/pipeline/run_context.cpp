@@ -30,8 +30,14 @@ RunContext read_inputs(PipelineConfig c) {
   if (c.out_dir.empty()) c.out_dir = RunLayout::of_scene(c.scene_dir).root();
   SceneOptions scene_options;
   scene_options.resolution_factor = c.resolution;
+  scene_options.max_side = c.max_side;
   Scene scene = load_scene(c.scene_dir.string(), scene_options);
   if (scene.views.empty()) fail(c.scene_dir.string(), "the scene has no views");
+  const SceneView& first = scene.views.front();
+  if (c.resolution == 1 && std::max(first.source_camera.width, first.source_camera.height) > c.max_side && c.max_side > 0)
+    log_info(cat("run: photos of ", first.source_camera.width, "x", first.source_camera.height, " are loaded at ",
+                 first.camera.width, "x", first.camera.height, " (--max-side ", c.max_side,
+                 ", as 3DGS does; --max-side 0 keeps them whole)"));
   SceneCityModel city = load_scene_city_model(c.city, c.city_transform, c.city_options, "run");
   const RunLayout layout(c.out_dir);
   label_map_dirs(scene, layout.labels());  // every view has a name its label maps can be written under

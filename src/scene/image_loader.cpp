@@ -18,15 +18,21 @@ void check_scene_options(const SceneOptions& options) {
   if (r != 1 && r != 2 && r != 4 && r != 8)
     throw Error("resolution factor must be 1, 2, 4 or 8, not " + std::to_string(r));
   if (options.target_width < 0) throw Error("target width must not be negative");
+  if (options.max_side < 0) throw Error("the longest image side must not be negative");
   if (options.target_width > 0 && r != 1) throw Error("give either a resolution factor or a target width, not both");
 }
 
 PinholeCamera scale_to_resolution(const PinholeCamera& full, const SceneOptions& options) {
   check_scene_options(options);
   int w, h;
+  const int long_side = std::max(full.width, full.height);
   if (options.target_width > 0) {
     const double global_down = double(full.width) / options.target_width;
     w = options.target_width;
+    h = static_cast<int>(full.height / global_down);
+  } else if (options.resolution_factor == 1 && options.max_side > 0 && long_side > options.max_side) {
+    const double global_down = double(long_side) / options.max_side;  // 3DGS truncates, as here
+    w = static_cast<int>(full.width / global_down);
     h = static_cast<int>(full.height / global_down);
   } else {
     // std::nearbyint rounds half to even in the default rounding mode, like Python's round().

@@ -19,7 +19,8 @@ namespace cls {
 
 // The loaded-resolution camera for an undistorted full-resolution camera, by 3DGS's rules:
 // -r N gives round(W / N) x round(H / N) (round half to even, as Python's round), a target width
-// T gives T x int(H / (W / T)); intrinsics scale with the image (pixel edges stay aligned, so
+// T gives T x int(H / (W / T)), and with neither a long side L over max_side M gives
+// int(W / (L / M)) x int(H / (L / M)); intrinsics scale with the image (pixel edges stay aligned, so
 // f and c scale by new_size / old_size per axis). Bad options are a cls::Error.
 PinholeCamera scale_to_resolution(const PinholeCamera& full, const SceneOptions& options);
 void check_scene_options(const SceneOptions& options);

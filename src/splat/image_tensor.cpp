@@ -7,13 +7,14 @@
 
 namespace cls {
 
-at::Tensor image_to_tensor(const cv::Mat& bgr) {
+at::Tensor image_to_tensor_u8(const cv::Mat& bgr) {
   if (bgr.type() != CV_8UC3) throw Error("image_to_tensor: expected an 8-bit 3-channel image");
   cv::Mat rgb;
   cv::cvtColor(bgr, rgb, cv::COLOR_BGR2RGB);
-  const at::Tensor t = torch::from_blob(rgb.data, {rgb.rows, rgb.cols, 3}, torch::kUInt8).clone();
-  return t.to(torch::kFloat32).div_(255.0f);
+  return torch::from_blob(rgb.data, {rgb.rows, rgb.cols, 3}, torch::kUInt8).clone();
 }
+
+at::Tensor image_to_tensor(const cv::Mat& bgr) { return image_to_tensor_u8(bgr).to(torch::kFloat32).div_(255.0f); }
 
 cv::Mat tensor_to_image(const at::Tensor& rgb) {
   if (rgb.dim() != 3 || rgb.size(2) != 3) throw Error("tensor_to_image: expected an H x W x 3 tensor");

@@ -6,6 +6,8 @@
 namespace cls {
 
 at::Tensor image_to_tensor(const cv::Mat& bgr);
+// The same as H x W x 3 uint8 RGB (a quarter of the memory; image_to_tensor = this / 255).
+at::Tensor image_to_tensor_u8(const cv::Mat& bgr);
 // Values are clamped to [0, 1] and rounded to 8 bits; any float dtype and device.
 cv::Mat tensor_to_image(const at::Tensor& rgb);
 

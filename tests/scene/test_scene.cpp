@@ -140,6 +140,26 @@ TEST(ImageLoader, ScaleFollows3dgsRounding) {
   expect_error([&] { scale_to_resolution(full, o); }, {"not both"});
 }
 
+// A phone's 4000x3000 photo under max_side 1600, as 3DGS's loader does it: global_down = 4000 / 1600 = 2.5,
+// int(4000 / 2.5) x int(3000 / 2.5) = 1600 x 1200; a portrait 3000x4000 one by its long side; smaller photos,
+// and any explicit -r, are left alone.
+TEST(ImageLoader, MaxSideLoadsLargePhotosAtTheLongSide) {
+  SceneOptions o;
+  o.max_side = 1600;
+  const PinholeCamera landscape = scale_to_resolution({3000, 3000, 2000, 1500, 4000, 3000}, o);
+  EXPECT_EQ(landscape.width, 1600);
+  EXPECT_EQ(landscape.height, 1200);
+  EXPECT_DOUBLE_EQ(landscape.fx, 3000 * 1600.0 / 4000);
+  const PinholeCamera portrait = scale_to_resolution({3000, 3000, 1500, 2000, 3000, 4000}, o);
+  EXPECT_EQ(portrait.width, 1200);
+  EXPECT_EQ(portrait.height, 1600);
+  EXPECT_EQ(scale_to_resolution({500, 500, 320, 240, 640, 480}, o).width, 640);
+  o.resolution_factor = 2;
+  EXPECT_EQ(scale_to_resolution({3000, 3000, 2000, 1500, 4000, 3000}, o).width, 2000);
+  o.max_side = -1;
+  expect_error([&] { scale_to_resolution({3000, 3000, 2000, 1500, 4000, 3000}, o); }, {"must not be negative"});
+}
+
 TEST(Scene, MissingImageIsAnErrorNamingTheFile) {
   const fs::path dir = make_scene("missing_image", "sparse/0", true);
   const fs::path img = fs::absolute(dir) / "images" / "sub" / "a_second_id.png";
