@@ -1,9 +1,12 @@
 // citylangsplat scene info DIR [--json] [-r N | --width W]
 // citylangsplat scene convert DIR --out DIR --format bin|txt
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -26,6 +29,7 @@
 #include "scene/scene.h"
 
 namespace cls {
+namespace fs = std::filesystem;
 namespace {
 
 // Cameras are counted by value: Pix4D gives every view its own camera, usually an identical one.
@@ -109,6 +113,30 @@ int scene_info(int argc, char** argv) {
       against_text += cat("; GPS altitudes ", metres(gps.altitude[0]), "..", metres(gps.altitude[1]));
   }
 
+  // Photos in images/ the calibration left out (COLMAP often registers part of a phone set): unused.
+  size_t unregistered = 0;
+  if (const fs::path images = fs::path(scene.root) / "images"; scene.source != "opf" && fs::is_directory(images)) {
+    std::set<std::string> registered;
+    for (const SceneView& v : scene.views) registered.insert(fs::path(v.image_path).lexically_normal().string());
+    std::error_code ec;
+    for (auto it = fs::recursive_directory_iterator(images, ec); it != fs::recursive_directory_iterator(); it.increment(ec)) {
+      std::string ext = it->path().extension().string();
+      std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+      const bool photo = ext == ".jpg" || ext == ".jpeg" || ext == ".png" || ext == ".tif" || ext == ".tiff";
+      if (photo && it->is_regular_file(ec) && !registered.count(it->path().lexically_normal().string())) ++unregistered;
+    }
+  }
+  nlohmann::json frame_json = nullptr;
+  std::string frame_text;
+  if (scene.frame) {
+    const SceneFrame& f = *scene.frame;
+    frame_json = {{"crs", f.crs}, {"scale", f.scale}, {"shift", {f.shift.x, f.shift.y, f.shift.z}}, {"source", f.source}};
+    const std::string crs = f.crs.empty() ? "no CRS named" : f.crs.size() > 60 ? f.crs.substr(0, 57) + "..." : f.crs;
+    char shift[128];
+    std::snprintf(shift, sizeof shift, "%.3f %.3f %.3f", f.shift.x, f.shift.y, f.shift.z);
+    frame_text = cat("frame:   scene = ", f.scale, " x CRS + (", shift, "), CRS ", crs, " (", f.source, ")");
+  }
+
   if (json) {
     nlohmann::json gps_json = nullptr;  // null: the images were not read (--skip-image-check)
     if (options.check_images) {
@@ -125,6 +153,8 @@ int scene_info(int argc, char** argv) {
                                 {"cameras", cameras.size()},
                                 {"camera_models", models},
                                 {"points", scene.points.size()},
+                                {"unregistered_images", unregistered},
+                                {"frame", frame_json},
                                 {"image_sizes", sizes_json},
                                 {"gps", gps_json},
                                 {"gps_against_city", against}};
@@ -142,6 +172,10 @@ int scene_info(int argc, char** argv) {
   std::printf(")\npoints:  %zu\n", scene.points.size());
   for (const auto& [s, n] : sizes)
     std::printf("images:  %d views %dx%d, loaded as %dx%d\n", n, s.first[0], s.first[1], s.second[0], s.second[1]);
+  if (unregistered > 0)
+    std::printf("         %zu more photos in images/ are not in the calibration (not registered): they are not used\n",
+                unregistered);
+  if (!frame_text.empty()) std::printf("%s\n", frame_text.c_str());
   if (!options.check_images) {
     std::printf("gps:     not read (--skip-image-check)\n");
   } else if (gps.fixes == 0) {

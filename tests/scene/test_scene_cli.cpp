@@ -163,3 +163,28 @@ TEST(SceneCli, ConvertPix4d) {
   EXPECT_FALSE(fs::exists(dir / "k3"));
   fs::remove_all(dir);
 }
+
+// What scene info says of a PIX4Dmapper project: its frame (offset and output CRS), and the photo in
+// images/ that the calibration left out.
+TEST(SceneCli, InfoNamesAPix4dFrameAndUnregisteredPhotos) {
+  const fs::path dir = test::fresh_dir("cli_pix4d_frame");
+  write_text_atomic(dir / "site_calibrated_camera_parameters.txt",
+                    "a.jpg 100 80\n90 0 50\n0 90 40\n0 0 1\n0 0 0\n0 0\n1 2 3\n0 1 0\n-1 0 0\n0 0 1\n");
+  write_text_atomic(dir / "site_offset.xyz", "356000.5 5645000.25 100\n");
+  write_text_atomic(dir / "site_wkt.prj", "EPSG:25832\n");
+  fs::create_directories(dir / "images");
+  for (const char* name : {"a.jpg", "b.jpg"})
+    cv::imwrite((dir / "images" / name).string(), cv::Mat(80, 100, CV_8UC3, cv::Scalar::all(90)));
+  const test::CliResult r = run("scene info " + dir.string() + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["unregistered_images"], 1);
+  EXPECT_EQ(j["frame"]["crs"], "EPSG:25832");
+  EXPECT_EQ(j["frame"]["shift"], nlohmann::json({-356000.5, -5645000.25, -100.0}));
+  EXPECT_EQ(j["frame"]["source"], (dir / "site_offset.xyz").string());
+  const test::CliResult text = run("scene info " + dir.string());
+  EXPECT_NE(text.out.find("1 more photos in images/ are not in the calibration"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("frame:   scene = 1 x CRS + (-356000.500 -5645000.250 -100.000), CRS EPSG:25832"),
+            std::string::npos) << text.out;
+  fs::remove_all(dir);
+}
