@@ -18,11 +18,13 @@ SceneCityModel load_scene_city_model(const std::string& city_path, const std::st
   float extent = 0;
   for (const auto& v : in.vertices)
     extent = std::fmax(extent, std::fmax(std::fabs(v.x), std::fmax(std::fabs(v.y), std::fabs(v.z))));
-  if (extent > 1e5f)
+  if (extent > 1e5f && transform_path.empty())
+    log_info(cat(context, ": no city transform given: the city mesh lies where its CRS puts it, up to ", extent,
+                 " units from the scene origin, until georef (run --georef) finds the transform from a Pix4D/OPF "
+                 "project's frame or the photos' EXIF GPS, or --city-transform gives it"));
+  else if (extent > 1e5f)
     log_warn(cat(context, ": the city mesh reaches ", extent, " units from the scene origin; float precision there is ",
-                 "coarse (give --city-transform into the scene's local frame",
-                 transform_path.empty() ? ", or photos with EXIF GPS to georeference from: georef, run --georef" : "",
-                 ")"));
+                 "coarse (give --city-transform into the scene's local frame)"));
   return in;
 }
 
