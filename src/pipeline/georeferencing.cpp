@@ -84,7 +84,7 @@ void search_and_refine(const Scene& scene, const SemanticMesh& mesh, const Geore
   CityTransform searched_local = start;
   if (scene.points.empty()) {
     r.icp_problem = "the scene has no sparse points";
-    log_warn(cat(context, ": the scene has no sparse points: heights and yaw stay as GPS gives them, and no ICP"));
+    log_warn(cat(context, ": the scene has no sparse points: heights and position stay as the start (GPS or the project's frame) gives them, and no ICP"));
   } else {
     const ClosestPointQuery local_mesh(scene_vertices(mesh, to_local), mesh.triangles);
     const size_t stride = (scene.points.size() + kSearchPoints - 1) / kSearchPoints;

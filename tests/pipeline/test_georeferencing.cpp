@@ -157,3 +157,55 @@ TEST(Georeferencing, FromAProjectsFrameToTheTruth) {
   const std::string none = test::error_of([&] { georeference_frame(scene, mesh, GeorefOptions{}, "test"); });
   EXPECT_NE(none.find("names no frame"), std::string::npos) << none;
 }
+
+// `run --georef auto` on a PIX4Dmapper project (its calibration written here from a synth scene, whose
+// frame is the city CRS less a translation, with that translation as the project's offset): the stage
+// starts from the project's frame, not GPS, and with no points to search it keeps the frame exactly.
+TEST(Georeferencing, RunStartsFromAPix4dProjectsFrame) {
+  const fs::path synth_dir = gps_scene("pix4d_source", "h=1,v=1,outliers=0");
+  const Scene source = load_scene(synth_dir.string());
+  const CityTransform truth = read_city_transform((synth_dir / "city" / "transform_true.json").string());
+  const SemanticMesh mesh = load_city_model(kFzk, Taxonomy::builtin(), 0);
+  // The synth scene in "CRS minus an offset" (truth moved onto a translation), written as Pix4D does.
+  const Vec3d offset{mesh.origin[0] + 3, mesh.origin[1] - 4, mesh.origin[2] + 5};
+  const CityTransform crs_to_scene = similarity_transform(1, Mat3d::identity(), -1.0 * offset);
+  const Scene scene = moved(source, crs_to_scene * inverse(truth));
+  const fs::path dir = work_path("pix4d_project");
+  fs::create_directories(dir / "1_initial" / "params");
+  std::string calibration =
+      "fileName imageWidth imageHeight \ncamera matrix K [3x3]\nradial distortion [3x1]\ntangential distortion [2x1]\n"
+      "camera position t [3x1]\ncamera rotation R [3x3]\ncamera model m = K [R|-Rt] X\n\n";
+  for (const SceneView& v : scene.views) {
+    const PinholeCamera& k = v.camera;
+    const Vec3d c = v.pose.center();
+    char line[256];
+    std::snprintf(line, sizeof line, "%s %d %d\n%.17g 0 %.17g\n0 %.17g %.17g\n0 0 1\n0 0 0\n0 0\n", v.name.c_str(),
+                  k.width, k.height, k.fx, k.cx, k.fy, k.cy);
+    calibration += line;
+    std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", c.x, c.y, c.z);
+    calibration += line;
+    for (int r = 0; r < 3; ++r) {
+      std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", v.pose.R.m[r][0], v.pose.R.m[r][1], v.pose.R.m[r][2]);
+      calibration += line;
+    }
+  }
+  write_text_atomic(dir / "1_initial" / "params" / "site_calibrated_camera_parameters.txt", calibration);
+  char text[128];
+  std::snprintf(text, sizeof text, "%.3f %.3f %.3f\n", offset.x, offset.y, offset.z);
+  write_text_atomic(dir / "1_initial" / "params" / "site_offset.xyz", text);
+  write_text_atomic(dir / "1_initial" / "params" / "site_wkt.prj", "EPSG:25832\n");
+  fs::create_directory_symlink(synth_dir / "images", dir / "images");
+
+  PipelineConfig c;
+  c.scene_dir = dir;
+  c.city = kFzk;
+  c.out_dir = work_path("pix4d_project_out");
+  c.features.models = "synthetic";
+  c.stop_after = "georef";
+  run_pipeline(c);
+  const nlohmann::json record = nlohmann::json::parse(read_text_file(RunLayout(c.out_dir).run_json()));
+  ASSERT_EQ(record["georef"]["status"], "done") << record["georef"].dump();
+  EXPECT_EQ(record["georef"]["start"], "frame");
+  const CityTransform used = read_city_transform(RunLayout(c.out_dir).georef_transform().string());
+  EXPECT_LT(transform_difference(used, crs_to_scene, mesh).max_displacement, 1e-3);
+}
