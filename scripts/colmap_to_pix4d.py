@@ -17,20 +17,7 @@ import os
 import struct
 import sys
 
-
-def quat_to_matrix(w, x, y, z):
-    n = math.sqrt(w * w + x * x + y * y + z * z)
-    w, x, y, z = w / n, x / n, y / n, z / n
-    return [[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-            [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-            [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]]
-
-
-def rows(path):
-    with open(path) as f:
-        for line in f:
-            if line.strip() and not line.startswith("#"):
-                yield line.split()
+from colmap_text import quat_to_matrix, rows
 
 
 def main(argv):
