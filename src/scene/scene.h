@@ -30,13 +30,13 @@ struct SparsePoint {
 struct SceneOptions {
   int resolution_factor = 1;  // 3DGS-style -r 1|2|4|8: divide the image size by this
   int target_width = 0;       // alternatively: resize so that width == target_width (0 = off)
-  // Without either, photos whose long side exceeds this are loaded at it (0 = off), as the 3DGS
-  // reference code loads photos wider than 1600 px at 1600 unless -r is given.
-  int max_side = 0;
   bool check_images = true;   // fail early if an image file is missing
   // A densified cloud (PIX4Dmapper) is thinned to this many points (every k-th): the Gaussians
   // start from it, and 3DGS scenes start from 0.1-1 M points.
   uint64_t max_cloud_points = 1000000;
+  // Without a factor or a target width, photos whose long side exceeds this are loaded at it (0 = off),
+  // as the 3DGS reference code loads photos wider than 1600 px at 1600 unless -r is given.
+  int max_side = 0;
 };
 
 // Where the scene frame lies in a CRS, when its source says so: scene = scale * crs + shift.
