@@ -25,6 +25,7 @@
 #include "scene/exif_gps.h"
 #include "scene/opf.h"
 #include "scene/pix4d.h"
+#include "scene/pix4d_project.h"
 #include "scene/image_loader.h"
 #include "scene/scene.h"
 
@@ -212,10 +213,14 @@ int scene_convert(int argc, char** argv) {
       const uint64_t id = model.points.size() + 1;
       model.points[id] = ColmapPoint3D{id, p.xyz, p.rgb, 0, {}};
     }
-  } else {
-    const std::string pix4d = find_pix4d_calibration(dir);
-    if (pix4d.empty()) fail(dir, "no COLMAP model, OPF project or Pix4D calibrated_camera_parameters.txt found");
-    model = pix4d_to_colmap(read_pix4d_calibrated_cameras(pix4d), pix4d);
+  } else {  // cameras as Pix4D's, with the densified cloud in the cameras' frame (no tracks)
+    const Pix4dProject project = find_pix4d_project(dir);
+    if (project.calibration.empty())
+      fail(dir, "no COLMAP model, OPF project or Pix4D calibrated_camera_parameters.txt found");
+    model = pix4d_to_colmap(read_pix4d_calibrated_cameras(project.calibration), project.calibration);
+    const PointCloud cloud = read_pix4d_cloud(project, SceneOptions{}.max_cloud_points);
+    for (size_t i = 0; i < cloud.xyz.size(); ++i)
+      model.points[i + 1] = ColmapPoint3D{i + 1, {cloud.xyz[i].x, cloud.xyz[i].y, cloud.xyz[i].z}, cloud.rgb[i], 0, {}};
   }
   (format == "bin" ? write_colmap_binary : write_colmap_text)(out, model);
   log_info(cat("wrote ", model.cameras.size(), " cameras, ", model.images.size(), " images, ", model.points.size(),

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -15,6 +16,7 @@
 #include <map>
 
 #include "core/error.h"
+#include "core/math.h"
 #include "scene/undistort.h"
 
 namespace cls::test {
@@ -103,6 +105,35 @@ inline double expect_matches_checkerboard(const cv::Mat& img, const PinholeCamer
     }
   EXPECT_EQ(wrong, 0) << "of " << compared << " compared pixels";
   return double(compared) / (double(img.rows) * img.cols);
+}
+
+template <class T>
+inline void put_bytes(std::string& s, size_t at, T v) {
+  std::memcpy(&s[at], &v, sizeof v);
+}
+
+// LAS 1.2, point format 2 (x, y, z, ..., red, green, blue: 26 bytes), scale 1 mm, holding `points`
+// (output CRS coordinates) with 16-bit colours 257 * (10 i, 20 i, 30 i).
+inline std::string las_file(const std::vector<Vec3d>& points, size_t first_index) {
+  const size_t header = 227, record = 26;
+  std::string s(header + points.size() * record, '\0');
+  std::memcpy(&s[0], "LASF", 4);
+  s[24] = 1, s[25] = 2;
+  put_bytes<uint16_t>(s, 94, header);
+  put_bytes<uint32_t>(s, 96, header);
+  s[104] = 2;
+  put_bytes<uint16_t>(s, 105, record);
+  put_bytes<uint32_t>(s, 107, static_cast<uint32_t>(points.size()));
+  const Vec3d scale{0.001, 0.001, 0.001}, offset{356000, 5645000, 0};
+  for (int k = 0; k < 3; ++k) put_bytes(s, 131 + 8 * k, scale[k]), put_bytes(s, 155 + 8 * k, offset[k]);
+  for (size_t i = 0; i < points.size(); ++i) {
+    const size_t at = header + i * record;
+    for (int k = 0; k < 3; ++k)
+      put_bytes<int32_t>(s, at + 4 * k, static_cast<int32_t>(std::llround((points[i][k] - offset[k]) / scale[k])));
+    const size_t n = first_index + i;
+    for (int c = 0; c < 3; ++c) put_bytes<uint16_t>(s, at + 20 + 2 * c, static_cast<uint16_t>(257 * 10 * (c + 1) * n));
+  }
+  return s;
 }
 
 }  // namespace cls::test

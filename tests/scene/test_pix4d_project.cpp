@@ -24,35 +24,6 @@ const Vec3d kOffset{356000, 5645000, 100};
 // Points in the calibration's (offset) frame, near the camera at (1, 2, 30) looking down.
 const std::vector<Vec3d> kPoints = {{0, 0, 0}, {1.25, -2.5, 0.75}, {3, 4, 5.5}, {-6.125, 1, 0.25}, {2, 2, 2}};
 
-template <class T>
-void put(std::string& s, size_t at, T v) {
-  std::memcpy(&s[at], &v, sizeof v);
-}
-
-// LAS 1.2, point format 2 (x, y, z, ..., red, green, blue: 26 bytes), scale 1 mm, holding `points`
-// (output CRS coordinates) with 16-bit colours 257 * (10 i, 20 i, 30 i).
-std::string las_file(const std::vector<Vec3d>& points, size_t first_index) {
-  const size_t header = 227, record = 26;
-  std::string s(header + points.size() * record, '\0');
-  std::memcpy(&s[0], "LASF", 4);
-  s[24] = 1, s[25] = 2;
-  put<uint16_t>(s, 94, header);
-  put<uint32_t>(s, 96, header);
-  s[104] = 2;
-  put<uint16_t>(s, 105, record);
-  put<uint32_t>(s, 107, static_cast<uint32_t>(points.size()));
-  const Vec3d scale{0.001, 0.001, 0.001}, offset{356000, 5645000, 0};
-  for (int k = 0; k < 3; ++k) put(s, 131 + 8 * k, scale[k]), put(s, 155 + 8 * k, offset[k]);
-  for (size_t i = 0; i < points.size(); ++i) {
-    const size_t at = header + i * record;
-    for (int k = 0; k < 3; ++k)
-      put<int32_t>(s, at + 4 * k, static_cast<int32_t>(std::llround((points[i][k] - offset[k]) / scale[k])));
-    const size_t n = first_index + i;
-    for (int c = 0; c < 3; ++c) put<uint16_t>(s, at + 20 + 2 * c, static_cast<uint16_t>(257 * 10 * (c + 1) * n));
-  }
-  return s;
-}
-
 fs::path project(const std::string& name) {
   const fs::path dir = test::fresh_dir(name);
   const fs::path params = dir / "1_initial" / "params";
@@ -75,8 +46,8 @@ TEST(Pix4dProject, LasPartsInTheOutputCrsBecomeThePointsOfTheOffsetFrame) {
   std::vector<Vec3d> crs;
   for (const Vec3d& p : kPoints) crs.push_back(p + kOffset);
   // two parts, as Pix4D splits large clouds
-  write_text_atomic(clouds / "site_group1_densified_point_cloud_part_1.las", las_file({crs.begin(), crs.begin() + 3}, 0));
-  write_text_atomic(clouds / "site_group1_densified_point_cloud_part_2.las", las_file({crs.begin() + 3, crs.end()}, 3));
+  write_text_atomic(clouds / "site_group1_densified_point_cloud_part_1.las", test::las_file({crs.begin(), crs.begin() + 3}, 0));
+  write_text_atomic(clouds / "site_group1_densified_point_cloud_part_2.las", test::las_file({crs.begin() + 3, crs.end()}, 3));
 
   const Scene s = load_scene(dir.string());
   EXPECT_EQ(s.source, "pix4d");

@@ -175,9 +175,12 @@ TEST(SceneCli, InfoNamesAPix4dFrameAndUnregisteredPhotos) {
   fs::create_directories(dir / "images");
   for (const char* name : {"a.jpg", "b.jpg"})
     cv::imwrite((dir / "images" / name).string(), cv::Mat(80, 100, CV_8UC3, cv::Scalar::all(90)));
+  // Two cloud points beside the camera at (1, 2, 3), in the CRS.
+  write_text_atomic(dir / "site_cloud.las", test::las_file({{356001.5, 5645002.25, 101}, {356002.5, 5645001.25, 99}}, 1));
   const test::CliResult r = run("scene info " + dir.string() + " --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["points"], 2);
   EXPECT_EQ(j["unregistered_images"], 1);
   EXPECT_EQ(j["frame"]["crs"], "EPSG:25832");
   EXPECT_EQ(j["frame"]["shift"], nlohmann::json({-356000.5, -5645000.25, -100.0}));
@@ -186,5 +189,12 @@ TEST(SceneCli, InfoNamesAPix4dFrameAndUnregisteredPhotos) {
   EXPECT_NE(text.out.find("1 more photos in images/ are not in the calibration"), std::string::npos) << text.out;
   EXPECT_NE(text.out.find("frame:   scene = 1 x CRS + (-356000.500 -5645000.250 -100.000), CRS EPSG:25832"),
             std::string::npos) << text.out;
+  // scene convert keeps the cloud, in the cameras' frame.
+  ASSERT_EQ(run("scene convert " + dir.string() + " --out " + (dir / "m").string()).status, 0);
+  const ColmapModel m = read_colmap((dir / "m").string());
+  ASSERT_EQ(m.points.size(), 2u);
+  EXPECT_NEAR(m.points.at(1).xyz[0], 1.0, 1e-6);
+  EXPECT_NEAR(m.points.at(1).xyz[1], 2.0, 1e-6);
+  EXPECT_NEAR(m.points.at(2).xyz[2], -1.0, 1e-6);
   fs::remove_all(dir);
 }
