@@ -17,6 +17,7 @@
 #include "cli/commands.h"
 #include "core/error.h"
 #include "core/progress.h"
+#include "core/strings.h"
 #include "core/log.h"
 #include "citymodel/city_model.h"
 #include "georef/crs_name.h"
@@ -121,8 +122,7 @@ int scene_info(int argc, char** argv) {
     for (const SceneView& v : scene.views) registered.insert(fs::path(v.image_path).lexically_normal().string());
     std::error_code ec;
     for (auto it = fs::recursive_directory_iterator(images, ec); it != fs::recursive_directory_iterator(); it.increment(ec)) {
-      std::string ext = it->path().extension().string();
-      std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+      const std::string ext = ascii_lower(it->path().extension().string());
       const bool photo = ext == ".jpg" || ext == ".jpeg" || ext == ".png" || ext == ".tif" || ext == ".tiff";
       if (photo && it->is_regular_file(ec) && !registered.count(it->path().lexically_normal().string())) ++unregistered;
     }

@@ -1,5 +1,6 @@
 #include "core/strings.h"
 
+#include <cctype>
 #include <cmath>
 #include <sstream>
 
@@ -44,6 +45,11 @@ std::vector<std::pair<std::string, double>> key_numbers(const std::string& text,
     out.emplace_back(key, x);
   }
   return out;
+}
+
+std::string ascii_lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
 }
 
 }  // namespace cls

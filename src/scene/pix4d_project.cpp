@@ -8,6 +8,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/strings.h"
 #include "scene/path_query.h"
 #include "scene/pix4d.h"
 
@@ -17,11 +18,6 @@ namespace {
 
 bool ends_with(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
 }
 
 // Files of `dir` whose name passes `keep`, sorted (the parts of a cloud in order).
@@ -76,7 +72,7 @@ Pix4dProject find_pix4d_project(const std::string& dir) {
     for (const bool las : {true, false}) {  // LAS (or LAZ, which the reader refuses with advice) before PLY
       if (p.clouds.empty())
         p.clouds = files_in(folder, [las](const std::string& n) {
-          const std::string l = lower(n);
+          const std::string l = ascii_lower(n);
           return las ? ends_with(l, ".las") || ends_with(l, ".laz") : ends_with(l, ".ply");
         });
     }
@@ -90,7 +86,7 @@ PointCloud read_pix4d_cloud(const Pix4dProject& project, uint64_t max_points) {
   for (const std::string& file : project.clouds) {
     PointCloud part = read_point_cloud(file, max_points);
     Vec3d shift = -project.offset;
-    if (lower(fs::path(file).extension().string()) == ".ply") {
+    if (ascii_lower(fs::path(file).extension().string()) == ".ply") {
       // Pix4D writes PLY (float) offset by a sidecar: NAME_ply_offset.xyz beside NAME.ply.
       const fs::path sidecar = fs::path(file).replace_extension().string() + "_ply_offset.xyz";
       if (is_file(sidecar)) shift = shift + read_pix4d_offset(sidecar.string());

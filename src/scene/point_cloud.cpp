@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/ply.h"
+#include "core/strings.h"
 #include "scene/las.h"
 
 namespace cls {
@@ -52,8 +53,7 @@ PointCloud read_las_cloud(const std::string& path, uint64_t max_points) {
 }  // namespace
 
 PointCloud read_point_cloud(const std::string& path, uint64_t max_points) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string ext = ascii_lower(std::filesystem::path(path).extension().string());
   if (ext == ".ply") return read_ply_cloud(path, max_points);
   if (ext == ".las" || ext == ".laz") return read_las_cloud(path, max_points);
   fail(path, "point cloud format '" + ext + "' is not read (LAS or PLY)");

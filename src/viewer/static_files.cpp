@@ -3,6 +3,8 @@
 #include <map>
 #include <system_error>
 
+#include "core/strings.h"
+
 namespace cls {
 namespace fs = std::filesystem;
 
@@ -32,8 +34,7 @@ std::string content_type_of(const fs::path& file) {
       {".json", "application/json"}, {".png", "image/png"}, {".jpg", "image/jpeg"}, {".jpeg", "image/jpeg"},
       {".svg", "image/svg+xml"}, {".wasm", "application/wasm"}, {".md", "text/plain; charset=utf-8"},
       {".txt", "text/plain; charset=utf-8"}, {".csv", "text/csv; charset=utf-8"}, {".mp4", "video/mp4"}};
-  std::string ext = file.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = ascii_lower(file.extension().string());
   const auto it = types.find(ext);
   return it == types.end() ? "application/octet-stream" : it->second;
 }
