@@ -18,16 +18,29 @@ PJ_CONTEXT* quiet_context() {
   return context;
 }
 
+// The type of a CRS as PROJ reads it; nullopt for one it does not know.
+std::optional<PJ_TYPE> crs_type(const std::string& definition) {
+  PJ_CONTEXT* context = quiet_context();
+  PJ* crs = proj_create(context, definition.c_str());
+  std::optional<PJ_TYPE> type;
+  if (crs && proj_is_crs(crs)) type = proj_get_type(crs);
+  proj_destroy(crs);
+  proj_context_destroy(context);
+  return type;
+}
+
 }  // namespace
 
 std::optional<bool> is_vertical_crs(int code) {
-  PJ_CONTEXT* context = quiet_context();
-  PJ* crs = proj_create(context, ("EPSG:" + std::to_string(code)).c_str());
-  std::optional<bool> vertical;
-  if (crs && proj_is_crs(crs)) vertical = proj_get_type(crs) == PJ_TYPE_VERTICAL_CRS;
-  proj_destroy(crs);
-  proj_context_destroy(context);
-  return vertical;
+  const std::optional<PJ_TYPE> type = crs_type("EPSG:" + std::to_string(code));
+  if (!type) return std::nullopt;
+  return *type == PJ_TYPE_VERTICAL_CRS;
+}
+
+std::optional<bool> is_geocentric_crs(const std::string& definition) {
+  const std::optional<PJ_TYPE> type = crs_type(definition);
+  if (!type) return std::nullopt;
+  return *type == PJ_TYPE_GEOCENTRIC_CRS;
 }
 
 CrsTransform::CrsTransform(const std::string& from, const std::string& to, const std::string& purpose)
@@ -86,6 +99,12 @@ std::optional<std::array<double, 2>> CrsTransform::inverse(double x, double y) c
   const PJ_COORD out = proj_trans(transform_, PJ_INV, proj_coord(x, y, 0, 0));
   if (!std::isfinite(out.xy.x) || !std::isfinite(out.xy.y)) return std::nullopt;
   return std::array<double, 2>{out.xy.x, out.xy.y};
+}
+
+std::optional<std::array<double, 3>> CrsTransform::forward3(double x, double y, double z) const {
+  const PJ_COORD out = proj_trans(transform_, PJ_FWD, proj_coord(x, y, z, 0));
+  if (!std::isfinite(out.xyz.x) || !std::isfinite(out.xyz.y) || !std::isfinite(out.xyz.z)) return std::nullopt;
+  return std::array<double, 3>{out.xyz.x, out.xyz.y, out.xyz.z};
 }
 
 GpsProjection::GpsProjection(int epsg)

@@ -14,6 +14,8 @@ namespace cls {
 // Whether EPSG:`code` is a vertical CRS (true) or one with horizontal axes (false: projected,
 // geographic, compound); nullopt for a code PROJ's database does not hold.
 std::optional<bool> is_vertical_crs(int code);
+// Whether a CRS (as PROJ reads it) is geocentric (ECEF, e.g. EPSG:4978); nullopt for one PROJ does not know.
+std::optional<bool> is_geocentric_crs(const std::string& definition);
 
 // x, y of one CRS -> x, y of another through PROJ (of compound CRSs their horizontal parts), in the
 // axis order a GIS shows (longitude first; easting first). Heights are not converted: which vertical
@@ -30,6 +32,8 @@ class CrsTransform {
   // nullopt for a position the target cannot represent (PROJ returns infinity there).
   std::optional<std::array<double, 2>> forward(double x, double y) const;
   std::optional<std::array<double, 2>> inverse(double x, double y) const;
+  // x, y, z through: between CRSs with heights (geographic 3D, geocentric), where z is converted too.
+  std::optional<std::array<double, 3>> forward3(double x, double y, double z) const;
 
  private:
   pj_ctx* context_ = nullptr;

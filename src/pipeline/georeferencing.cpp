@@ -282,7 +282,7 @@ GeorefResult georeference(const Scene& scene, const std::vector<std::optional<Gp
 
 GeorefResult georeference_frame(const Scene& scene, const SemanticMesh& mesh, const GeorefOptions& options,
                                 const std::string& context) {
-  if (!scene.frame) fail(scene.root, "the scene names no frame in a CRS (a PIX4Dmapper offset or an OPF scene reference frame)");
+  if (!scene.frame) fail(scene.root, "the scene names no frame in a CRS (a PIX4Dmapper offset, an OPF scene reference frame, a COLMAP model in absolute coordinates)");
   const SceneFrame& frame = *scene.frame;
   GeorefResult r;
   r.epsg = city_model_crs(mesh.source_path, mesh.crs, options.crs).horizontal_epsg;
@@ -294,26 +294,43 @@ GeorefResult georeference_frame(const Scene& scene, const SemanticMesh& mesh, co
     log_warn(cat(context, ": ", frame.source, " names no CRS: taken to be the city model's (", city_crs, ")"));
   }
   // City CRS -> frame CRS, as a similarity fitted to PROJ's transformation of a grid over the model
-  // (+-1 km about its origin): exact where both CRSs are the same, and within millimetres across a
-  // city block between two projections of one datum. Heights pass unchanged.
-  const CrsTransform crs(city_crs, frame_crs, "a photogrammetry project's frame");
+  // (+-1 km about its origin, +-200 m for ECEF): exact where both CRSs are the same, and within
+  // millimetres across a city block between two projections of one datum, or to ECEF. Heights pass
+  // unchanged into a projected frame; into a geocentric one (a COLMAP model model_aligner put into ECEF
+  // from GPS) they become ellipsoidal through EGM96 where its grid is installed (the vertical search
+  // takes up the rest).
+  const bool geocentric = is_geocentric_crs(frame_crs).value_or(false);
+  const CrsTransform crs(city_crs, geocentric ? "EPSG:4326" : frame_crs, "a photogrammetry project's frame");
+  const std::optional<CrsTransform> to_geocentric =
+      geocentric ? std::optional<CrsTransform>(std::in_place, "EPSG:4979", frame_crs, "a geocentric frame") : std::nullopt;
+  const Egm96Geoid geoid;
+  auto in_frame_crs = [&](const Vec3d& local) {
+    const double x = mesh.origin[0] + local.x, y = mesh.origin[1] + local.y, z = mesh.origin[2] + local.z;
+    const auto xy = crs.forward(x, y);
+    if (!xy) fail(frame.source, cat("its CRS cannot represent the city model's position (", city_crs, ")"));
+    if (!to_geocentric) return Vec3d{(*xy)[0], (*xy)[1], z};
+    const double h = z + geoid.undulation((*xy)[1], (*xy)[0]).value_or(0);
+    const auto xyz = to_geocentric->forward3((*xy)[0], (*xy)[1], h);
+    if (!xyz) fail(frame.source, cat("PROJ cannot place the city model's position (", city_crs, ") in ", frame_crs));
+    return Vec3d{(*xyz)[0], (*xyz)[1], (*xyz)[2]};
+  };
+  const Vec3d reference = in_frame_crs({});
+  // ECEF follows the Earth's curvature, which a similarity does not: 3 mm at 200 m, 8 cm at 1 km.
+  const double reach = geocentric ? 200 : 1000;
   std::vector<Vec3d> local, in_frame;
-  for (double x : {-1000.0, 0.0, 1000.0})
-    for (double y : {-1000.0, 0.0, 1000.0})
-      for (double z : {0.0, 100.0}) {
-        const auto xy = crs.forward(mesh.origin[0] + x, mesh.origin[1] + y);
-        if (!xy) fail(frame.source, cat("its CRS cannot represent the city model's position (", city_crs, ")"));
+  for (double x : {-reach, 0.0, reach})
+    for (double y : {-reach, 0.0, reach})
+      for (double z : {0.0, reach / 10}) {
         local.push_back({x, y, z});
-        in_frame.push_back({(*xy)[0] - mesh.origin[0], (*xy)[1] - mesh.origin[1], z});
+        in_frame.push_back(in_frame_crs(local.back()) - reference);
       }
   const SimilarityFit fit = robust_similarity(local, in_frame);
   double fit_error = 0;
   for (double e : fit.residuals) fit_error = std::max(fit_error, e);
-  // local -> scene: scene = scale * (frame CRS) + shift, the frame CRS = fit(local) + origin.
-  const Vec3d origin{mesh.origin[0], mesh.origin[1], mesh.origin[2]};
+  // local -> scene: scene = scale * (frame CRS) + shift, the frame CRS = fit(local) + reference.
   const CityTransform local_to_scene =
-      translation(frame.scale * origin + frame.shift) * similarity_transform(frame.scale, Mat3d::identity(), {}) * fit.transform;
-  const CityTransform to_local = translation(-1.0 * origin);
+      translation(frame.scale * reference + frame.shift) * similarity_transform(frame.scale, Mat3d::identity(), {}) * fit.transform;
+  const CityTransform to_local = translation({-mesh.origin[0], -mesh.origin[1], -mesh.origin[2]});
   r.start = local_to_scene * to_local;
   log_info(cat(context, ": the scene's frame from ", frame.source, ": ", frame_crs.size() > 60 ? frame_crs.substr(0, 57) + "..." : frame_crs,
                ", scale ", frame.scale, ", shift ", metres(frame.shift.x), " ", metres(frame.shift.y), " ", metres(frame.shift.z),

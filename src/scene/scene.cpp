@@ -53,6 +53,39 @@ void load_colmap(Scene& scene, const std::string& model_dir, const fs::path& ima
     scene.points.push_back(SparsePoint{id, Vec3d{p.xyz[0], p.xyz[1], p.xyz[2]}, p.rgb, p.error});
 }
 
+// The WGS 84 ellipsoid's semi-axes, metres.
+constexpr double kWgs84A = 6378137.0, kWgs84B = 6356752.314245;
+
+// Height of a point, read as ECEF, above the WGS 84 ellipsoid along the geocentric radius: within
+// metres of the geodetic height near the surface, which is all the test below needs.
+double height_above_ellipsoid(const Vec3d& p) {
+  const double r = norm(p), sin_lat = p.z / r, cos_lat = std::hypot(p.x, p.y) / r;
+  return r - kWgs84A * kWgs84B / std::hypot(kWgs84B * cos_lat, kWgs84A * sin_lat);
+}
+
+// A model that COLMAP's model_aligner put into a CRS (reference positions in a projected CRS, or GPS
+// with --alignment_type ecef) has coordinates of millions of metres, which the float32 training cannot
+// hold (a 5,500 km northing keeps half a metre). It is recentred on its cameras, in double, and the frame
+// says where it lay: ECEF (EPSG:4978) when its cameras sit on the Earth's surface read that way, else a
+// projected CRS the model does not name (the city model's, or georef --crs). No model in SfM's
+// arbitrary units reaches 100 km from its origin.
+void recentre_absolute_model(Scene& scene, const std::string& model_dir) {
+  if (scene.views.empty()) return;
+  Vec3d mean{};
+  for (const SceneView& v : scene.views) mean = mean + v.pose.center() * (1.0 / scene.views.size());
+  if (std::max({std::abs(mean.x), std::abs(mean.y), std::abs(mean.z)}) < 1e5) return;
+  const Vec3d shift{-std::round(mean.x), -std::round(mean.y), -std::round(mean.z)};
+  for (SceneView& v : scene.views) v.pose.t = v.pose.t - v.pose.R * shift;
+  for (SparsePoint& p : scene.points) p.xyz = p.xyz + shift;
+  const double h = height_above_ellipsoid(mean);
+  const bool ecef = h > -1000 && h < 10000;
+  scene.frame = SceneFrame{ecef ? "EPSG:4978" : "", 1, shift, model_dir};
+  log_info(cat("scene: the COLMAP model lies in absolute coordinates (", ecef ? "ECEF" : "a projected CRS",
+               ", as model_aligner writes them): recentred by ", static_cast<long long>(-shift.x), " ",
+               static_cast<long long>(-shift.y), " ", static_cast<long long>(-shift.z),
+               ", which the scene's frame keeps"));
+}
+
 // The cloud must lie where the cameras are: a cloud in another frame (an offset not subtracted, another
 // CRS) would start the Gaussians far away from everything the photos see.
 void check_cloud_near_cameras(const Scene& scene, const std::vector<std::string>& files) {
@@ -133,6 +166,7 @@ Scene load_scene(const std::string& dir, const SceneOptions& options) {
   const std::string opf = model_dir.empty() ? find_opf_project(root.string()) : std::string();
   if (!model_dir.empty()) {
     load_colmap(scene, model_dir, image_dir, options);
+    recentre_absolute_model(scene, model_dir);
   } else if (!opf.empty()) {
     load_opf(scene, opf, options);
   } else {

@@ -40,7 +40,8 @@ struct SceneOptions {
 };
 
 // Where the scene frame lies in a CRS, when its source says so: scene = scale * crs + shift.
-// PIX4Dmapper: its offset (scale 1, shift -offset) and output CRS; OPF: the scene reference frame.
+// PIX4Dmapper: its offset (scale 1, shift -offset) and output CRS; OPF: the scene reference frame;
+// a COLMAP model in absolute coordinates (model_aligner): the shift that recentred it at load.
 struct SceneFrame {
   std::string crs;     // as the source writes it (WKT, EPSG:N, ...); "" when it names none
   double scale = 1;
@@ -60,7 +61,7 @@ struct Scene {
 // preferred over text), an OPF project DIR/*.opf (opf.h), then a Pix4D calibrated_camera_parameters.txt
 // under DIR (with the project's offset, output CRS and densified cloud: pix4d_project.h). Images are
 // looked up under DIR/images (OPF: where its camera list says). Distorted cameras become pinhole views
-// (see undistort.h).
+// (see undistort.h). A COLMAP model in absolute coordinates is recentred (Scene::frame says by what).
 // Any problem is a cls::Error naming the file and what is wrong.
 Scene load_scene(const std::string& dir, const SceneOptions& options = {});
 

@@ -11,7 +11,9 @@
 #include "core/run_layout.h"
 #include "error_of.h"
 #include "models/temp_dir.h"
+#include "georef/proj_crs.h"
 #include "pipeline/georeferencing.h"
+#include "scene/colmap.h"
 #include "pipeline/pipeline.h"
 #include "synth/synth_job.h"
 
@@ -156,6 +158,106 @@ TEST(Georeferencing, FromAProjectsFrameToTheTruth) {
   scene.frame.reset();
   const std::string none = test::error_of([&] { georeference_frame(scene, mesh, GeorefOptions{}, "test"); });
   EXPECT_NE(none.find("names no frame"), std::string::npos) << none;
+}
+
+namespace {
+
+// The scene written as a COLMAP model where model_aligner would have put it (its coordinates in a CRS),
+// over the synth scene's photos, and loaded again.
+Scene written_and_loaded(const Scene& scene, const fs::path& synth_dir, const std::string& name) {
+  const fs::path dir = work_path(name);
+  fs::create_directories(dir / "sparse" / "0");
+  ColmapModel model;
+  uint32_t id = 0;
+  for (const SceneView& v : scene.views) {
+    ++id;
+    const PinholeCamera& k = v.camera;
+    model.cameras[id] = Camera{id, CameraModel::Pinhole, k.width, k.height, {k.fx, k.fy, k.cx, k.cy}};
+    ColmapImage& im = model.images[id];
+    im.id = im.camera_id = id;
+    im.name = v.name;
+    im.qvec = rotation_to_qvec(v.pose.R);
+    im.tvec = {v.pose.t.x, v.pose.t.y, v.pose.t.z};
+  }
+  for (const SparsePoint& p : scene.points)
+    model.points[p.id] = ColmapPoint3D{p.id, {p.xyz.x, p.xyz.y, p.xyz.z}, p.rgb, 0, {}};
+  write_colmap_binary((dir / "sparse" / "0").string(), model);
+  fs::create_directory_symlink(synth_dir / "images", dir / "images");
+  return load_scene(dir.string());
+}
+
+CityTransform translation(Vec3d t) { return similarity_transform(1, Mat3d::identity(), t); }
+
+// WGS 84 latitude, longitude (degrees) and ellipsoidal height -> ECEF, the textbook closed form: an
+// oracle apart from PROJ, which the code under test uses.
+Vec3d ecef(double latitude, double longitude, double height) {
+  const double a = 6378137.0, f = 1 / 298.257223563, e2 = f * (2 - f);
+  const double phi = latitude * M_PI / 180, lambda = longitude * M_PI / 180;
+  const double n = a / std::sqrt(1 - e2 * std::sin(phi) * std::sin(phi));
+  return {(n + height) * std::cos(phi) * std::cos(lambda), (n + height) * std::cos(phi) * std::sin(lambda),
+          (n * (1 - e2) + height) * std::sin(phi)};
+}
+
+}  // namespace
+
+// A COLMAP model that model_aligner put into the city's projected CRS (reference positions in UTM, 2 m
+// off as a drone's GPS): loading recentres it (float32 training cannot hold a 5,400 km northing) and
+// keeps the shift as the scene's frame, from which georef ends on the truth.
+TEST(Georeferencing, FromACOLMAPModelInAProjectedCRS) {
+  const fs::path synth_dir = gps_scene("aligned_source", "h=1,v=1,outliers=0");
+  const CityTransform truth = read_city_transform((synth_dir / "city" / "transform_true.json").string());
+  const SemanticMesh mesh = load_city_model(kFzk, Taxonomy::builtin(), 0);
+  const Vec3d error{1.5, -1.0, 2.0};
+  const Scene scene = written_and_loaded(
+      moved(load_scene(synth_dir.string()), translation(error) * inverse(truth)), synth_dir, "aligned_utm");
+  ASSERT_TRUE(scene.frame.has_value());
+  EXPECT_EQ(scene.frame->crs, "");
+  // The frame says scene = CRS + shift; the model lies `error` beyond that.
+  EXPECT_GT(std::abs(scene.frame->shift.y), 1e6);
+  const CityTransform crs_to_scene = translation(scene.frame->shift) * translation(error);
+  const GeorefResult r = georeference_frame(scene, mesh, GeorefOptions{}, "test");
+  EXPECT_NEAR(transform_difference(r.start, translation(scene.frame->shift), mesh).centre, 0, 1e-6);
+  const TransformDifference final = transform_difference(r.transform, crs_to_scene, mesh);
+  EXPECT_LT(final.max_displacement, 0.03) << r.record.dump();
+  EXPECT_LT(final.rotation_deg, 0.05);
+}
+
+// model_aligner --alignment_type ecef: the model in Earth-centred coordinates from the photos' GPS, whose
+// heights are ellipsoidal (here the city model's plus 45 m, EGM96 says about 48 m at FZK-Haus) and 2 m
+// off to the east. The truth is where the textbook ECEF formula puts the city model's points; loading
+// names the frame EPSG:4978, and georef ends within 3 cm of that truth at every vertex.
+TEST(Georeferencing, FromACOLMAPModelInECEF) {
+  const fs::path synth_dir = gps_scene("ecef_source", "h=1,v=1,outliers=0");
+  const CityTransform truth = read_city_transform((synth_dir / "city" / "transform_true.json").string());
+  const SemanticMesh mesh = load_city_model(kFzk, Taxonomy::builtin(), 0);
+  const GpsProjection utm(25832);
+  auto true_ecef = [&](const Vec3d& p) {
+    const auto latlon = utm.unproject(p.x, p.y);
+    return ecef(latlon[0], latlon[1], p.z + 45.0);
+  };
+  // Over the building the map is a similarity within millimetres (UTM scales horizontal distances by
+  // its k = 0.9996..., heights not): fitted to a 40 m grid.
+  std::vector<Vec3d> city, earth;
+  for (double x : {-20.0, 0.0, 20.0})
+    for (double y : {-20.0, 0.0, 20.0})
+      for (double z : {0.0, 20.0}) {
+        city.push_back({mesh.origin[0] + x, mesh.origin[1] + y, mesh.origin[2] + z});
+        earth.push_back(true_ecef(city.back()));
+      }
+  const SimilarityFit city_to_ecef = robust_similarity(city, earth);
+  for (double e : city_to_ecef.residuals) ASSERT_LT(e, 0.01);
+  const Vec3d east = city_to_ecef.transform.apply(city[3 * 2 * 2]) - city_to_ecef.transform.apply(city[0]);
+  const CityTransform error = translation((2.0 / norm(east)) * east);
+  const Scene scene = written_and_loaded(moved(load_scene(synth_dir.string()), error * city_to_ecef.transform * inverse(truth)),
+                                         synth_dir, "aligned_ecef");
+  ASSERT_TRUE(scene.frame.has_value());
+  EXPECT_EQ(scene.frame->crs, "EPSG:4978");
+  const CityTransform crs_to_scene = translation(scene.frame->shift) * error * city_to_ecef.transform;
+  const GeorefResult r = georeference_frame(scene, mesh, GeorefOptions{}, "test");
+  const TransformDifference final = transform_difference(r.transform, crs_to_scene, mesh);
+  EXPECT_LT(final.max_displacement, 0.03) << r.record.dump();
+  EXPECT_LT(final.rotation_deg, 0.05);
+  EXPECT_TRUE(r.icp_problem.empty()) << r.icp_problem;
 }
 
 // `run --georef auto` on a PIX4Dmapper project (its calibration written here from a synth scene, whose
