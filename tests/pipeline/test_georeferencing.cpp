@@ -150,6 +150,17 @@ TEST(Georeferencing, FromAProjectsFrameToTheTruth) {
   EXPECT_LT(final.max_displacement, 0.03) << r.record.dump();
   EXPECT_LT(final.rotation_deg, 0.05);
   EXPECT_TRUE(r.icp_problem.empty()) << r.icp_problem;
+  EXPECT_TRUE(r.warnings.empty()) << r.record.dump();
+
+  // Points near the model but not on it (here every one 0.26 m off, half one way, half the other, as when ICP has slid onto other
+  // surfaces and its pairs hold it there): georef says the result cannot be trusted.
+  Scene blurred = scene;
+  for (size_t i = 0; i < blurred.points.size(); ++i)
+    blurred.points[i].xyz = blurred.points[i].xyz + (i % 2 ? 1.0 : -1.0) * Vec3d{0.15, -0.15, 0.15};
+  const GeorefResult slid = georeference_frame(blurred, mesh, GeorefOptions{}, "test");
+  ASSERT_EQ(slid.warnings.size(), 1u) << slid.record.dump();
+  EXPECT_NE(slid.warnings[0].find("slid onto other surfaces"), std::string::npos) << slid.warnings[0];
+  EXPECT_EQ(slid.record["warnings"].size(), 1u);
 
   // A frame in a CRS PROJ does not know, and a scene without a frame: errors saying so.
   scene.frame->crs = "EPSG:999999";
