@@ -22,6 +22,7 @@ void PipelineConfig::validate() const {
   if (resolution != 1 && resolution != 2 && resolution != 4 && resolution != 8)
     throw UsageError("run: --resolution must be 1, 2, 4 or 8");
   if (max_side < 0) throw UsageError("run: --max-side must be 0 (off) or a number of pixels");
+  if (feature_height < 0) throw UsageError("run: --feature-height must be 0 (off) or a number of pixels");
   if (rgb_iterations < 0 || language_iterations < 0 || autoencoder_epochs < 0)
     throw UsageError("run: iteration and epoch counts must not be negative (0: the feature provider's schedule)");
   if (!(alpha >= 0 && alpha <= 1)) throw UsageError("run: --alpha must be in [0, 1]");
@@ -99,6 +100,9 @@ OptionList<PipelineConfig> make_pipeline_options() {
       .add("max-side", &C::max_side,
            "with -r 1, photos whose longer side exceeds this many pixels are loaded at it (3DGS loads photos wider "
            "than 1600 px at 1600); 0 keeps them whole")
+      .add("feature-height", &C::feature_height,
+           "with -r 1, the label maps, features, language fields, queries and evaluation use the photos at most this "
+           "tall (LangSplat extracts its features at 1080 px); 0 uses train-rgb's size")
       .add("align-distance", &C::align_distance, "alignment check: distance threshold in city-model metres")
       .add("georef", &C::georef,
            "find the city transform before aligning (as `georef`): from the frame a Pix4D/OPF project names (frame), "

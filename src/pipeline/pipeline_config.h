@@ -20,6 +20,7 @@ struct PipelineConfig {
   CityModelOptions city_options;
   int resolution = 1;                      // 3DGS-style image downscaling: 1, 2, 4 or 8
   int max_side = 1600;                     // with -r 1: photos with a longer side load at this (0 = whole)
+  int feature_height = 1080;               // with -r 1: the language stages' photos at most this tall (0 = as train-rgb's)
   double align_distance = 0.5;             // alignment check threshold (city-model metres)
   std::string georef = "auto";             // the city transform from a project's frame or the photos' GPS: off, frame, gps or auto (stage_georef.cpp)
   std::string crs;                         // the city model's CRS for --georef ("" = its srsName / referenceSystem)

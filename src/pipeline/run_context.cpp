@@ -1,10 +1,12 @@
 #include "pipeline/run_context.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "core/error.h"
 #include "core/log.h"
 #include "raycast/label_export.h"
+#include "scene/image_loader.h"
 
 namespace cls {
 namespace fs = std::filesystem;
@@ -38,12 +40,25 @@ RunContext read_inputs(PipelineConfig c) {
     log_info(cat("run: photos of ", first.source_camera.width, "x", first.source_camera.height, " are loaded at ",
                  first.camera.width, "x", first.camera.height, " (--max-side ", c.max_side,
                  ", as 3DGS does; --max-side 0 keeps them whole)"));
+  // The language stages see the photos as LangSplat's preprocessing does (at most 1080 px tall): loaded
+  // again at that size only where a photo is taller.
+  Scene language_scene = scene;
+  scene_options.max_height = c.feature_height;
+  const bool taller = std::any_of(scene.views.begin(), scene.views.end(), [&](const SceneView& v) {
+    return scale_to_resolution(v.camera, scene_options).height != v.camera.height;
+  });
+  if (c.resolution == 1 && taller) {
+    language_scene = load_scene(c.scene_dir.string(), scene_options);
+    const SceneView& l = language_scene.views.front();
+    log_info(cat("run: the label maps, features and language fields use the photos at ", l.camera.width, "x",
+                 l.camera.height, " (--feature-height ", c.feature_height, ", as LangSplat; 0: train-rgb's size)"));
+  }
   SceneCityModel city = load_scene_city_model(c.city, c.city_transform, c.city_options, "run");
   const RunLayout layout(c.out_dir);
   label_map_dirs(scene, layout.labels());  // every view has a name its label maps can be written under
   FeatureSource source = resolve_feature_source(c, city.taxonomy);
   const std::string transform = c.city_transform;
-  return RunContext{std::move(c), layout, std::move(scene), std::move(city), std::move(source),
+  return RunContext{std::move(c), layout, std::move(scene), std::move(language_scene), std::move(city), std::move(source),
                     RunRecord(layout.run_json(), nlohmann::json::object()), transform, {},
                     PipelineOutcome::Finished, ""};
 }

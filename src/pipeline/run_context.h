@@ -23,7 +23,9 @@ enum class PipelineOutcome {
 struct RunContext {
   PipelineConfig config;  // out_dir resolved
   RunLayout layout;
-  Scene scene;
+  Scene scene;           // at train-rgb's size (--max-side): the photometric stages
+  Scene language_scene;  // the same views at the language stages' size (--feature-height): label maps,
+                         // features, language fields, queries, evaluation
   SceneCityModel city;
   FeatureSource source;
   RunRecord record;

@@ -37,10 +37,10 @@ std::vector<Stage> evaluate_stages(RunContext& run) {
     for (const std::string& method : run.methods()) {
       e.out_dir = (dir / method).string();
       const LanguageModel model = load_language_model(run.layout.language(method).string());
-      results.emplace_back(method, evaluate_model(run.scene, model, *run.source.provider, run.city.taxonomy, e));
+      results.emplace_back(method, evaluate_model(run.language_scene, model, *run.source.provider, run.city.taxonomy, e));
     }
     e.out_dir = (dir / kLabelMapsMethod).string();
-    results.emplace_back(kLabelMapsMethod, evaluate_label_maps(run.scene, run.city.taxonomy, e));
+    results.emplace_back(kLabelMapsMethod, evaluate_label_maps(run.language_scene, run.city.taxonomy, e));
     const std::string md =
         write_evaluation(dir, results, run.config.scene_dir.string(), gt.string(), run.source.warning);
     std::fprintf(stdout, "%s", md.c_str());

@@ -34,9 +34,9 @@ std::vector<Stage> feature_stages(RunContext& run) {
               {"settings", feature_stage_options().settings_json(o)}};
   s.reused_fields = {{"dir", o.out_dir.string()}, {"computed_views", 0}};
   s.run = [&run, o] {
-    const int computed = run_feature_stage(run.scene, *run.source.provider, run.city.taxonomy, o);
+    const int computed = run_feature_stage(run.language_scene, *run.source.provider, run.city.taxonomy, o);
     if (interrupt_requested()) return StageReport::interrupted();
-    log_info(cat("run: features: ", computed, " views computed, ", run.scene.views.size() - computed, " reused (",
+    log_info(cat("run: features: ", computed, " views computed, ", run.language_scene.views.size() - computed, " reused (",
                  o.out_dir.string(), ")"));
     return StageReport::done({{"dir", o.out_dir.string()}, {"computed_views", computed}});
   };

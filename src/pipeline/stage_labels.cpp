@@ -17,10 +17,10 @@ std::vector<Stage> label_stages(RunContext& run) {
               {"city_transform", file_fingerprint(run.city_transform)},
               {"taxonomy", file_fingerprint(c.city_options.taxonomy_path)},
               {"lod", c.city_options.lod},
-              {"views", views_fingerprint(run.scene)}};
+              {"views", views_fingerprint(run.language_scene)}};
   s.reused_fields = {{"dir", dir.string()}};
   s.run = [&run, dir] {
-    const LabelExportSummary e = export_label_maps(run.scene, run.city, dir);
+    const LabelExportSummary e = export_label_maps(run.language_scene, run.city, dir);
     log_info(cat("run: labels: wrote ", e.views, " views to ", dir.string(), " (mean coverage ", 100 * e.mean_coverage,
                  "%)"));
     return StageReport::done({{"dir", dir.string()}, {"mean_coverage", e.mean_coverage}});

@@ -43,7 +43,7 @@ Stage language_stage(RunContext& run, const std::string& method) {
   s.run = [&run, o, method, fingerprint = s.fingerprint()] {
     LanguageTrainOptions t = o;
     t.resume = resume_training(RunLayout::training_started(t.out_dir), RunLayout::checkpoints(t.out_dir), fingerprint);
-    const LanguageTrainReport r = train_language(run.scene, t);
+    const LanguageTrainReport r = train_language(run.language_scene, t);
     if (r.interrupted) return StageReport::interrupted();
     log_info(cat("run: train-language (", method, "): ", t.iterations, " iterations per level in ", r.seconds, " s"));
     return StageReport::done({{"dir", t.out_dir}, {"resumed", t.resume}});

@@ -22,7 +22,7 @@ std::vector<Stage> query_stages(RunContext& run) {
     q.model_dir = model_dir.string();
     q.texts = classes;
     q.out_dir = run.layout.query(method).string();
-    q.views = {run.scene.views.front().name};
+    q.views = {run.language_scene.views.front().name};
     Stage s;
     s.name = per_method("query", method);
     s.stamp = RunLayout::stamp_in(q.out_dir);
@@ -33,7 +33,7 @@ std::vector<Stage> query_stages(RunContext& run) {
     s.run = [&run, q] {
       at::NoGradGuard no_grad;
       LanguageModel model = load_language_model(q.model_dir);
-      run_query(model, *run.source.provider, {&run.scene.views.front()}, q);
+      run_query(model, *run.source.provider, {&run.language_scene.views.front()}, q);
       log_info(cat("run: query: scores and selections for ", q.texts.size(), " classes in ", q.out_dir));
       return StageReport::done({{"dir", q.out_dir}});
     };

@@ -19,6 +19,7 @@ void check_scene_options(const SceneOptions& options) {
     throw Error("resolution factor must be 1, 2, 4 or 8, not " + std::to_string(r));
   if (options.target_width < 0) throw Error("target width must not be negative");
   if (options.max_side < 0) throw Error("the longest image side must not be negative");
+  if (options.max_height < 0) throw Error("the largest image height must not be negative");
   if (options.target_width > 0 && r != 1) throw Error("give either a resolution factor or a target width, not both");
 }
 
@@ -30,8 +31,11 @@ PinholeCamera scale_to_resolution(const PinholeCamera& full, const SceneOptions&
     const double global_down = double(full.width) / options.target_width;
     w = options.target_width;
     h = static_cast<int>(full.height / global_down);
-  } else if (options.resolution_factor == 1 && options.max_side > 0 && long_side > options.max_side) {
-    const double global_down = double(long_side) / options.max_side;  // 3DGS truncates, as here
+  } else if (options.resolution_factor == 1 && ((options.max_side > 0 && long_side > options.max_side) ||
+                                                  (options.max_height > 0 && full.height > options.max_height))) {
+    // 3DGS and LangSplat truncate, as here.
+    const double global_down = std::max(options.max_side > 0 ? double(long_side) / options.max_side : 1.0,
+                                        options.max_height > 0 ? double(full.height) / options.max_height : 1.0);
     w = static_cast<int>(full.width / global_down);
     h = static_cast<int>(full.height / global_down);
   } else {

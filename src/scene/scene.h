@@ -37,6 +37,10 @@ struct SceneOptions {
   // Without a factor or a target width, photos whose long side exceeds this are loaded at it (0 = off),
   // as the 3DGS reference code loads photos wider than 1600 px at 1600 unless -r is given.
   int max_side = 0;
+  // Without a factor or a target width, photos taller than this are loaded at it as well (0 = off), as
+  // LangSplat extracts its features from photos taller than 1080 px at 1080 ("1080P"); with max_side,
+  // the stronger of the two reductions.
+  int max_height = 0;
 };
 
 // Where the scene frame lies in a CRS, when its source says so: scene = scale * crs + shift.

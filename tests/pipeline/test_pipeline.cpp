@@ -392,6 +392,38 @@ TEST(Pipeline, StopAfterEndsTheRunAfterThatStep) {
   EXPECT_TRUE(fs::exists(r.report));
 }
 
+// Photos taller than --feature-height: train-rgb and its renders keep the training size, the label maps,
+// features, language fields and evaluation use the photos at that height (as LangSplat's 1080P), every
+// stage to the end; without it, one size for all.
+TEST(Pipeline, LanguageStagesUseThePhotosAtTheFeatureHeight) {
+  const cv::Mat photo = cv::imread((shared_scene() / "images" / "0000.png").string());
+  ASSERT_FALSE(photo.empty());
+  PipelineConfig c = quick(shared_scene(), work_path("feature_height"));
+  c.feature_height = photo.rows * 2 / 3;
+  const int width = static_cast<int>(photo.cols / (double(photo.rows) / c.feature_height));
+  const PipelineResult r = run_pipeline(c);
+  EXPECT_EQ(r.outcome, PipelineOutcome::Finished);
+  const nlohmann::json record = record_of(c.out_dir);
+  for (const std::string& stage : kAllStages) EXPECT_EQ(status(record, stage), "done") << stage;
+  const cv::Mat level1 = cv::imread((RunLayout(c.out_dir).labels() / "0000" / "level1.png").string(), cv::IMREAD_UNCHANGED);
+  EXPECT_EQ(level1.rows, c.feature_height);
+  EXPECT_EQ(level1.cols, width);
+  size_t renders = 0;
+  for (const auto& e : fs::recursive_directory_iterator(RunLayout(c.out_dir).render()))
+    if (e.path().filename() == "rgb.png") {
+      const cv::Mat rgb = cv::imread(e.path().string());
+      EXPECT_EQ(rgb.size(), photo.size()) << e.path();
+      ++renders;
+    }
+  EXPECT_GT(renders, 0u);
+
+  c.feature_height = 0;
+  run_pipeline(c);
+  EXPECT_EQ(status(record_of(c.out_dir), "labels"), "done") << "the label maps are redone at the other size";
+  EXPECT_EQ(cv::imread((RunLayout(c.out_dir).labels() / "0000" / "level1.png").string(), cv::IMREAD_UNCHANGED).size(),
+            photo.size());
+}
+
 // Bad inputs fail with the file named before anything is written.
 TEST(Pipeline, BadInputsFailWithTheFileNamedAndWriteNothing) {
   const fs::path out = work_path("bad");

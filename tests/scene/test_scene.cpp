@@ -142,8 +142,8 @@ TEST(ImageLoader, ScaleFollows3dgsRounding) {
 
 // A phone's 4000x3000 photo under max_side 1600, as 3DGS's loader does it: global_down = 4000 / 1600 = 2.5,
 // int(4000 / 2.5) x int(3000 / 2.5) = 1600 x 1200; a portrait 3000x4000 one by its long side; smaller photos,
-// and any explicit -r, are left alone.
-TEST(ImageLoader, MaxSideLoadsLargePhotosAtTheLongSide) {
+// and any explicit -r, are left alone. max_height as LangSplat's preprocessing does it.
+TEST(ImageLoader, MaxSideLoadsLargePhotosAtTheLongSideAndMaxHeightAtTheHeight) {
   SceneOptions o;
   o.max_side = 1600;
   const PinholeCamera landscape = scale_to_resolution({3000, 3000, 2000, 1500, 4000, 3000}, o);
@@ -154,6 +154,20 @@ TEST(ImageLoader, MaxSideLoadsLargePhotosAtTheLongSide) {
   EXPECT_EQ(portrait.width, 1200);
   EXPECT_EQ(portrait.height, 1600);
   EXPECT_EQ(scale_to_resolution({500, 500, 320, 240, 640, 480}, o).width, 640);
+  // LangSplat's features: photos taller than 1080 at 1080 (global_down = 3000 / 1080), the stronger of
+  // the two reductions: int(4000 / 2.777...) = 1440; a portrait one int(3000 / 3.7037) = 810 x 1080.
+  o.max_height = 1080;
+  const PinholeCamera features = scale_to_resolution({3000, 3000, 2000, 1500, 4000, 3000}, o);
+  EXPECT_EQ(features.width, 1440);
+  EXPECT_EQ(features.height, 1080);
+  EXPECT_DOUBLE_EQ(features.fy, 3000 * 1080.0 / 3000);
+  const PinholeCamera features_portrait = scale_to_resolution({3000, 3000, 1500, 2000, 3000, 4000}, o);
+  EXPECT_EQ(features_portrait.width, 810);
+  EXPECT_EQ(features_portrait.height, 1080);
+  EXPECT_EQ(scale_to_resolution({500, 500, 320, 240, 640, 480}, o).height, 480);
+  o.max_side = 0;
+  EXPECT_EQ(scale_to_resolution({3000, 3000, 2000, 1500, 4000, 3000}, o).width, 1440);
+  o.max_side = 1600;
   o.resolution_factor = 2;
   EXPECT_EQ(scale_to_resolution({3000, 3000, 2000, 1500, 4000, 3000}, o).width, 2000);
   o.max_side = -1;
