@@ -1,6 +1,7 @@
 #include "georef/proj_crs.h"
 
 #include <proj.h>
+#include <proj_experimental.h>  // proj_create_compound_crs
 
 #include <cmath>
 #include <string>
@@ -141,6 +142,49 @@ std::optional<double> Egm96Geoid::undulation(double latitude, double longitude) 
   const PJ_COORD out = proj_trans(shift_, PJ_FWD, proj_coord(longitude, latitude, 0, 0));
   if (!std::isfinite(out.xyz.z) || out.xyz.z == HUGE_VAL) return std::nullopt;
   return out.xyz.z;  // multiplier +1: z + N
+}
+
+GeoidHeights::GeoidHeights(int horizontal_epsg, int vertical_epsg) : context_(quiet_context()) {
+  // Geographic 3D WGS 84 -> the compound of the model's horizontal CRS's geographic base and its heights;
+  // of PROJ's candidate operations the first that is not a ballpark one and whose grids are all present.
+  PJ* source = proj_create(context_, "EPSG:4979");
+  PJ* horizontal = proj_create(context_, ("EPSG:" + std::to_string(horizontal_epsg)).c_str());
+  PJ* vertical = proj_create(context_, ("EPSG:" + std::to_string(vertical_epsg)).c_str());
+  PJ* base = horizontal ? proj_crs_get_geodetic_crs(context_, horizontal) : nullptr;
+  PJ* target = base && vertical ? proj_create_compound_crs(context_, "", base, vertical) : nullptr;
+  PJ_OPERATION_FACTORY_CONTEXT* factory = target ? proj_create_operation_factory_context(context_, nullptr) : nullptr;
+  PJ_OBJ_LIST* operations = nullptr;
+  if (factory) {
+    proj_operation_factory_context_set_grid_availability_use(context_, factory,
+                                                             PROJ_GRID_AVAILABILITY_DISCARD_OPERATION_IF_MISSING_GRID);
+    proj_operation_factory_context_set_spatial_criterion(context_, factory, PROJ_SPATIAL_CRITERION_PARTIAL_INTERSECTION);
+    operations = proj_create_operations(context_, source, target, factory);
+  }
+  for (int i = 0; operations && i < proj_list_get_count(operations) && !transform_; ++i) {
+    PJ* op = proj_list_get(context_, operations, i);
+    if (op && proj_coordoperation_is_instantiable(context_, op) &&
+        !proj_coordoperation_has_ballpark_transformation(context_, op) && proj_coordoperation_get_grid_used_count(context_, op) > 0) {
+      transform_ = proj_normalize_for_visualization(context_, op);  // longitude, latitude, height
+      const char* name = proj_get_name(op);
+      operation_ = name ? name : "";
+    }
+    proj_destroy(op);
+  }
+  proj_list_destroy(operations);
+  proj_operation_factory_context_destroy(factory);
+  for (PJ* p : {source, horizontal, vertical, base, target}) proj_destroy(p);
+}
+
+GeoidHeights::~GeoidHeights() {
+  proj_destroy(transform_);
+  proj_context_destroy(context_);
+}
+
+std::optional<double> GeoidHeights::height(double latitude, double longitude, double ellipsoidal_height) const {
+  if (!transform_) return std::nullopt;
+  const PJ_COORD out = proj_trans(transform_, PJ_FWD, proj_coord(longitude, latitude, ellipsoidal_height, 0));
+  if (!std::isfinite(out.xyz.z) || out.xyz.z == HUGE_VAL) return std::nullopt;
+  return out.xyz.z;
 }
 
 }  // namespace cls

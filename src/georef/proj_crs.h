@@ -78,4 +78,27 @@ class Egm96Geoid {
   PJconsts* shift_ = nullptr;
 };
 
+// WGS 84 ellipsoidal heights -> heights of a city model's vertical CRS (DHHN2016, NAP, EGM96 height, ...)
+// through PROJ's own transformation with that datum's geoid grid, where the grid is installed: Debian's
+// proj-data holds EGM96 and none of the national ones (GCG2016, NLGEO2018, ...), which users add to
+// ~/.local/share/proj or $PROJ_DATA (projsync, or the agency's file). Only operations that use a grid are
+// taken: PROJ's ballpark fallback (heights unchanged) is what georeferencing's vertical search already does.
+class GeoidHeights {
+ public:
+  GeoidHeights(int horizontal_epsg, int vertical_epsg);
+  ~GeoidHeights();
+  GeoidHeights(const GeoidHeights&) = delete;
+  GeoidHeights& operator=(const GeoidHeights&) = delete;
+
+  bool available() const { return transform_ != nullptr; }
+  const std::string& operation() const { return operation_; }  // PROJ's name of the transformation
+  // The height in the vertical CRS; nullopt when not available or the grid does not cover the position.
+  std::optional<double> height(double latitude, double longitude, double ellipsoidal_height) const;
+
+ private:
+  pj_ctx* context_ = nullptr;
+  PJconsts* transform_ = nullptr;
+  std::string operation_;
+};
+
 }  // namespace cls

@@ -214,8 +214,14 @@ std::vector<std::optional<GpsFix>> scene_gps(const Scene& scene) {
 GeorefResult georeference(const Scene& scene, const std::vector<std::optional<GpsFix>>& gps, const SemanticMesh& mesh,
                           const GeorefOptions& options, const std::string& context) {
   GeorefResult r;
-  r.epsg = city_model_crs(mesh.source_path, mesh.crs, options.crs).horizontal_epsg;
+  const CrsName crs = city_model_crs(mesh.source_path, mesh.crs, options.crs);
+  r.epsg = crs.horizontal_epsg;
   const GpsProjection projection(r.epsg);
+  // The model's own height datum through its geoid where PROJ has the grid (national geoids: installed by
+  // the user), else EGM96 (proj-data), else none: the vertical search takes up what is left.
+  const std::optional<GeoidHeights> national =
+      crs.vertical_epsg ? std::optional<GeoidHeights>(std::in_place, crs.horizontal_epsg, crs.vertical_epsg) : std::nullopt;
+  const bool use_national = national && national->available();
   const Egm96Geoid geoid;
   r.images = scene.views.size();
 
@@ -232,7 +238,12 @@ GeorefResult georeference(const Scene& scene, const std::vector<std::optional<Gp
     }
     const std::array<double, 2> xy = projection.project(gps[i]->latitude, gps[i]->longitude);
     double height = *gps[i]->altitude;
-    if (const std::optional<double> n = geoid.undulation(gps[i]->latitude, gps[i]->longitude)) {
+    std::optional<double> n = geoid.undulation(gps[i]->latitude, gps[i]->longitude);
+    if (use_national) {
+      const std::optional<double> h = national->height(gps[i]->latitude, gps[i]->longitude, height);
+      n = h ? std::optional<double>(height - *h) : std::nullopt;
+    }
+    if (n) {
       height -= *n;
       undulation_sum += *n;
       ++undulations;
@@ -259,10 +270,17 @@ GeorefResult georeference(const Scene& scene, const std::vector<std::optional<Gp
   log_info(cat(context, ": GPS: ", r.gps.inliers, " of ", centres.size(), " positions agree with the cameras within ",
                metres(r.gps.threshold), " (RMS ", metres(r.gps.rms), "); ", rejected.size(), " rejected", rejected_text,
                "; ", r.gps.transform.scale(), " m per scene unit"));
-  log_info(r.undulation ? cat(context, ": heights: WGS 84 ellipsoid -> EGM96 geoid (N = ", metres(*r.undulation),
-                              ", proj-data's egm96_15.gtx)")
-                        : cat(context, ": heights: as written (the EGM96 grid egm96_15.gtx of proj-data is not "
-                                       "installed); the vertical search finds the datum"));
+  r.geoid = !r.undulation ? "" : use_national ? national->operation() : "EGM96";
+  log_info(!r.undulation ? cat(context, ": heights: as written (the EGM96 grid egm96_15.gtx of proj-data is not "
+                                        "installed); the vertical search finds the datum")
+           : use_national ? cat(context, ": heights: WGS 84 ellipsoid -> EPSG:", crs.vertical_epsg, " through PROJ's ",
+                                r.geoid, " (N = ", metres(*r.undulation), ")")
+                          : cat(context, ": heights: WGS 84 ellipsoid -> EGM96 geoid (N = ", metres(*r.undulation),
+                                ", proj-data's egm96_15.gtx)",
+                                crs.vertical_epsg ? cat("; the grid of EPSG:", crs.vertical_epsg,
+                                                        "'s own geoid is not installed (PROJ_DATA): the vertical search "
+                                                        "takes up the difference")
+                                                  : std::string()));
   const CityTransform to_local = translation({-mesh.origin[0], -mesh.origin[1], -mesh.origin[2]});
   r.start = inverse(r.gps.transform) * to_local;
 
@@ -290,7 +308,7 @@ GeorefResult georeference(const Scene& scene, const std::vector<std::optional<Gp
               {"gps_threshold", r.gps.threshold},
               {"gps_rms", r.gps.rms},
               {"scene_scale", r.gps.transform.scale()},
-              {"geoid", r.undulation ? nlohmann::json("EGM96") : nlohmann::json(nullptr)},
+              {"geoid", r.undulation ? nlohmann::json(r.geoid) : nlohmann::json(nullptr)},
               {"undulation", r.undulation ? nlohmann::json(*r.undulation) : nlohmann::json(nullptr)}};
   search_and_refine(scene, mesh, options, context, r.gps.transform, r);
   return r;

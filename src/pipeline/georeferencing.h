@@ -2,7 +2,7 @@
 // Georeferencing from the photos' GPS (issue 34, docs/alignment.md "From the photos' GPS"): the city
 // transform found without a hand-written JSON, in four steps:
 //   1. the registered photos' EXIF GPS in the city model's CRS (PROJ); heights from the WGS 84
-//      ellipsoid to EGM96 where proj-data installs its grid;
+//      ellipsoid to the model's height datum where PROJ has its geoid grid, else to EGM96 (proj-data);
 //   2. the similarity from the SfM camera centres to those positions, robust to phones' outliers
 //      (least median of squares, georef/robust_similarity.h);
 //   3. what GPS cannot resolve, searched against the city mesh: the vertical offset (a phone's height
@@ -43,7 +43,8 @@ struct GeorefResult {
   int epsg = 0;
   size_t images = 0, fixes = 0, without_altitude = 0;
   SimilarityFit gps;                  // over the fixes with an altitude, in metres of the CRS
-  std::optional<double> undulation;   // mean EGM96 geoid height N subtracted from the GPS heights
+  std::optional<double> undulation;   // mean geoid height N subtracted from the GPS heights
+  std::string geoid;                  // which: "EGM96", or PROJ's transformation to the model's height datum
   double vertical_offset = 0;         // step 3: metres added to the GPS heights
   double yaw_deg = 0;                 // step 3: rotation about the vertical through the points
   double yaw_range_deg = 0;           // how far the yaw was searched (0: not)

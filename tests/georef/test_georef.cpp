@@ -244,3 +244,22 @@ TEST(Egm96Geoid, UndulationsAtPublishedPlaces) {
   EXPECT_LT(*geoid.undulation(4.75, 78.75), -100);
   EXPECT_NEAR(*geoid.undulation(49.01, 8.40), 48.2, 1.0);
 }
+
+// A vertical CRS's heights through PROJ's geoid transformation where its grid is installed. EGM96 height
+// (EPSG:5773) is one whose grid proj-data installs: its heights must be the ellipsoidal ones less the
+// undulation Egm96Geoid reads from the same grid by another path (vgridshift). DHHN2016 (EPSG:7837) needs
+// GCG2016, which no Debian package holds: where it is not installed, nothing is claimed.
+TEST(GeoidHeights, AVerticalCRSThroughItsInstalledGrid) {
+  const Egm96Geoid egm96;
+  if (!egm96.available()) GTEST_SKIP() << "proj-data's egm96_15.gtx is not installed";
+  const GeoidHeights heights(25832, 5773);
+  ASSERT_TRUE(heights.available());
+  EXPECT_NE(heights.operation().find("EGM96"), std::string::npos) << heights.operation();
+  for (const auto& [lat, lon] : std::vector<std::pair<double, double>>{{49.01, 8.40}, {51.7, 7.1}, {47.5, 10.9}}) {
+    const std::optional<double> h = heights.height(lat, lon, 200.0);
+    ASSERT_TRUE(h.has_value());
+    EXPECT_NEAR(*h, 200.0 - *egm96.undulation(lat, lon), 0.01) << lat << " " << lon;
+  }
+  const GeoidHeights dhhn2016(25832, 7837);
+  if (dhhn2016.available()) EXPECT_NEAR(*dhhn2016.height(49.01, 8.40, 200.0), 200.0 - 48.0, 2.0) << dhhn2016.operation();
+}

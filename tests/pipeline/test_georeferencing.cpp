@@ -68,6 +68,17 @@ TEST(Georeferencing, FromPhoneGpsToTheTruthWithNoTransformGiven) {
   EXPECT_LT(final.max_displacement, 0.03) << r.record.dump();
   EXPECT_LT(final.rotation_deg, 0.05);
   EXPECT_TRUE(r.icp_problem.empty()) << r.icp_problem;
+  EXPECT_EQ(r.geoid, "EGM96") << "FZK-Haus's DHHN92 heights: no grid of their geoid in proj-data";
+
+  // A model whose heights are EGM96 heights (EPSG:5773): PROJ's own transformation to them, whose grid
+  // proj-data installs, gives the same geoid heights by another path.
+  GeorefOptions egm96_heights;
+  egm96_heights.crs = "urn:ogc:def:crs,crs:EPSG::25832,crs:EPSG::5773";
+  const GeorefResult v = georeference(scene, scene_gps(scene), mesh, egm96_heights, "test");
+  EXPECT_NE(v.geoid.find("EGM96 height"), std::string::npos) << v.geoid;
+  ASSERT_TRUE(v.undulation.has_value());
+  EXPECT_NEAR(*v.undulation, *r.undulation, 0.01);
+  EXPECT_LT(transform_difference(v.transform, truth, mesh).max_displacement, 0.03);
 }
 
 TEST(Georeferencing, TooFewPhotosWithGpsIsAnErrorNamingTheScene) {
