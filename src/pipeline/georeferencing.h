@@ -51,6 +51,7 @@ struct GeorefResult {
   double horizontal_shift = 0;        // step 3: metres the points moved horizontally
   double horizontal_range = 0;        // how far the shift was searched (in x and in y)
   double search_fraction_before = 0, search_fraction = 0;  // share of points within search_gate, before / after
+  double scale_sigma = 0;             // the GPS fit's scale standard error, relative (0: not from GPS)
   std::vector<std::string> warnings;  // why the result may not be trusted though ICP ran
   std::optional<AlignmentRefinement> icp;
   std::string icp_problem;            // why step 4 did not run or failed ("" when it ran)
