@@ -287,6 +287,7 @@ AutoencoderReport Autoencoder::train(const at::Tensor& sam_features, const Autoe
       loss.backward();
       adam.step();
       loss_sum += per_sample.sum().item<double>();
+      if (o.on_batch) o.on_batch(starts.size() - 1);
     }
     report.train_loss = loss_sum / static_cast<double>(n_train);
     if (!std::isfinite(report.train_loss))

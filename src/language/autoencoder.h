@@ -35,6 +35,9 @@ struct AutoencoderTrainOptions {
   uint64_t seed = 1;
   // Called after every epoch with the epoch (1-based) and its mean training loss (progress output).
   std::function<void(int epoch, double train_loss)> on_epoch;
+  // Called after every mini-batch with the batches an epoch has (progress within an epoch, which takes
+  // minutes over the features of hundreds of photos).
+  std::function<void(size_t batches_per_epoch)> on_batch;
 };
 
 struct AutoencoderReport {

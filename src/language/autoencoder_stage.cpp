@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "core/atomic_file.h"
@@ -188,8 +189,13 @@ AutoencoderReport run_autoencoder_stage(const AutoencoderStageOptions& o) {
   AutoencoderTrainOptions train = o.train;
   AutoencoderReport report;
   {
-    Progress progress("autoencoder", static_cast<uint64_t>(std::max(train.epochs, 0)), "epochs");
+    // Counted in mini-batches: an epoch over the features of 200 photos takes minutes on a CPU.
+    std::optional<Progress> progress;
     const int every = std::max(1, train.epochs / 10);
+    train.on_batch = [&](size_t batches) {
+      if (!progress) progress.emplace("autoencoder", static_cast<uint64_t>(train.epochs) * batches, "batches");
+      progress->advance();
+    };
     train.on_epoch = [&](int epoch, double loss) {
       if (o.train.on_epoch) o.train.on_epoch(epoch, loss);
       const std::string line = cat("autoencoder: epoch ", epoch, "/", train.epochs, " loss ", loss);
@@ -197,10 +203,10 @@ AutoencoderReport run_autoencoder_stage(const AutoencoderStageOptions& o) {
         log_info(line);
       else
         log_verbose(line);
-      progress.advance();
+      if (progress) progress->set_detail(cat("epoch ", epoch, "/", train.epochs, " loss ", loss));
     };
     report = ae.train(features, train);
-    progress.finish();
+    if (progress) progress->finish();
   }
 
   if (o.out.has_parent_path()) fs::create_directories(o.out.parent_path());

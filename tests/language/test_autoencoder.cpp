@@ -133,10 +133,15 @@ TEST(Autoencoder, LearnsClusteredUnitVectors) {
     EXPECT_EQ(epoch, static_cast<int>(losses.size()) + 1);
     losses.push_back(loss);
   };
+  size_t batches = 0, per_epoch = 0;
+  o.on_batch = [&](size_t n) { ++batches, per_epoch = n; };
   const AutoencoderReport r = ae.train(features, o);
   EXPECT_EQ(r.train_samples, 900);
   EXPECT_EQ(r.holdout_samples, 100);
   ASSERT_EQ(losses.size(), 12u);
+  // 900 training rows in batches of 64: 14 full ones and one of 4, each epoch.
+  EXPECT_EQ(per_epoch, (900u + 63) / 64);
+  EXPECT_EQ(batches, 12 * per_epoch);
   EXPECT_LT(losses.back(), 0.5 * losses.front());
   EXPECT_DOUBLE_EQ(r.train_loss, losses.back());
   EXPECT_GT(r.holdout_cosine, 0.9);

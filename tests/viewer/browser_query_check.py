@@ -222,6 +222,12 @@ def check_first_view(driver, url, args, failures):
                                  "return b ? b.getAttribute('aria-pressed') : null")
     if hide != "true":
         failures.append(f"'hide far splats' is not on by default (aria-pressed {hide!r})")
+    # The photo beside the render as the calibration saw it: the browser must not apply EXIF Orientation.
+    orientation = driver.execute_script("const p = document.getElementById('view-photo');"
+                                        "return p ? getComputedStyle(p).imageOrientation : null")
+    if orientation != "none":
+        failures.append(f"the view's photo is shown with image-orientation {orientation!r}, not 'none': a phone "
+                        "photo's EXIF Orientation would turn it away from its camera")
     hidden = state.get("hidden") or 0
     if not 0 < hidden <= args.max_hidden * model["gaussians"]:
         failures.append(f"{hidden} of {model['gaussians']} splats hidden as far: expected some (the sky), "
