@@ -153,11 +153,24 @@ CityTransform read_city_transform(const std::string& path) {
   return parse_city_transform(read_text_file(path), path);
 }
 
-void write_city_transform(const std::string& path, const CityTransform& t) {
+void write_city_transform(const std::string& path, const CityTransform& t, const std::string& crs) {
   json rows = json::array();
   for (const auto& row : t.matrix) rows.push_back(json(std::vector<double>(row.begin(), row.end())));
   // nlohmann writes doubles with round-trip precision.
-  write_text_atomic(path, json{{"matrix", rows}}.dump(2) + "\n");
+  json doc{{"matrix", rows}};
+  if (!crs.empty()) doc["crs"] = crs;
+  write_text_atomic(path, doc.dump(2) + "\n");
+}
+
+CityFrame read_city_frame(const std::string& path) {
+  const std::string text = read_text_file(path);
+  CityFrame frame{"", parse_city_transform(text, path)};
+  const json doc = json::parse(text);
+  if (doc.contains("crs")) {
+    if (!doc["crs"].is_string()) fail(path, "\"crs\" must be a string");
+    frame.crs = doc["crs"].get<std::string>();
+  }
+  return frame;
 }
 
 std::vector<Vec3f> scene_vertices(const SemanticMesh& mesh, const CityTransform& t) {

@@ -40,8 +40,16 @@ std::string similarity_problem(const CityTransform& t);
 // Parses and validates; cls::Error naming `name` on malformed JSON or a non-similarity.
 CityTransform parse_city_transform(const std::string& text, const std::string& name);
 CityTransform read_city_transform(const std::string& path);
-// Writes {"matrix": ...} with round-trip precision, atomically.
-void write_city_transform(const std::string& path, const CityTransform& t);
+// Writes {"matrix": ...} with round-trip precision, atomically, and {"crs": crs} unless empty.
+void write_city_transform(const std::string& path, const CityTransform& t, const std::string& crs = "");
+
+// Where a scene frame lies: the city model's CRS as the model names it ("" for none) and the transform
+// from it into the scene, as the label maps were made with it (labels/city_transform.json).
+struct CityFrame {
+  std::string crs;
+  CityTransform transform;
+};
+CityFrame read_city_frame(const std::string& path);  // cls::Error naming the file, as read_city_transform
 
 // Mesh vertices in the scene frame: M * (vertex + origin) composed in double before the
 // conversion to float, so the large translation of projected (UTM) coordinates cancels exactly.

@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/interrupt.h"
 #include "core/log.h"
+#include "language/language_model.h"
 #include "viewer/viewer_model.h"
 #include "viewer/viewer_server.h"
 
@@ -43,7 +44,7 @@ int cmd_view(int argc, char** argv) {
   if (host != "127.0.0.1" && host != "localhost" && host != "::1")
     log_warn("view: binding " + host + ": anyone who can reach this address can read the model and its photos");
 
-  const fs::path model_dir = viewer_model_dir(out, method);
+  const fs::path model_dir = language_model_dir(out, method, "view");
   log_info("view: loading " + model_dir.string());
   if (scene.empty()) scene = run_scene_dir(out);
   ViewerModel model(model_dir, scene);

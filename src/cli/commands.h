@@ -19,6 +19,7 @@ int cmd_evaluate(int argc, char** argv);    // the paper's evaluation (section 4
 int cmd_render(int argc, char** argv);      // pictures and videos of a trained model
 int cmd_report(int argc, char** argv);      // the HTML report of a run directory
 int cmd_view(int argc, char** argv);        // the browser viewer with live text queries
+int cmd_export(int argc, char** argv);      // glTF with KHR_gaussian_splatting and the city objects
 int cmd_tile(int argc, char** argv);        // cut a district into tiles
 int cmd_run_tiles(int argc, char** argv);   // every tile's pipeline on Slurm or locally
 int cmd_tiles(int argc, char** argv);       // tiles status | task

@@ -104,4 +104,12 @@ LanguageModel load_language_model(const std::string& dir) {
   return model;
 }
 
+fs::path language_model_dir(const fs::path& out, const std::string& method, const std::string& command) {
+  if (fs::exists(LanguageModelFiles{out}.model_json())) return out;
+  const fs::path in_run = RunLayout(out).language(method);
+  if (fs::exists(LanguageModelFiles{in_run}.model_json())) return in_run;
+  throw UsageError(command + ": " + out.string() + " is neither a language model (model.json) nor a `run` output with " +
+                   LanguageModelFiles{RunLayout().language(method)}.model_json().string());
+}
+
 }  // namespace cls

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <filesystem>
 #include <string>
 
 #include "citymodel/city_objects.h"
@@ -31,5 +32,10 @@ struct LanguageModel {
 void save_language_model(const std::string& dir, const LanguageModel& model);  // each file atomic
 // cls::Error naming the file on a missing/inconsistent part.
 LanguageModel load_language_model(const std::string& dir);
+
+// The language model directory of OUT: OUT itself when it holds model.json, else the `run` output's
+// OUT/language/<method>. cls::UsageError, prefixed with `command`, saying what was looked for otherwise.
+std::filesystem::path language_model_dir(const std::filesystem::path& out, const std::string& method,
+                                         const std::string& command);
 
 }  // namespace cls

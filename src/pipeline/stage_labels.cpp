@@ -12,7 +12,7 @@ std::vector<Stage> label_stages(RunContext& run) {
   s.name = "labels";
   const auto dir = run.layout.labels();
   s.stamp = RunLayout::stamp_in(dir);
-  s.outputs = {dir / "objects.json", dir / "legend.json"};
+  s.outputs = {dir / "objects.json", dir / kLabelsCityTransform, dir / "legend.json"};
   s.inputs = {{"city_model", file_fingerprint(c.city)},
               {"city_transform", file_fingerprint(run.city_transform)},
               {"taxonomy", file_fingerprint(c.city_options.taxonomy_path)},

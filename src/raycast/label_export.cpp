@@ -53,6 +53,7 @@ LabelExportSummary export_label_maps(const Scene& scene, const SceneCityModel& c
   progress.finish();
   write_city_objects(out / "objects.json", city_objects(city.mesh, city.taxonomy));
   write_mesh_ply((out / "city_mesh.ply").string(), city.mesh, city.taxonomy, &city.transform);
+  write_city_transform((out / kLabelsCityTransform).string(), city.transform, city.mesh.crs);
   write_text_atomic(out / "legend.json", city.taxonomy.legend_json());
   LabelExportSummary summary;
   summary.views = scene.views.size();

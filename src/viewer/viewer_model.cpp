@@ -97,14 +97,6 @@ std::string run_scene_dir(const fs::path& out) {
   }
 }
 
-fs::path viewer_model_dir(const fs::path& out, const std::string& method) {
-  if (fs::exists(LanguageModelFiles{out}.model_json())) return out;
-  const fs::path in_run = RunLayout(out).language(method);
-  if (fs::exists(LanguageModelFiles{in_run}.model_json())) return in_run;
-  throw UsageError("view: " + out.string() + " is neither a language model (model.json) nor a `run` output with " +
-                   LanguageModelFiles{RunLayout().language(method)}.model_json().string());
-}
-
 ViewerModel::ViewerModel(const fs::path& model_dir, const std::string& scene_dir)
     : model_(load_language_model(model_dir.string())) {
   at::NoGradGuard no_grad;

@@ -20,10 +20,6 @@
 
 namespace cls {
 
-// The language model directory of OUT: OUT itself when it holds model.json, else the `run` output's
-// OUT/language/<method>. cls::UsageError saying what was looked for otherwise.
-std::filesystem::path viewer_model_dir(const std::filesystem::path& out, const std::string& method);
-
 // The scene a `run` output was made from (OUT/run.json "scene"), "" when OUT is no run directory.
 std::string run_scene_dir(const std::filesystem::path& out);
 

@@ -1,0 +1,36 @@
+// citylangsplat export: a trained model as glTF with its city objects (src/export, docs/export.md).
+#include <iostream>
+
+#include "cli/commands.h"
+#include "core/args.h"
+#include "core/log.h"
+#include "export/export_job.h"
+
+namespace cls {
+
+int cmd_export(int argc, char** argv) {
+  Args args("export",
+            "Write a model as glTF 2.0 for the field's tools (CesiumJS, three.js, PlayCanvas, Babylon.js): its\n"
+            "Gaussians with KHR_gaussian_splatting, per splat the city object it belongs to on each level\n"
+            "(EXT_mesh_features into an EXT_structural_metadata table of gml:ids, classes, buildings and parts)\n"
+            "and the scores of the TEXT queries given; placed in the city model's CRS (minus an origin the\n"
+            "asset's extras keep, y up) when the run recorded the city transform. See docs/export.md.");
+  ExportOptions o;
+  args.positional("MODEL", o.input, "a `run` output, a language model directory (model.json) or a 3DGS .ply")
+      .rest("TEXT", o.queries, "text queries whose per-splat scores go out as property attributes")
+      .optional()
+      .bind("format", o.format, "glb (one file) or gltf (JSON + .bin)")
+      .bind("out", o.out, "the file to write (empty: gaussians.<format> in the model's directory)")
+      .bind("method", o.method, "which language model of a run output: citylangsplat or langsplat")
+      .bind("level", o.level, "the queries' level: 1, 2, 3, or best (per text the level with the highest score)")
+      .flag("scene-frame", o.georeference, "keep the frame the model was trained in, not the city model's CRS", false);
+  if (!args.parse(argc, argv)) return 0;
+  const nlohmann::json done = run_export(o);
+  log_info(cat("export: wrote ", done["file"].get<std::string>(), " (", done["gaussians"].get<int64_t>(), " Gaussians, ",
+               done["semantics"].is_null() ? std::string("no city objects")
+                                           : cat(done["semantics"].get<size_t>(), " city objects"),
+               ", ", done["queries"].size(), " queries, frame: ", done["frame"]["frame"].get<std::string>(), ")"));
+  return 0;
+}
+
+}  // namespace cls

@@ -1,0 +1,161 @@
+#include "export/export_job.h"
+
+#include <torch/torch.h>
+
+#include <cmath>
+#include <filesystem>
+#include <optional>
+
+#include "core/error.h"
+#include "core/log.h"
+#include "core/run_layout.h"
+#include "export/splat_gltf.h"
+#include "language/language_model.h"
+#include "language/provenance.h"
+#include "query/selection.h"
+#include "query/text_queries.h"
+#include "raycast/label_export.h"
+#include "splat/ply_gaussians.h"
+
+namespace cls {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// What the input holds: the Gaussians, and with a language model its objects, latents and text side.
+struct ExportInput {
+  GaussianModel gaussians;
+  std::optional<LanguageModel> model;
+  fs::path model_dir;   // the language model's directory, or "" for a PLY
+  fs::path labels_dir;  // where the label maps (and the city transform they used) lie, or ""
+  fs::path default_out;
+};
+
+ExportInput read_input(const ExportOptions& o) {
+  ExportInput in;
+  const fs::path input = o.input;
+  if (!fs::exists(input)) throw UsageError("export: " + input.string() + " does not exist");
+  if (fs::is_regular_file(input)) {
+    if (input.extension() != ".ply") throw UsageError("export: " + input.string() + " is no .ply, run output or model directory");
+    in.gaussians = read_gaussians_ply(input.string());
+    in.default_out = input.parent_path() / (input.stem().string() + "." + o.format);
+    return in;
+  }
+  const RunLayout run(input);
+  if (!fs::exists(LanguageModelFiles{input}.model_json()) && !fs::exists(LanguageModelFiles{run.language(o.method)}.model_json()) &&
+      fs::exists(run.rgb_ply())) {
+    // A run that stopped before its language fields: the photometric model, in the frame of its labels.
+    log_warn("export: " + input.string() + " has no language model yet: the photometric model " + run.rgb_ply().string() +
+             " goes out without city objects");
+    in.gaussians = read_gaussians_ply(run.rgb_ply().string());
+    in.labels_dir = run.labels();
+    in.default_out = run.rgb() / ("gaussians." + o.format);
+    return in;
+  }
+  in.model_dir = language_model_dir(input, o.method, "export");
+  in.model = load_language_model(in.model_dir.string());
+  in.gaussians = in.model->gaussians;
+  in.labels_dir = recorded_labels_dir(in.model->info);
+  in.default_out = in.model_dir / ("gaussians." + o.format);
+  return in;
+}
+
+std::vector<SplatScores> query_scores(LanguageModel& model, const fs::path& model_dir, const ExportOptions& o) {
+  at::NoGradGuard no_grad;
+  const int fixed = parse_query_level(o.level, "--level");
+  const std::string model_json = LanguageModelFiles{model_dir}.model_json().string();
+  const auto provider = model_provider(model, model_json, model_taxonomy(model.info, model_json, ""));
+  const at::Tensor latents = model.autoencoder.encode(provider->text_features(o.queries).to(torch::kFloat32));
+  const std::vector<std::string> slugs = unique_slugs(o.queries);
+  std::vector<SplatScores> out;
+  for (size_t k = 0; k < o.queries.size(); ++k) {
+    const LevelScores levels = score_levels(model.latents, latents[static_cast<int64_t>(k)]);
+    SplatScores s;
+    s.id = "score_" + slugs[k];
+    s.text = o.queries[k];
+    s.level = fixed ? fixed : levels.best;
+    const at::Tensor v = levels.scores[s.level - 1].to(torch::kFloat32).contiguous();
+    s.values.assign(v.data_ptr<float>(), v.data_ptr<float>() + v.numel());
+    log_info(cat("export: '", s.text, "' on level ", s.level, " (highest score ", levels.max[s.level - 1], ")"));
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::array<double, 16> gltf_city_matrix(const CityTransform& scene_from_crs, const Vec3d& origin) {
+  CityTransform crs_from_scene = inverse(scene_from_crs);
+  for (int r = 0; r < 3; ++r) crs_from_scene.matrix[r][3] -= origin[r];
+  // (E, N, U) -> glTF (E, U, -N).
+  const int axis[3] = {0, 2, 1};
+  const double sign[3] = {1, 1, -1};
+  std::array<double, 16> m{};
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 3; ++r) m[4 * c + r] = sign[r] * crs_from_scene.matrix[axis[r]][c];
+  m[15] = 1;
+  return m;
+}
+
+json run_export(const ExportOptions& o) {
+  if (o.format != "glb" && o.format != "gltf") throw UsageError("export: --format must be glb or gltf, got '" + o.format + "'");
+  ExportInput in = read_input(o);
+  if (!o.queries.empty() && !in.model)
+    throw UsageError("export: text queries need a language model (a run output or a model directory), not a PLY");
+
+  SplatGltfOptions options;
+  json frame{{"frame", "scene"}, {"description", "the frame the model was trained in (no city transform recorded)"}};
+  const fs::path transform_file = in.labels_dir.empty() ? fs::path() : in.labels_dir / kLabelsCityTransform;
+  if (o.georeference && !transform_file.empty() && fs::exists(transform_file)) {
+    const CityFrame city = read_city_frame(transform_file.string());
+    const CityTransform crs_from_scene = inverse(city.transform);
+    const at::Tensor means = in.gaussians.means.to(torch::kFloat64).contiguous();
+    const double* p = means.data_ptr<double>();
+    Vec3d sum{0, 0, 0};
+    for (int64_t i = 0; i < in.gaussians.size(); ++i) sum = sum + crs_from_scene.apply({p[3 * i], p[3 * i + 1], p[3 * i + 2]});
+    Vec3d origin{0, 0, 0};
+    for (int a = 0; a < 3; ++a) origin[a] = std::round(sum[a] / std::max<int64_t>(1, in.gaussians.size()));
+    options.node_matrix = gltf_city_matrix(city.transform, origin);
+    frame = {{"frame", "city"},
+             {"crs", city.crs},
+             {"origin", {origin[0], origin[1], origin[2]}},
+             {"transform", transform_file.string()},
+             {"description", "the city model's CRS minus origin, y up: glTF (x, y, z) = (E, U, -N)"}};
+  } else if (o.georeference) {
+    log_warn("export: no city transform recorded with the model (" +
+             (transform_file.empty() ? std::string("no label maps") : transform_file.string() + " is missing") +
+             "): the splats stay in the frame they were trained in");
+  }
+  options.extras = {{"citylangsplat", frame}};
+
+  SplatSemantics semantics;
+  const GaussianExtra* object = in.gaussians.extra(kObjectProperty);
+  const bool with_semantics = in.model && !in.model->objects.objects.empty() && object;
+  if (with_semantics) {
+    semantics.objects = &in.model->objects;
+    const at::Tensor ids = object->values.to(torch::kInt32).contiguous();
+    semantics.object_of.assign(ids.data_ptr<int32_t>(), ids.data_ptr<int32_t>() + ids.numel());
+  } else if (in.model) {
+    log_warn("export: the model has no city object per Gaussian: the splats go out without feature IDs");
+  }
+  const std::vector<SplatScores> scores = o.queries.empty() ? std::vector<SplatScores>{} : query_scores(*in.model, in.model_dir, o);
+
+  const GltfBuilder gltf = splat_gltf(in.gaussians, with_semantics ? &semantics : nullptr, scores, options);
+  const fs::path out = o.out.empty() ? in.default_out : fs::path(o.out);
+  if (out.extension() != "." + o.format)
+    throw UsageError("export: --out " + out.string() + " does not end in ." + o.format + " (--format " + o.format + ")");
+  if (out.has_parent_path()) fs::create_directories(out.parent_path());
+  gltf.write(out);
+  json queries = json::array();
+  for (const SplatScores& s : scores) queries.push_back({{"text", s.text}, {"level", s.level}, {"property", s.id}});
+  return {{"file", out.string()},
+          {"format", o.format},
+          {"gaussians", in.gaussians.size()},
+          {"sh_degree", in.gaussians.sh_degree()},
+          {"semantics", with_semantics ? json(in.model->objects.objects.size()) : json(nullptr)},
+          {"queries", queries},
+          {"frame", frame}};
+}
+
+}  // namespace cls

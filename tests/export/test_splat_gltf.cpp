@@ -1,0 +1,296 @@
+// Gaussians as glTF (export/splat_gltf.h, export_job.h) on hand-made models: every value read back from
+// the GLB's bytes against what the KHR_gaussian_splatting, EXT_mesh_features and EXT_structural_metadata
+// specifications say it must be, computed here by hand. Khronos' glTF-Validator checks a trained model's
+// file (tests/export/gltf_check.py).
+#include <gtest/gtest.h>
+#include <torch/torch.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "core/atomic_file.h"
+#include "error_of.h"
+#include "export/export_job.h"
+#include "export/splat_gltf.h"
+#include "splat/ply_gaussians.h"
+#include "splat/sh.h"
+
+namespace cls {
+namespace {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// A GLB read back by the letter of the glTF 2.0 container: 12-byte header, JSON chunk, BIN chunk.
+struct Glb {
+  json doc;
+  std::string bin;
+  explicit Glb(const std::string& bytes) {
+    auto u32 = [&](size_t at) {
+      uint32_t v;
+      std::memcpy(&v, bytes.data() + at, 4);
+      return v;
+    };
+    EXPECT_EQ(u32(0), 0x46546C67u);  // "glTF"
+    EXPECT_EQ(u32(4), 2u);
+    EXPECT_EQ(u32(8), bytes.size());
+    const uint32_t json_length = u32(12);
+    EXPECT_EQ(u32(16), 0x4E4F534Au);  // "JSON"
+    EXPECT_EQ(json_length % 4, 0u);
+    doc = json::parse(bytes.substr(20, json_length));
+    const size_t bin_at = 20 + json_length;
+    EXPECT_EQ(u32(bin_at + 4), 0x004E4942u);  // "BIN\0"
+    EXPECT_EQ(u32(bin_at) % 4, 0u);
+    bin = bytes.substr(bin_at + 8, u32(bin_at));
+    EXPECT_GE(bin.size(), doc["buffers"][0]["byteLength"].get<size_t>());
+  }
+  // The bytes of buffer view `v`.
+  std::string view(int v) const {
+    const json& bv = doc["bufferViews"][v];
+    return bin.substr(bv["byteOffset"].get<size_t>(), bv["byteLength"].get<size_t>());
+  }
+  template <class T>
+  std::vector<T> accessor(int a) const {
+    const json& acc = doc["accessors"][a];
+    const std::string bytes = view(acc["bufferView"].get<int>());
+    std::vector<T> out(bytes.size() / sizeof(T));
+    std::memcpy(out.data(), bytes.data(), bytes.size());
+    return out;
+  }
+  const json& primitive() const { return doc["meshes"][0]["primitives"][0]; }
+  template <class T>
+  std::vector<T> attribute(const std::string& name) const {
+    return accessor<T>(primitive()["attributes"][name].get<int>());
+  }
+  // A STRING column of the property table: values split at the offsets.
+  std::vector<std::string> strings(const json& property) const {
+    const std::string values = view(property["values"].get<int>()), offsets = view(property["stringOffsets"].get<int>());
+    std::vector<uint32_t> o(offsets.size() / 4);
+    std::memcpy(o.data(), offsets.data(), offsets.size());
+    std::vector<std::string> out;
+    for (size_t k = 0; k + 1 < o.size(); ++k) out.push_back(values.substr(o[k], o[k + 1] - o[k]));
+    return out;
+  }
+};
+
+// Building B (row 0) with BuildingPart P (1); wall W (2) of the part with window A (3); roof R (4) of B.
+CityObjects hand_objects() {
+  CityObjects t;
+  t.source = "hand.gml";
+  t.class_names = {"window", "wall", "roof", "building"};
+  t.objects = {{"B", 3, 3, -1}, {"P", 3, 3, 0}, {"W", 2, 1, 1}, {"A", 1, 0, 2}, {"R", 2, 2, 0}};
+  return t;
+}
+
+// Three Gaussians, SH degree 1, with values whose glTF form is worked out in the test.
+GaussianModel hand_gaussians() {
+  GaussianModel g = make_gaussians(3, 1);
+  g.means = torch::tensor({1.0f, 2.0f, 3.0f, -1.0f, 0.5f, 0.0f, 4.0f, -2.0f, 8.0f}).reshape({3, 3});
+  g.log_scales = torch::tensor({0.0f, std::log(2.0f), std::log(0.5f), -1.0f, -2.0f, -3.0f, 1.0f, 0.0f, 0.0f}).reshape({3, 3});
+  // (w, x, y, z): (2, 0, 0, 0) is the identity unnormalised; (0, 0, 0, 1) 180 deg about z.
+  g.quats = torch::tensor({2.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 1.0f, 1.0f, 0.0f, 0.0f}).reshape({3, 4});
+  g.opacity_logits = torch::tensor({0.0f, std::log(3.0f), -100.0f}).reshape({3, 1});
+  g.sh_dc = torch::tensor({0.1f, 0.2f, 0.3f, -5.0f, 0.0f, 5.0f, 0.0f, 0.0f, 0.0f}).reshape({3, 1, 3});
+  // Coefficient k (of 3) of channel c of Gaussian i = 100 i + 10 k + c.
+  g.sh_rest = torch::zeros({3, 3, 3});
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k)
+      for (int c = 0; c < 3; ++c) g.sh_rest[i][k][c] = 100 * i + 10 * k + c;
+  return g;
+}
+
+Glb glb_of(const GltfBuilder& b) { return Glb(b.glb()); }
+
+TEST(SplatGltf, TheGaussiansAsTheExtensionDefinesThem) {
+  const Glb glb = glb_of(splat_gltf(hand_gaussians(), nullptr, {}, {}));
+  const json& p = glb.primitive();
+  EXPECT_EQ(p["mode"], 0);  // POINTS
+  EXPECT_EQ(p["extensions"]["KHR_gaussian_splatting"]["kernel"], "ellipse");
+  EXPECT_EQ(p["extensions"]["KHR_gaussian_splatting"]["colorSpace"], "srgb_rec709_display");
+  EXPECT_EQ(glb.doc["extensionsUsed"], json::array({"KHR_gaussian_splatting"}));
+
+  const std::vector<float> pos = glb.attribute<float>("POSITION");
+  EXPECT_EQ(pos, std::vector<float>({1, 2, 3, -1, 0.5, 0, 4, -2, 8}));
+  const json& pos_acc = glb.doc["accessors"][p["attributes"]["POSITION"].get<int>()];
+  EXPECT_EQ(pos_acc["min"], json::array({-1.0, -2.0, 0.0}));
+  EXPECT_EQ(pos_acc["max"], json::array({4.0, 2.0, 8.0}));
+
+  // Unit quaternions in glTF's (x, y, z, w) order.
+  const std::vector<float> rot = glb.attribute<float>("KHR_gaussian_splatting:ROTATION");
+  const std::vector<float> rot_expected{0, 0, 0, 1, 0, 0, 1, 0, float(M_SQRT1_2), 0, 0, float(M_SQRT1_2)};
+  for (size_t k = 0; k < rot.size(); ++k) EXPECT_NEAR(rot[k], rot_expected[k], 1e-7) << k;
+  // Linear scales, opacity after the sigmoid (1 / (1 + 1/3) = 0.75).
+  const std::vector<float> scale = glb.attribute<float>("KHR_gaussian_splatting:SCALE");
+  const std::vector<float> scale_expected{1, 2, 0.5, std::exp(-1.0f), std::exp(-2.0f), std::exp(-3.0f), std::exp(1.0f), 1, 1};
+  for (size_t k = 0; k < scale.size(); ++k) EXPECT_NEAR(scale[k], scale_expected[k], 1e-6) << k;
+  const std::vector<float> opacity = glb.attribute<float>("KHR_gaussian_splatting:OPACITY");
+  EXPECT_NEAR(opacity[0], 0.5, 1e-7);
+  EXPECT_NEAR(opacity[1], 0.75, 1e-7);
+  EXPECT_NEAR(opacity[2], 0.0, 1e-7);
+
+  // SH: degree 0 the DC; degree 1's COEF_n is 3DGS's coefficient n + 1 (m = -1, 0, 1), RGB per splat.
+  EXPECT_EQ(glb.attribute<float>("KHR_gaussian_splatting:SH_DEGREE_0_COEF_0"),
+            std::vector<float>({0.1f, 0.2f, 0.3f, -5, 0, 5, 0, 0, 0}));
+  for (int n = 0; n < 3; ++n) {
+    const std::vector<float> coef = glb.attribute<float>("KHR_gaussian_splatting:SH_DEGREE_1_COEF_" + std::to_string(n));
+    for (int i = 0; i < 3; ++i)
+      for (int c = 0; c < 3; ++c) EXPECT_EQ(coef[3 * i + c], 100 * i + 10 * n + c) << n << " " << i << " " << c;
+  }
+  EXPECT_FALSE(p["attributes"].contains("KHR_gaussian_splatting:SH_DEGREE_2_COEF_0"));
+
+  // The fallback colour: 0.5 + C0 * DC clamped, sRGB decoded to linear, times 255; alpha the opacity.
+  const std::vector<uint8_t> rgba = glb.attribute<uint8_t>("COLOR_0");
+  auto linear = [](double s) { return s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4); };
+  EXPECT_EQ(rgba[0], std::lround(255 * linear(0.5 + 0.28209479177387814 * 0.1)));
+  EXPECT_EQ(rgba[3], 128);  // opacity 0.5
+  EXPECT_EQ(rgba[4], 0);    // 0.5 - 5 C0 < 0: clamped
+  EXPECT_EQ(rgba[6], 255);  // 0.5 + 5 C0 > 1: clamped
+  EXPECT_EQ(rgba[7], 191);  // opacity 0.75
+  EXPECT_TRUE(glb.doc["accessors"][p["attributes"]["COLOR_0"].get<int>()]["normalized"].get<bool>());
+}
+
+TEST(SplatGltf, ShAttributesFollowTheSpecificationsBasisAndOrder) {
+  // The extension's Appendix A (real SH with the Condon-Shortley phase), typed from the specification,
+  // against splat/sh.h in the attribute order sh_attribute_name gives.
+  const double x = 0.48, y = -0.6, z = 0.64;  // unit
+  const double spec[16] = {0.2820947917738781,
+                           -0.4886025119029199 * y, 0.4886025119029199 * z, -0.4886025119029199 * x,
+                           1.092548430592079 * x * y, -1.092548430592079 * y * z,
+                           0.3153915652525200 * (2 * z * z - x * x - y * y), -1.092548430592079 * x * z,
+                           0.5462742152960395 * (x * x - y * y),
+                           -0.5900435899266435 * y * (3 * x * x - y * y), 2.890611442640554 * x * y * z,
+                           -0.4570457994644657 * y * (4 * z * z - x * x - y * y),
+                           0.3731763325901154 * z * (2 * z * z - 3 * x * x - 3 * y * y),
+                           -0.4570457994644657 * x * (4 * z * z - x * x - y * y),
+                           1.445305721320277 * z * (x * x - y * y), -0.5900435899266435 * x * (x * x - 3 * y * y)};
+  const char* names[16] = {"0_COEF_0", "1_COEF_0", "1_COEF_1", "1_COEF_2", "2_COEF_0", "2_COEF_1", "2_COEF_2", "2_COEF_3",
+                           "2_COEF_4", "3_COEF_0", "3_COEF_1", "3_COEF_2", "3_COEF_3", "3_COEF_4", "3_COEF_5", "3_COEF_6"};
+  double ours[16];
+  sh_basis(3, x, y, z, ours);
+  for (int k = 0; k < 16; ++k) {
+    EXPECT_NEAR(ours[k], spec[k], 1e-12) << k;
+    EXPECT_EQ(sh_attribute_name(k), std::string("KHR_gaussian_splatting:SH_DEGREE_") + names[k]);
+  }
+}
+
+TEST(SplatGltf, FeatureIdsPerLevelIntoTheTableOfCityObjects) {
+  const CityObjects objects = hand_objects();
+  // Gaussians on window A, wall W, roof R, on nothing, on the part P itself.
+  GaussianModel g = make_gaussians(5, 0);
+  SplatSemantics semantics{&objects, {3, 2, 4, -1, 1}};
+  const Glb glb = glb_of(splat_gltf(g, &semantics, {}, {}));
+  const json& features = glb.primitive()["extensions"]["EXT_mesh_features"]["featureIds"];
+  ASSERT_EQ(features.size(), 3u);
+  const float null = 5;  // one past the table's rows
+  // Level 1: A, W (a wall without a finer object answers for itself), R, none, P.
+  // Level 2: W, W, R, none, P. Level 3: the whole building B for all but the Gaussian on nothing.
+  const std::vector<std::vector<float>> expected{{3, 2, 4, null, 1}, {2, 2, 4, null, 1}, {0, 0, 0, null, 0}};
+  const std::vector<size_t> distinct{4, 3, 1};
+  for (int l = 0; l < 3; ++l) {
+    EXPECT_EQ(features[l]["attribute"], l);
+    EXPECT_EQ(features[l]["propertyTable"], 0);
+    EXPECT_EQ(features[l]["nullFeatureId"], 5);
+    EXPECT_EQ(features[l]["featureCount"], distinct[l]) << l;
+    EXPECT_EQ(glb.attribute<float>("_FEATURE_ID_" + std::to_string(l)), expected[l]) << l;
+  }
+  EXPECT_EQ(features[2]["label"], "level3_building");
+
+  const json& metadata = glb.doc["extensions"]["EXT_structural_metadata"];
+  const json& table = metadata["propertyTables"][0];
+  EXPECT_EQ(table["class"], "cityObject");
+  EXPECT_EQ(table["count"], 5);
+  EXPECT_EQ(glb.strings(table["properties"]["id"]), std::vector<std::string>({"B", "P", "W", "A", "R"}));
+  EXPECT_EQ(glb.strings(table["properties"]["class"]),
+            std::vector<std::string>({"building", "building", "wall", "window", "roof"}));
+  EXPECT_EQ(glb.strings(table["properties"]["building"]), std::vector<std::string>({"B", "B", "B", "B", "B"}));
+  EXPECT_EQ(glb.strings(table["properties"]["part"]), std::vector<std::string>({"", "P", "P", "P", ""}));
+  const std::string levels = glb.view(table["properties"]["level"]["values"].get<int>());
+  EXPECT_EQ(levels, std::string({3, 3, 2, 1, 2}));
+  for (const char* p : {"id", "class", "level", "building", "part"})
+    EXPECT_TRUE(metadata["schema"]["classes"]["cityObject"]["properties"].contains(p)) << p;
+  // Table columns are aligned to their component size (EXT_structural_metadata), here 4 at least.
+  for (const json& view : glb.doc["bufferViews"]) EXPECT_EQ(view["byteOffset"].get<size_t>() % 4, 0u);
+}
+
+TEST(SplatGltf, QueryScoresAsPropertyAttributes) {
+  GaussianModel g = make_gaussians(2, 0);
+  const Glb glb = glb_of(splat_gltf(g, nullptr, {{"score_window", "window", 1, {0.25f, 0.75f}}}, {}));
+  EXPECT_EQ(glb.attribute<float>("_SCORE_0"), std::vector<float>({0.25f, 0.75f}));
+  const json& metadata = glb.doc["extensions"]["EXT_structural_metadata"];
+  EXPECT_EQ(metadata["propertyAttributes"][0]["properties"]["score_window"]["attribute"], "_SCORE_0");
+  EXPECT_EQ(metadata["schema"]["classes"]["queryScores"]["properties"]["score_window"]["name"], "window");
+  EXPECT_EQ(glb.primitive()["extensions"]["EXT_structural_metadata"]["propertyAttributes"], json::array({0}));
+}
+
+TEST(SplatGltf, AValueAGltfCannotCarryIsRefused) {
+  GaussianModel g = make_gaussians(2, 0);
+  g.means[1][2] = NAN;
+  EXPECT_NE(test::error_of([&] { splat_gltf(g, nullptr, {}, {}); }).find("positions holds a value that is not finite"),
+            std::string::npos);
+  EXPECT_NE(test::error_of([&] { splat_gltf(make_gaussians(0, 0), nullptr, {}, {}); }).find("no Gaussians"),
+            std::string::npos);
+}
+
+TEST(SplatGltf, TheCityMatrixTakesTheSceneToTheCrsYUp) {
+  // scene = 2 * Rz(90 deg) * crs + (10, 0, 0): the CRS point (1000, 2000, 30) lies in the scene at
+  // 2 * (-2000, 1000, 30) + (10, 0, 0) = (-3990, 2000, 60).
+  Mat3d rz;
+  rz.m[0][0] = 0, rz.m[0][1] = -1, rz.m[0][2] = 0;
+  rz.m[1][0] = 1, rz.m[1][1] = 0, rz.m[1][2] = 0;
+  rz.m[2][0] = 0, rz.m[2][1] = 0, rz.m[2][2] = 1;
+  const CityTransform scene_from_crs = similarity_transform(2, rz, {10, 0, 0});
+  const std::array<double, 16> m = gltf_city_matrix(scene_from_crs, {900, 1900, 0});
+  const double p[4] = {-3990, 2000, 60, 1};
+  double q[4] = {0, 0, 0, 0};
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) q[r] += m[4 * c + r] * p[c];  // column-major
+  // CRS minus origin = (100, 100, 30): glTF (E, U, -N) = (100, 30, -100).
+  EXPECT_NEAR(q[0], 100, 1e-9);
+  EXPECT_NEAR(q[1], 30, 1e-9);
+  EXPECT_NEAR(q[2], -100, 1e-9);
+  EXPECT_EQ(q[3], 1);
+}
+
+TEST(SplatGltf, AGltfWithItsBufferBeside) {
+  const fs::path dir = fs::temp_directory_path() / "cls_test_gltf_bin";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const GltfBuilder b = splat_gltf(hand_gaussians(), nullptr, {}, {});
+  b.write(dir / "model.gltf");
+  const json doc = json::parse(read_text_file(dir / "model.gltf"));
+  EXPECT_EQ(doc["buffers"][0]["uri"], "model.bin");
+  EXPECT_EQ(doc["buffers"][0]["byteLength"].get<size_t>(), fs::file_size(dir / "model.bin"));
+  EXPECT_EQ(read_text_file(dir / "model.bin"), Glb(b.glb()).bin.substr(0, fs::file_size(dir / "model.bin")));
+  fs::remove_all(dir);
+}
+
+TEST(ExportJob, APlyGoesOutInItsOwnFrameAndOptionsAreChecked) {
+  const fs::path dir = fs::temp_directory_path() / "cls_test_export_ply";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  write_gaussians_ply((dir / "model.ply").string(), hand_gaussians());
+  ExportOptions o;
+  o.input = (dir / "model.ply").string();
+  const json done = run_export(o);
+  EXPECT_EQ(done["file"], (dir / "model.glb").string());
+  EXPECT_EQ(done["frame"]["frame"], "scene");
+  EXPECT_TRUE(done["semantics"].is_null());
+  const Glb glb(read_text_file(dir / "model.glb"));
+  EXPECT_FALSE(glb.doc["nodes"][0].contains("matrix"));
+  EXPECT_EQ(glb.doc["asset"]["extras"]["citylangsplat"]["frame"], "scene");
+
+  o.queries = {"window"};
+  EXPECT_NE(test::error_of([&] { run_export(o); }).find("text queries need a language model"), std::string::npos);
+  o.queries.clear();
+  o.out = (dir / "x.gltf").string();
+  EXPECT_NE(test::error_of([&] { run_export(o); }).find("does not end in .glb"), std::string::npos);
+  o.format = "obj";
+  EXPECT_NE(test::error_of([&] { run_export(o); }).find("--format must be glb or gltf"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir / "x.gltf"));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace cls
