@@ -17,8 +17,10 @@
 
 #include <ATen/ATen.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <map>
 #include <set>
@@ -52,17 +54,35 @@ namespace {
 
 constexpr int kLevels = 3;
 
-// What training needs of one view: the camera, the seg maps and the encoded segment latents.
+// What training needs of one view: the camera, the seg maps and the encoded segment latents. Held for
+// every training view at once, so compact: the seg maps are int16 when their ids fit (they index the
+// view's segments and regions, a few hundred), the coverage one byte a pixel. 200 photos at 1440x1080
+// took 9.6 GB as int32 maps with a float coverage (docs/benchmarks.md), 13 of 32 bytes a pixel now.
 struct ViewTargets {
   size_t view = 0;  // index into scene.views
   std::string stem;
   int height = 0, width = 0;
-  std::vector<int32_t> sam_seg;  // 4 x H x W
-  std::vector<int32_t> gml_seg;  // 3 x H x W
-  at::Tensor sam_latents;        // N x L (device)
-  at::Tensor gml_latents;        // R x L (device)
-  at::Tensor coverage;           // H x W float 0/1 (device)
+  at::Tensor seg;          // 6 x H x W, int16 or int32 (CPU): SAM's levels s, m, l, then CityGML's 1, 2, 3
+  at::Tensor sam_latents;  // N x L (device)
+  at::Tensor gml_latents;  // R x L (device)
+  at::Tensor coverage;     // H x W uint8 0/1 (device)
+
+  // The int32 H x W maps the loss reads at a level (1..3).
+  at::Tensor sam_map(int level) const { return seg[level - 1].to(at::kInt); }
+  at::Tensor gml_map(int level) const { return seg[2 + level].to(at::kInt); }
 };
+
+// SAM's maps 1..3 (its default level 0 is no level's target) and CityGML's three, as int16 when every id fits.
+at::Tensor compact_seg_maps(std::vector<int32_t>& sam_seg, std::vector<int32_t>& gml_seg, int height, int width) {
+  const int64_t hw = int64_t(height) * width;
+  const at::Tensor sam = at::from_blob(sam_seg.data(), {4, height, width}, at::kInt).slice(0, 1, 4);
+  const at::Tensor gml = at::from_blob(gml_seg.data(), {3, height, width}, at::kInt);
+  int32_t lo = 0, hi = 0;
+  for (const std::vector<int32_t>* maps : {&sam_seg, &gml_seg})
+    for (size_t p = maps == &sam_seg ? size_t(hw) : 0; p < maps->size(); ++p) lo = std::min(lo, (*maps)[p]), hi = std::max(hi, (*maps)[p]);
+  const bool fits = lo >= INT16_MIN && hi <= INT16_MAX;
+  return at::cat({sam, gml}, 0).to(fits ? at::kShort : at::kInt).contiguous();
+}
 
 at::Tensor encode_rows(const Autoencoder& ae, const at::Tensor& features, at::Device device) {
   if (!features.defined() || features.size(0) == 0) return at::zeros({0, ae.config().latent_dim()}, at::kFloat).to(device);
@@ -103,17 +123,16 @@ std::vector<ViewTargets> load_targets(const Scene& scene, const LanguageTrainOpt
     t.stem = stem;
     t.height = f.height;
     t.width = f.width;
-    t.sam_seg = std::move(f.sam_seg);
-    t.gml_seg = std::move(f.gml_seg);
     t.sam_latents = encode_rows(ae, f.sam_features, device);
     t.gml_latents = encode_rows(ae, f.gml_features, device);
     const size_t hw = size_t(t.height) * t.width;
-    at::Tensor m = at::zeros({t.height, t.width}, at::kFloat);
-    float* mp = m.data_ptr<float>();
+    at::Tensor m = at::zeros({t.height, t.width}, at::kByte);
+    uint8_t* mp = m.data_ptr<uint8_t>();
     for (int l = 0; l < kLevels; ++l)
       for (size_t p = 0; p < hw; ++p)
-        if (t.gml_seg[l * hw + p] >= 0) mp[p] = 1.f;
+        if (f.gml_seg[l * hw + p] >= 0) mp[p] = 1;
     t.coverage = m.to(device);
+    t.seg = compact_seg_maps(f.sam_seg, f.gml_seg, t.height, t.width);
     views.push_back(std::move(t));
   }
   progress.finish();
@@ -363,13 +382,8 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
       settings.pose = sv.pose;
       const at::Tensor rendered =
           rasterize_features(means, scales, quats, opacities, splatted(adam.group(adam_name(level)).param, o), at::Tensor(), settings).image;
-      // Seg map l of [default, s, m, l] and CityGML level l, read in place (the loss only reads them).
-      const size_t hw = size_t(v.height) * v.width;
-      const auto seg_map = [&](const std::vector<int32_t>& maps, int index) {
-        return at::from_blob(const_cast<int32_t*>(maps.data()) + index * hw, {v.height, v.width}, at::kInt);
-      };
-      const LanguageLoss loss = language_loss_from_seg(rendered, {seg_map(v.sam_seg, level), v.sam_latents},
-                                                       {seg_map(v.gml_seg, level - 1), v.gml_latents}, v.coverage, weights);
+      const LanguageLoss loss = language_loss_from_seg(rendered, {v.sam_map(level), v.sam_latents},
+                                                       {v.gml_map(level), v.gml_latents}, v.coverage, weights);
       loss.total.backward();
       adam.step();
       adam.zero_grad();
