@@ -20,6 +20,8 @@ int cmd_export(int argc, char** argv) {
       .rest("TEXT", o.queries, "text queries whose per-splat scores go out as property attributes")
       .optional()
       .bind("format", o.format, "glb (one file) or gltf (JSON + .bin)")
+      .bind("compress", o.compress, "none, or spz: the Gaussians as one SPZ payload (KHR_gaussian_splatting_compression_spz_2;\n"
+                                    "lossy, about a tenth of the size; what CesiumJS needs to render splats in 3D Tiles)")
       .bind("out", o.out, "the file to write (empty: gaussians.<format> in the model's directory)")
       .bind("method", o.method, "which language model of a run output: citylangsplat or langsplat")
       .bind("level", o.level, "the queries' level: 1, 2, 3, or best (per text the level with the highest score)")

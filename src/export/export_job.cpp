@@ -100,11 +100,13 @@ std::array<double, 16> gltf_city_matrix(const CityTransform& scene_from_crs, con
 
 json run_export(const ExportOptions& o) {
   if (o.format != "glb" && o.format != "gltf") throw UsageError("export: --format must be glb or gltf, got '" + o.format + "'");
+  if (o.compress != "none" && o.compress != "spz") throw UsageError("export: --compress must be none or spz, got '" + o.compress + "'");
   ExportInput in = read_input(o);
   if (!o.queries.empty() && !in.model)
     throw UsageError("export: text queries need a language model (a run output or a model directory), not a PLY");
 
   SplatGltfOptions options;
+  options.compression = o.compress == "spz" ? SplatCompression::Spz : SplatCompression::None;
   json frame{{"frame", "scene"}, {"description", "the frame the model was trained in (no city transform recorded)"}};
   const fs::path transform_file = in.labels_dir.empty() ? fs::path() : in.labels_dir / kLabelsCityTransform;
   if (o.georeference && !transform_file.empty() && fs::exists(transform_file)) {
@@ -151,6 +153,7 @@ json run_export(const ExportOptions& o) {
   for (const SplatScores& s : scores) queries.push_back({{"text", s.text}, {"level", s.level}, {"property", s.id}});
   return {{"file", out.string()},
           {"format", o.format},
+          {"compress", o.compress},
           {"gaussians", in.gaussians.size()},
           {"sh_degree", in.gaussians.sh_degree()},
           {"semantics", with_semantics ? json(in.model->objects.objects.size()) : json(nullptr)},

@@ -18,6 +18,7 @@ namespace cls {
 struct ExportOptions {
   std::string input;                   // a run output, a language model directory or a .ply
   std::string format = "glb";          // glb or gltf
+  std::string compress = "none";       // none or spz (KHR_gaussian_splatting_compression_spz_2)
   std::string out;                     // "" = beside the model: gaussians.<format>
   std::string method = "citylangsplat";  // the language model of a run output
   std::vector<std::string> queries;    // texts whose per-splat scores go out as property attributes

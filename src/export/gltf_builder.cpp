@@ -67,8 +67,8 @@ int GltfBuilder::add_accessor(const void* data, int64_t count, const std::string
   const int components = gltf_type_components(type), bytes = gltf_component_bytes(component);
   if (!components || !bytes || count < 0) throw std::logic_error("gltf: accessor of type " + type + " / " +
                                                                  std::to_string(component));
-  const int view = add_view(data, static_cast<size_t>(count) * components * bytes, kGltfArrayBuffer);
-  nlohmann::json accessor{{"bufferView", view}, {"componentType", component}, {"count", count}, {"type", type}};
+  nlohmann::json accessor{{"componentType", component}, {"count", count}, {"type", type}};
+  if (data) accessor["bufferView"] = add_view(data, static_cast<size_t>(count) * components * bytes, kGltfArrayBuffer);
   if (normalized) accessor["normalized"] = true;
   if (!min.empty()) accessor["min"] = min;
   if (!max.empty()) accessor["max"] = max;

@@ -36,7 +36,8 @@ class GltfBuilder {
   // attributes need) and adds a buffer view; its index. `target` 0 leaves it out (metadata tables).
   int add_view(const void* data, size_t bytes, int target = 0, size_t alignment = 4);
   // A view of `count` elements of `type` ("SCALAR", "VEC3" ...) and `component`, plus its accessor; the
-  // accessor's index. `min`/`max` (per component) are written when given, as POSITION requires.
+  // accessor's index. `min`/`max` (per component) are written when given, as POSITION requires. `data`
+  // null: an accessor without a buffer view, whose values an extension supplies (SPZ).
   int add_accessor(const void* data, int64_t count, const std::string& type, int component, bool normalized = false,
                    const std::vector<double>& min = {}, const std::vector<double>& max = {});
   // Adds `name` to extensionsUsed (and extensionsRequired when `required`), once.

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "export/spz.h"
 #include "splat/sh.h"
 
 namespace cls {
@@ -160,8 +161,6 @@ GltfBuilder splat_gltf(const GaussianModel& g, const SplatSemantics* semantics, 
       lo[a] = std::min(lo[a], double(means[3 * i + a]));
       hi[a] = std::max(hi[a], double(means[3 * i + a]));
     }
-  attributes["POSITION"] = gltf.add_accessor(means.data(), n, "VEC3", kGltfFloat, false, lo, hi);
-
   // Unit quaternions reordered from (w, x, y, z) to glTF's (x, y, z, w).
   const std::vector<float> wxyz = floats(torch::nn::functional::normalize(
       g.quats.to(torch::kFloat64), torch::nn::functional::NormalizeFuncOptions().dim(1)));
@@ -169,25 +168,13 @@ GltfBuilder splat_gltf(const GaussianModel& g, const SplatSemantics* semantics, 
   std::vector<float> xyzw(4 * n);
   for (int64_t i = 0; i < n; ++i)
     for (int c = 0; c < 4; ++c) xyzw[4 * i + c] = wxyz[4 * i + (c + 1) % 4];
-  attributes["KHR_gaussian_splatting:ROTATION"] = gltf.add_accessor(xyzw.data(), n, "VEC4", kGltfFloat);
-
   const std::vector<float> scales = floats(g.scales());
   check_finite(scales, "scales");
-  attributes["KHR_gaussian_splatting:SCALE"] = gltf.add_accessor(scales.data(), n, "VEC3", kGltfFloat);
   const std::vector<float> opacity = floats(g.opacities());
   check_finite(opacity, "opacities");
-  attributes["KHR_gaussian_splatting:OPACITY"] = gltf.add_accessor(opacity.data(), n, "SCALAR", kGltfFloat);
-
   const int64_t coeffs = sh_coeff_count(g.sh_degree());
   const std::vector<float> sh = floats(g.sh());  // N x coeffs x 3
   check_finite(sh, "spherical harmonics");
-  std::vector<float> column(3 * n);
-  for (int64_t k = 0; k < coeffs; ++k) {
-    for (int64_t i = 0; i < n; ++i)
-      for (int c = 0; c < 3; ++c) column[3 * i + c] = sh[(i * coeffs + k) * 3 + c];
-    attributes[sh_attribute_name(static_cast<int>(k))] = gltf.add_accessor(column.data(), n, "VEC3", kGltfFloat);
-  }
-
   // The fallback colour: the DC colour, clamped, decoded from sRGB to glTF's linear COLOR_0; alpha the opacity.
   std::vector<uint8_t> rgba(4 * n);
   for (int64_t i = 0; i < n; ++i) {
@@ -197,13 +184,36 @@ GltfBuilder splat_gltf(const GaussianModel& g, const SplatSemantics* semantics, 
     }
     rgba[4 * i + 3] = static_cast<uint8_t>(std::lround(255 * std::clamp(double(opacity[i]), 0.0, 1.0)));
   }
-  attributes["COLOR_0"] = gltf.add_accessor(rgba.data(), n, "VEC4", kGltfUnsignedByte, true);
 
-  primitive["extensions"]["KHR_gaussian_splatting"] = {{"kernel", "ellipse"},
-                                                       {"colorSpace", "srgb_rec709_display"},
-                                                       {"projection", "perspective"},
-                                                       {"sortingMethod", "cameraDistance"}};
-  gltf.use_extension("KHR_gaussian_splatting");
+  // With SPZ the payload holds position, colour, alpha, scale, rotation and SH of degree >= 1, and the
+  // accessors that stand for them have no buffer view; OPACITY and the DC term are the payload's (as the
+  // extension's example and CesiumJS read it).
+  const bool spz = options.compression == SplatCompression::Spz;
+  const auto data = [spz](const void* p) { return spz ? nullptr : p; };
+  attributes["POSITION"] = gltf.add_accessor(data(means.data()), n, "VEC3", kGltfFloat, false, lo, hi);
+  attributes["COLOR_0"] = gltf.add_accessor(data(rgba.data()), n, "VEC4", kGltfUnsignedByte, true);
+  attributes["KHR_gaussian_splatting:ROTATION"] = gltf.add_accessor(data(xyzw.data()), n, "VEC4", kGltfFloat);
+  attributes["KHR_gaussian_splatting:SCALE"] = gltf.add_accessor(data(scales.data()), n, "VEC3", kGltfFloat);
+  if (!spz) attributes["KHR_gaussian_splatting:OPACITY"] = gltf.add_accessor(opacity.data(), n, "SCALAR", kGltfFloat);
+  std::vector<float> column(3 * n);
+  for (int64_t k = spz ? 1 : 0; k < coeffs; ++k) {
+    for (int64_t i = 0; i < n; ++i)
+      for (int c = 0; c < 3; ++c) column[3 * i + c] = sh[(i * coeffs + k) * 3 + c];
+    attributes[sh_attribute_name(static_cast<int>(k))] = gltf.add_accessor(data(column.data()), n, "VEC3", kGltfFloat);
+  }
+
+  json& splatting = primitive["extensions"]["KHR_gaussian_splatting"];
+  splatting = {{"kernel", "ellipse"},
+               {"colorSpace", "srgb_rec709_display"},
+               {"projection", "perspective"},
+               {"sortingMethod", "cameraDistance"}};
+  gltf.use_extension("KHR_gaussian_splatting", spz);
+  if (spz) {
+    const std::string payload = spz_v2(g);
+    splatting["extensions"]["KHR_gaussian_splatting_compression_spz_2"] = {
+        {"bufferView", gltf.add_view(payload.data(), payload.size())}};
+    gltf.use_extension("KHR_gaussian_splatting_compression_spz_2", true);
+  }
 
   json metadata = json::object();
   if (semantics && semantics->objects) add_semantics(gltf, *semantics, n, primitive, metadata);

@@ -12,11 +12,16 @@
    z up), lie within --tolerance metres of that window's polygons in the file's coordinates.
 4. The property table's ids are the city model's: every Window row's id is a gml:id of a bldg:Window,
    its building the file's bldg:Building; the window splats score higher for the query "window".
+5. `--compress spz`: the payload decoded by the SPZ decoder CesiumJS uses (npm @spz-loader/core, in
+   glTF's LUF axes) equals the PLY within SPZ version 2's quantisation steps (positions 2^-bits,
+   log-scales 1/16, quaternion and alpha 1/255, colour 1/(0.15 * 255) of the DC, SH 1/128 and buckets
+   of 8/128 and 16/128),
+   which catches a flipped axis or SH sign wherever a value exceeds its step.
 
     /usr/bin/python3 tests/export/gltf_check.py --binary build/citylangsplat --run RUN \\
         --city data/citygml/fzk-haus/fzk_haus_lod3_v2.gml --validator build/web/node_modules/gltf-validator \\
         --out /tmp/export
-Exit status: 0 pass, 1 fail, 77 skipped (no node or validator).
+Exit status: 0 pass, 1 fail, 77 skipped (no node, or the npm packages are missing).
 """
 import argparse
 import json
@@ -102,20 +107,94 @@ def distance_to_polygon_box(p, polygons):
     return math.sqrt(sum(max(lo[a] - p[a], 0, p[a] - hi[a]) ** 2 for a in range(3)))
 
 
+# The decoder's Node entry believes it runs in a browser once process.type says "renderer" (its Node
+# path needs a bundler); the wasm is inlined.
+DECODE_SPZ = """
+process.type = 'renderer';
+const { loadSpz } = require(process.argv[1]);
+const fs = require('fs');
+const glb = fs.readFileSync(process.argv[2]);
+const jl = glb.readUInt32LE(12);
+const doc = JSON.parse(glb.subarray(20, 20 + jl).toString());
+const bin = glb.subarray(28 + jl);
+const ext = doc.meshes[0].primitives[0].extensions.KHR_gaussian_splatting.extensions.KHR_gaussian_splatting_compression_spz_2;
+const view = doc.bufferViews[ext.bufferView];
+loadSpz(new Uint8Array(bin.subarray(view.byteOffset, view.byteOffset + view.byteLength)),
+        { unpackOptions: { coordinateSystem: 'LUF' } }).then((g) => {
+  const out = {};
+  for (const k of ['positions', 'scales', 'rotations', 'alphas', 'colors', 'sh']) out[k] = Array.from(g[k]);
+  out.numPoints = g.numPoints; out.shDegree = g.shDegree;
+  fs.writeFileSync(process.argv[3], JSON.stringify(out));
+});
+"""
+
+
+def check_spz(args, ply, spz_loader):
+    glb = os.path.join(args.out, "fzk_spz.glb")
+    subprocess.run([args.binary, "export", args.run, "--compress", "spz", "--out", glb], check=True)
+    decoded = os.path.join(args.out, "spz_decoded.json")
+    subprocess.run(["node", "-e", DECODE_SPZ, os.path.abspath(spz_loader), glb, decoded], check=True)
+    g = json.load(open(decoded))
+    doc, _ = read_glb(glb)
+    n, rest = len(ply["x"]), sum(1 for k in ply if k.startswith("f_rest_")) // 3
+    extent = max(abs(v) for a in "xyz" for v in ply[a])
+    bits = 12
+    while bits > 0 and extent * 2 ** bits >= 2 ** 23 - 1:
+        bits -= 1
+    c0 = 0.28209479177387814
+    worst = {"position": 0.0, "log-scale": 0.0, "rotation": 0.0, "alpha": 0.0, "colour": 0.0, "sh": 0.0}
+    steps = {"position": 0.5 / 2 ** bits + 1e-4 * extent / 2 ** 10, "log-scale": 0.5 / 16 + 1e-5, "rotation": 1.5 / 127.5,
+             "alpha": 0.5 / 255 + 1e-6, "colour": c0 * 0.5 / (0.15 * 255) + 2e-4, "sh": 0.0}
+    # The decoder's colour is 0.5 + k * DC with its own constant k, 1.5e-4 off C0 * DC at the extremes: + 2e-4.
+    tested_signs = 0
+    for i in range(n):
+        for a in range(3):
+            worst["position"] = max(worst["position"], abs(g["positions"][3 * i + a] - ply["xyz"[a]][i]))
+            worst["log-scale"] = max(worst["log-scale"], abs(math.log(g["scales"][3 * i + a]) - ply[f"scale_{a}"][i]))
+            dc = 0.5 + c0 * ply[f"f_dc_{a}"][i]
+            if 0 < dc < 1:  # the byte clamps outside
+                worst["colour"] = max(worst["colour"], abs(g["colors"][3 * i + a] - dc))
+        q = [ply[f"rot_{k}"][i] for k in (1, 2, 3, 0)]
+        norm = math.sqrt(sum(c * c for c in q)) * (1 if q[3] >= 0 else -1)
+        worst["rotation"] = max(worst["rotation"], max(abs(g["rotations"][4 * i + k] - q[k] / norm) for k in range(3)))
+        worst["alpha"] = max(worst["alpha"], abs(g["alphas"][i] - 1 / (1 + math.exp(-ply["opacity"][i]))))
+        for k in range(rest):
+            step = (0.5 + (4 if k < 3 else 8)) / 128 + 1e-6  # 8 bits, then the nearest bucket centre
+            for c in range(3):
+                v = ply[f"f_rest_{c * rest + k}"][i]
+                if abs(v) < 1 - step:  # SPZ clamps to [-1, 1]
+                    worst["sh"] = max(worst["sh"], abs(g["sh"][(i * rest + k) * 3 + c] - v) - step)
+                    tested_signs += abs(v) > step
+    ok = all(worst[k] <= steps[k] for k in worst)
+    print(f"SPZ: {os.path.getsize(glb)} bytes ({g['numPoints']} points, SH degree {g['shDegree']}, {bits} fractional bits), "
+          f"decoded by @spz-loader/core; largest differences to the PLY: " +
+          ", ".join(f"{k} {worst[k]:.2e} (step {steps[k]:.2e})" if k != "sh" else f"sh {worst[k]:+.2e} beyond its step"
+                    for k in worst) + f"; {tested_signs} SH values larger than their step")
+    required = doc.get("extensionsRequired", [])
+    failures = []
+    if g["numPoints"] != n or not ok:
+        failures.append("the SPZ payload does not decode to the PLY within its quantisation")
+    if "KHR_gaussian_splatting_compression_spz_2" not in required or "KHR_gaussian_splatting" not in required:
+        failures.append(f"extensionsRequired {required} lacks the two extensions CesiumJS looks for")
+    return failures
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--binary", required=True)
     p.add_argument("--run", required=True, help="a `run` output with a CityLangSplat language model")
     p.add_argument("--city", required=True, help="the CityGML file of the run")
-    p.add_argument("--validator", required=True, help="npm's gltf-validator package directory")
+    p.add_argument("--node-modules", required=True, help="npm's node_modules with gltf-validator and @spz-loader/core")
     # Provenance gives a splat its window when its centre lies within 2 % of the view's depth of the
     # window's surface: 0.3-0.5 m at the sample run's 15-25 m.
     p.add_argument("--tolerance", type=float, default=0.5, help="metres from a window's box (default 0.5)")
     p.add_argument("--share", type=float, default=0.9, help="share of window splats within it (default 0.9)")
     p.add_argument("--out", required=True)
     args = p.parse_args()
-    if not shutil.which("node") or not os.path.exists(os.path.join(args.validator, "package.json")):
-        print("SKIP: node or npm's gltf-validator is missing (scripts/install_web.sh)")
+    validator = os.path.join(args.node_modules, "gltf-validator")
+    spz_loader = os.path.join(args.node_modules, "@spz-loader", "core")
+    if not shutil.which("node") or not all(os.path.exists(os.path.join(d, "package.json")) for d in (validator, spz_loader)):
+        print("SKIP: node, gltf-validator or @spz-loader/core is missing (scripts/install_web.sh)")
         return 77
     os.makedirs(args.out, exist_ok=True)
     glb = os.path.join(args.out, "fzk.glb")
@@ -126,7 +205,7 @@ def main():
     script = ("const v = require(process.argv[1]); const fs = require('fs');"
               "v.validateBytes(new Uint8Array(fs.readFileSync(process.argv[2])))"
               ".then((r) => console.log(JSON.stringify(r.issues)));")
-    issues = json.loads(subprocess.run(["node", "-e", script, os.path.abspath(args.validator), glb], check=True,
+    issues = json.loads(subprocess.run(["node", "-e", script, os.path.abspath(validator), glb], check=True,
                                        capture_output=True, text=True).stdout)
     errors = [m for m in issues["messages"] if m["severity"] == 0]
     known = [m for m in errors if m["code"] == "MESH_PRIMITIVE_INVALID_ATTRIBUTE"
@@ -213,6 +292,8 @@ def main():
     print(f"query 'window': mean score {mean(on):.3f} on window splats, {mean(off):.3f} on the others")
     if not on or mean(on) <= mean(off):
         failures.append("window splats do not score higher for 'window'")
+
+    failures += check_spz(args, ply, spz_loader)
 
     for f in failures:
         print(f"FAIL: {f}")

@@ -4,6 +4,7 @@
 // file (tests/export/gltf_check.py).
 #include <gtest/gtest.h>
 #include <torch/torch.h>
+#include <zlib.h>
 
 #include <cmath>
 #include <cstring>
@@ -15,6 +16,7 @@
 #include "error_of.h"
 #include "export/export_job.h"
 #include "export/splat_gltf.h"
+#include "export/spz.h"
 #include "splat/ply_gaussians.h"
 #include "splat/sh.h"
 
@@ -290,6 +292,96 @@ TEST(ExportJob, APlyGoesOutInItsOwnFrameAndOptionsAreChecked) {
   EXPECT_NE(test::error_of([&] { run_export(o); }).find("--format must be glb or gltf"), std::string::npos);
   EXPECT_FALSE(fs::exists(dir / "x.gltf"));
   fs::remove_all(dir);
+}
+
+// The SPZ stream inflated (zlib, gzip header) as SPZ version 2's layout says.
+std::string gunzip(const std::string& in) {
+  z_stream z{};
+  EXPECT_EQ(inflateInit2(&z, 15 + 16), Z_OK);
+  std::string out(1 << 16, '\0');
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(in.data()));
+  z.avail_in = static_cast<uInt>(in.size());
+  z.next_out = reinterpret_cast<Bytef*>(out.data());
+  z.avail_out = static_cast<uInt>(out.size());
+  EXPECT_EQ(inflate(&z, Z_FINISH), Z_STREAM_END);
+  out.resize(z.total_out);
+  inflateEnd(&z);
+  return out;
+}
+
+TEST(Spz, SignsOfTheShCoefficientsWhenXAndZFlip) {
+  // By hand from the basis (splat/sh.h) under (x, y, z) -> (-x, y, -z): degree 1 is y, z, x; degree 2
+  // xy, yz, 2zz - xx - yy, xz, xx - yy; degree 3 y(3xx - yy), xyz, y(4zz - xx - yy), z(...), x(...), z(xx - yy), x(xx - 3yy).
+  const int expected[16] = {1, 1, -1, -1, -1, -1, 1, 1, 1, 1, 1, 1, -1, -1, -1, -1};
+  for (int k = 0; k < 16; ++k) EXPECT_EQ(spz_flip_sign(k), expected[k]) << k;
+}
+
+TEST(Spz, OneGaussianByteByByte) {
+  GaussianModel g = make_gaussians(1, 1);
+  g.means = torch::tensor({1.5f, -2.0f, 0.25f}).reshape({1, 3});
+  g.log_scales = torch::tensor({0.0f, -10.0f, 1.0f}).reshape({1, 3});
+  g.quats = torch::tensor({-2.0f, 0.0f, 2.0f, 0.0f}).reshape({1, 4});  // (w, x, y, z): w < 0, y = 2
+  g.opacity_logits = torch::tensor({0.0f}).reshape({1, 1});
+  g.sh_dc = torch::tensor({0.0f, 1.0f, -1.0f}).reshape({1, 1, 3});
+  g.sh_rest = torch::tensor({0.5f, 0.0f, 0.0f, 0.5f, 0.0f, 0.0f, 0.5f, 0.0f, 0.0f}).reshape({1, 3, 3});
+  const std::string raw = gunzip(spz_v2(g));
+  ASSERT_EQ(raw.size(), 16u + 9 + 1 + 3 + 3 + 3 + 9);
+  auto u32 = [&](size_t at) {
+    uint32_t v;
+    std::memcpy(&v, raw.data() + at, 4);
+    return v;
+  };
+  EXPECT_EQ(u32(0), 0x5053474eu);
+  EXPECT_EQ(u32(4), 2u);
+  EXPECT_EQ(u32(8), 1u);
+  EXPECT_EQ(raw[12], 1);   // SH degree
+  EXPECT_EQ(raw[13], 12);  // fractional bits: 2 * 4096 fits 2^23
+  auto byte = [&](size_t at) { return static_cast<uint8_t>(raw[at]); };
+  auto fixed24 = [&](size_t at) {
+    int32_t v = byte(at) | byte(at + 1) << 8 | byte(at + 2) << 16;
+    return v >= (1 << 23) ? v - (1 << 24) : v;
+  };
+  // Positions with x and z flipped (glTF's LUF to SPZ's RUB), times 4096.
+  EXPECT_EQ(fixed24(16), -6144);
+  EXPECT_EQ(fixed24(19), -8192);
+  EXPECT_EQ(fixed24(22), -1024);
+  EXPECT_EQ(byte(25), 128);  // alpha sigmoid(0) * 255 = 127.5, rounded half away from zero
+  EXPECT_EQ(byte(26), 128);  // colour 0 * 38.25 + 127.5
+  EXPECT_EQ(byte(27), 166);  // 38.25 + 127.5 = 165.75
+  EXPECT_EQ(byte(28), 89);   // -38.25 + 127.5 = 89.25
+  EXPECT_EQ(byte(29), 160);  // (0 + 10) * 16
+  EXPECT_EQ(byte(30), 0);    // (-10 + 10) * 16
+  EXPECT_EQ(byte(31), 176);  // 11 * 16
+  // The unit quaternion (x, y, z, w) = (0, 0.7071, 0, -0.7071), made w >= 0 by negating: (0, -0.7071, 0);
+  // the half turn about y keeps y: byte -0.7071 * 127.5 + 127.5 = 37.35.
+  EXPECT_EQ(byte(32), 128);
+  EXPECT_EQ(byte(33), 37);
+  EXPECT_EQ(byte(34), 128);
+  // SH of degree 1, red 0.5 on each coefficient: signs +, -, - (y, z, x), then 8 bits, buckets of 8:
+  // 0.5 * 128 + 128 = 192 -> 192; -0.5 -> 64; green and blue 0 -> 128.
+  const uint8_t sh[9] = {192, 128, 128, 64, 128, 128, 64, 128, 128};
+  for (int k = 0; k < 9; ++k) EXPECT_EQ(byte(35 + k), sh[k]) << k;
+}
+
+TEST(Spz, TheGltfHoldsThePayloadAndAccessorsWithoutData) {
+  const Glb glb = glb_of(splat_gltf(hand_gaussians(), nullptr, {}, {SplatCompression::Spz, std::nullopt, json::object()}));
+  const json& ext = glb.primitive()["extensions"]["KHR_gaussian_splatting"];
+  const int view = ext["extensions"]["KHR_gaussian_splatting_compression_spz_2"]["bufferView"].get<int>();
+  EXPECT_EQ(glb.view(view), spz_v2(hand_gaussians()));
+  for (const char* e : {"KHR_gaussian_splatting", "KHR_gaussian_splatting_compression_spz_2"})
+    EXPECT_NE(std::find(glb.doc["extensionsRequired"].begin(), glb.doc["extensionsRequired"].end(), e),
+              glb.doc["extensionsRequired"].end()) << e;
+  const json& attributes = glb.primitive()["attributes"];
+  for (const char* a : {"POSITION", "COLOR_0", "KHR_gaussian_splatting:ROTATION", "KHR_gaussian_splatting:SCALE",
+                        "KHR_gaussian_splatting:SH_DEGREE_1_COEF_2"}) {
+    ASSERT_TRUE(attributes.contains(a)) << a;
+    const json& accessor = glb.doc["accessors"][attributes[a].get<int>()];
+    EXPECT_FALSE(accessor.contains("bufferView")) << a;
+    EXPECT_EQ(accessor["count"], 3) << a;
+  }
+  // The payload holds the opacity and the DC term (the extension's example leaves both out).
+  EXPECT_FALSE(attributes.contains("KHR_gaussian_splatting:OPACITY"));
+  EXPECT_FALSE(attributes.contains("KHR_gaussian_splatting:SH_DEGREE_0_COEF_0"));
 }
 
 }  // namespace
