@@ -19,10 +19,13 @@ int cmd_export(int argc, char** argv) {
   args.positional("MODEL", o.input, "a `run` output, a language model directory (model.json) or a 3DGS .ply")
       .rest("TEXT", o.queries, "text queries whose per-splat scores go out as property attributes")
       .optional()
-      .bind("format", o.format, "glb (one file) or gltf (JSON + .bin)")
+      .bind("format", o.format, "glb (one file), gltf (JSON + .bin), or 3dtiles (a directory: tileset.json on the globe\n"
+                                "through the city model's CRS, and gaussians.glb)")
       .bind("compress", o.compress, "none, or spz: the Gaussians as one SPZ payload (KHR_gaussian_splatting_compression_spz_2;\n"
                                     "lossy, about a tenth of the size; what CesiumJS needs to render splats in 3D Tiles)")
-      .bind("out", o.out, "the file to write (empty: gaussians.<format> in the model's directory)")
+      .default_text("spz for 3dtiles, else none")
+      .bind("out", o.out, "the file (the directory for 3dtiles) to write (empty: gaussians.<format>, gaussians_3dtiles/ in\n"
+                          "the model's directory)")
       .bind("method", o.method, "which language model of a run output: citylangsplat or langsplat")
       .bind("level", o.level, "the queries' level: 1, 2, 3, or best (per text the level with the highest score)")
       .flag("scene-frame", o.georeference, "keep the frame the model was trained in, not the city model's CRS", false);

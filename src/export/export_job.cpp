@@ -6,10 +6,14 @@
 #include <filesystem>
 #include <optional>
 
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/run_layout.h"
 #include "export/splat_gltf.h"
+#include "export/tileset.h"
+#include "georef/crs_name.h"
+#include "georef/proj_crs.h"
 #include "language/language_model.h"
 #include "language/provenance.h"
 #include "query/selection.h"
@@ -99,24 +103,30 @@ std::array<double, 16> gltf_city_matrix(const CityTransform& scene_from_crs, con
 }
 
 json run_export(const ExportOptions& o) {
-  if (o.format != "glb" && o.format != "gltf") throw UsageError("export: --format must be glb or gltf, got '" + o.format + "'");
-  if (o.compress != "none" && o.compress != "spz") throw UsageError("export: --compress must be none or spz, got '" + o.compress + "'");
+  if (o.format != "glb" && o.format != "gltf" && o.format != "3dtiles")
+    throw UsageError("export: --format must be glb, gltf or 3dtiles, got '" + o.format + "'");
+  if (!o.compress.empty() && o.compress != "none" && o.compress != "spz")
+    throw UsageError("export: --compress must be none or spz, got '" + o.compress + "'");
+  const bool tiles = o.format == "3dtiles";
+  if (tiles && !o.georeference) throw UsageError("export: a 3D Tiles tileset lies on the globe: --scene-frame does not go with it");
+  const std::string compress = !o.compress.empty() ? o.compress : tiles ? "spz" : "none";
   ExportInput in = read_input(o);
   if (!o.queries.empty() && !in.model)
     throw UsageError("export: text queries need a language model (a run output or a model directory), not a PLY");
 
   SplatGltfOptions options;
-  options.compression = o.compress == "spz" ? SplatCompression::Spz : SplatCompression::None;
+  options.compression = compress == "spz" ? SplatCompression::Spz : SplatCompression::None;
+  std::optional<CityFrame> city_frame;
+  Vec3d origin{0, 0, 0};
   json frame{{"frame", "scene"}, {"description", "the frame the model was trained in (no city transform recorded)"}};
   const fs::path transform_file = in.labels_dir.empty() ? fs::path() : in.labels_dir / kLabelsCityTransform;
   if (o.georeference && !transform_file.empty() && fs::exists(transform_file)) {
-    const CityFrame city = read_city_frame(transform_file.string());
+    const CityFrame& city = city_frame.emplace(read_city_frame(transform_file.string()));
     const CityTransform crs_from_scene = inverse(city.transform);
     const at::Tensor means = in.gaussians.means.to(torch::kFloat64).contiguous();
     const double* p = means.data_ptr<double>();
     Vec3d sum{0, 0, 0};
     for (int64_t i = 0; i < in.gaussians.size(); ++i) sum = sum + crs_from_scene.apply({p[3 * i], p[3 * i + 1], p[3 * i + 2]});
-    Vec3d origin{0, 0, 0};
     for (int a = 0; a < 3; ++a) origin[a] = std::round(sum[a] / std::max<int64_t>(1, in.gaussians.size()));
     options.node_matrix = gltf_city_matrix(city.transform, origin);
     frame = {{"frame", "city"},
@@ -125,9 +135,11 @@ json run_export(const ExportOptions& o) {
              {"transform", transform_file.string()},
              {"description", "the city model's CRS minus origin, y up: glTF (x, y, z) = (E, U, -N)"}};
   } else if (o.georeference) {
-    log_warn("export: no city transform recorded with the model (" +
-             (transform_file.empty() ? std::string("no label maps") : transform_file.string() + " is missing") +
-             "): the splats stay in the frame they were trained in");
+    const std::string why = "no city transform recorded with the model (" +
+                            (transform_file.empty() ? std::string("no label maps") : transform_file.string() + " is missing") + ")";
+    if (tiles) throw Error("export: a 3D Tiles tileset needs the city model's CRS and transform: " + why +
+                           "; export a run whose `raycast` stage wrote it (this version's), or glb in the scene's frame");
+    log_warn("export: " + why + ": the splats stay in the frame they were trained in");
   }
   options.extras = {{"citylangsplat", frame}};
 
@@ -143,17 +155,46 @@ json run_export(const ExportOptions& o) {
   }
   const std::vector<SplatScores> scores = o.queries.empty() ? std::vector<SplatScores>{} : query_scores(*in.model, in.model_dir, o);
 
-  const GltfBuilder gltf = splat_gltf(in.gaussians, with_semantics ? &semantics : nullptr, scores, options);
-  const fs::path out = o.out.empty() ? in.default_out : fs::path(o.out);
-  if (out.extension() != "." + o.format)
+  fs::path out = o.out.empty() ? in.default_out : fs::path(o.out);
+  if (tiles && o.out.empty()) out = in.default_out.replace_extension("").string() + "_3dtiles";
+  if (!tiles && out.extension() != "." + o.format)
     throw UsageError("export: --out " + out.string() + " does not end in ." + o.format + " (--format " + o.format + ")");
-  if (out.has_parent_path()) fs::create_directories(out.parent_path());
-  gltf.write(out);
+  // The tileset's frame before anything is written: PROJ must know the CRS and place the origin.
+  json tileset;
+  if (tiles) {
+    const std::optional<CrsName> crs = parse_crs_name(city_frame->crs);
+    if (!crs) throw Error("export: a 3D Tiles tileset needs the city model's CRS in a form PROJ reads; " + transform_file.string() +
+                          " names '" + city_frame->crs + "'");
+    const CrsToGeocentric to_ecef(cat("EPSG:", crs->horizontal_epsg));
+    if (!to_ecef.geoid_available())
+      log_warn("export: EGM96's grid is not installed (proj-data): the city model's heights go on the globe as ellipsoidal, tens of metres low");
+    const CityTransform crs_from_scene = inverse(city_frame->transform);
+    const at::Tensor means = in.gaussians.means.to(torch::kFloat64).contiguous();
+    const at::Tensor extent = std::get<0>(in.gaussians.scales().to(torch::kFloat64).max(1)).contiguous();
+    std::vector<Vec3d> local(in.gaussians.size());
+    std::vector<double> radii(in.gaussians.size());
+    for (int64_t i = 0; i < in.gaussians.size(); ++i) {
+      const double* p = means.data_ptr<double>() + 3 * i;
+      local[i] = crs_from_scene.apply({p[0], p[1], p[2]}) - origin;
+      radii[i] = 3 * crs_from_scene.scale() * extent.data_ptr<double>()[i];
+    }
+    tileset = tileset_json(ecef_tile_transform(to_ecef, origin), bounding_box(local, radii), "gaussians.glb",
+                           {{"citylangsplat", frame}});
+  }
+  const GltfBuilder gltf = splat_gltf(in.gaussians, with_semantics ? &semantics : nullptr, scores, options);
+  if (tiles) {
+    fs::create_directories(out);
+    gltf.write(out / "gaussians.glb");
+    write_text_atomic(out / "tileset.json", tileset.dump(1));
+  } else {
+    if (out.has_parent_path()) fs::create_directories(out.parent_path());
+    gltf.write(out);
+  }
   json queries = json::array();
   for (const SplatScores& s : scores) queries.push_back({{"text", s.text}, {"level", s.level}, {"property", s.id}});
-  return {{"file", out.string()},
+  return {{"file", tiles ? (out / "tileset.json").string() : out.string()},
           {"format", o.format},
-          {"compress", o.compress},
+          {"compress", compress},
           {"gaussians", in.gaussians.size()},
           {"sh_degree", in.gaussians.sh_degree()},
           {"semantics", with_semantics ? json(in.model->objects.objects.size()) : json(nullptr)},

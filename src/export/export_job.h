@@ -1,5 +1,5 @@
 #pragma once
-// `citylangsplat export`: a trained model as glTF (issue 35, docs/export.md). The input is a `run`
+// `citylangsplat export`: a trained model as glTF or a 3D Tiles tileset (issue 35, docs/export.md). The input is a `run`
 // output, a language model directory or a 3DGS PLY; the splats go out as splat_gltf.h writes them,
 // with their city objects and text query scores when the model has them, placed in the city model's
 // CRS when the label maps recorded the transform (labels/city_transform.json):
@@ -17,9 +17,9 @@ namespace cls {
 
 struct ExportOptions {
   std::string input;                   // a run output, a language model directory or a .ply
-  std::string format = "glb";          // glb or gltf
-  std::string compress = "none";       // none or spz (KHR_gaussian_splatting_compression_spz_2)
-  std::string out;                     // "" = beside the model: gaussians.<format>
+  std::string format = "glb";          // glb, gltf, or 3dtiles (a directory: tileset.json + gaussians.glb)
+  std::string compress;                // none or spz (KHR_gaussian_splatting_compression_spz_2); "": spz for 3dtiles
+  std::string out;                     // "" = beside the model: gaussians.<format>, gaussians_3dtiles/
   std::string method = "citylangsplat";  // the language model of a run output
   std::vector<std::string> queries;    // texts whose per-splat scores go out as property attributes
   std::string level = "best";          // the queries' level: 1, 2, 3 or best (LangSplat's choice per text)

@@ -144,6 +144,17 @@ std::optional<double> Egm96Geoid::undulation(double latitude, double longitude) 
   return out.xyz.z;  // multiplier +1: z + N
 }
 
+CrsToGeocentric::CrsToGeocentric(const std::string& crs, const std::string& geocentric)
+    : to_wgs84_(crs, "EPSG:4326", "a position on the globe"),
+      to_geocentric_("EPSG:4979", geocentric, "a geocentric frame") {}
+
+std::optional<std::array<double, 3>> CrsToGeocentric::operator()(double x, double y, double z) const {
+  const auto lonlat = to_wgs84_.forward(x, y);
+  if (!lonlat) return std::nullopt;
+  const double h = z + geoid_.undulation((*lonlat)[1], (*lonlat)[0]).value_or(0);
+  return to_geocentric_.forward3((*lonlat)[0], (*lonlat)[1], h);
+}
+
 GeoidHeights::GeoidHeights(int horizontal_epsg, int vertical_epsg) : context_(quiet_context()) {
   // Geographic 3D WGS 84 -> the compound of the model's horizontal CRS's geographic base and its heights;
   // of PROJ's candidate operations the first that is not a ballpark one and whose grids are all present.

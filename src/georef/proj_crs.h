@@ -78,6 +78,25 @@ class Egm96Geoid {
   PJconsts* shift_ = nullptr;
 };
 
+// Points of a CRS with heights above the geoid (a city model's: easting, northing, orthometric height) in
+// a geocentric CRS (ECEF, EPSG:4978 unless told): PROJ to WGS 84 longitude / latitude, the EGM96
+// undulation added to the heights where its grid is installed (else they pass as ellipsoidal: metres off,
+// geoid_available() says so), then PROJ to geocentric. What a projected frame needs to sit on the globe:
+// a model_aligner ECEF frame, a 3D Tiles tileset's transform.
+class CrsToGeocentric {
+ public:
+  // cls::Error as CrsTransform's for a CRS PROJ does not know or cannot transform.
+  CrsToGeocentric(const std::string& crs, const std::string& geocentric = "EPSG:4978");
+  // nullopt for a position PROJ cannot place.
+  std::optional<std::array<double, 3>> operator()(double x, double y, double z) const;
+  bool geoid_available() const { return geoid_.available(); }
+
+ private:
+  CrsTransform to_wgs84_;
+  CrsTransform to_geocentric_;
+  Egm96Geoid geoid_;
+};
+
 // WGS 84 ellipsoidal heights -> heights of a city model's vertical CRS (DHHN2016, NAP, EGM96 height, ...)
 // through PROJ's own transformation with that datum's geoid grid, where the grid is installed: Debian's
 // proj-data holds EGM96 and none of the national ones (GCG2016, NLGEO2018, ...), which users add to

@@ -366,19 +366,20 @@ GeorefResult georeference_frame(const Scene& scene, const SemanticMesh& mesh, co
   // from GPS) they become ellipsoidal through EGM96 where its grid is installed (the vertical search
   // takes up the rest).
   const bool geocentric = is_geocentric_crs(frame_crs).value_or(false);
-  const CrsTransform crs(city_crs, geocentric ? "EPSG:4326" : frame_crs, "a photogrammetry project's frame");
-  const std::optional<CrsTransform> to_geocentric =
-      geocentric ? std::optional<CrsTransform>(std::in_place, "EPSG:4979", frame_crs, "a geocentric frame") : std::nullopt;
-  const Egm96Geoid geoid;
+  const std::optional<CrsTransform> crs =
+      geocentric ? std::nullopt : std::optional<CrsTransform>(std::in_place, city_crs, frame_crs, "a photogrammetry project's frame");
+  const std::optional<CrsToGeocentric> to_geocentric =
+      geocentric ? std::optional<CrsToGeocentric>(std::in_place, city_crs, frame_crs) : std::nullopt;
   auto in_frame_crs = [&](const Vec3d& local) {
     const double x = mesh.origin[0] + local.x, y = mesh.origin[1] + local.y, z = mesh.origin[2] + local.z;
-    const auto xy = crs.forward(x, y);
+    if (to_geocentric) {
+      const auto xyz = (*to_geocentric)(x, y, z);
+      if (!xyz) fail(frame.source, cat("PROJ cannot place the city model's position (", city_crs, ") in ", frame_crs));
+      return Vec3d{(*xyz)[0], (*xyz)[1], (*xyz)[2]};
+    }
+    const auto xy = crs->forward(x, y);
     if (!xy) fail(frame.source, cat("its CRS cannot represent the city model's position (", city_crs, ")"));
-    if (!to_geocentric) return Vec3d{(*xy)[0], (*xy)[1], z};
-    const double h = z + geoid.undulation((*xy)[1], (*xy)[0]).value_or(0);
-    const auto xyz = to_geocentric->forward3((*xy)[0], (*xy)[1], h);
-    if (!xyz) fail(frame.source, cat("PROJ cannot place the city model's position (", city_crs, ") in ", frame_crs));
-    return Vec3d{(*xyz)[0], (*xyz)[1], (*xyz)[2]};
+    return Vec3d{(*xy)[0], (*xy)[1], z};
   };
   const Vec3d reference = in_frame_crs({});
   // ECEF follows the Earth's curvature, which a similarity does not: 3 mm at 200 m, 8 cm at 1 km.

@@ -12,6 +12,10 @@
    z up), lie within --tolerance metres of that window's polygons in the file's coordinates.
 4. The property table's ids are the city model's: every Window row's id is a gml:id of a bldg:Window,
    its building the file's bldg:Building; the window splats score higher for the query "window".
+6. `--format 3dtiles`: the tileset's box holds every splat centre (the PLY through the content's node
+   matrix, glTF's y up turned to z up as 3D Tiles does), and its transform is a frame on the globe:
+   orthogonal columns of length 1 within 0.1 % (a projection's scale), the up column pointing away from
+   the Earth's centre, the origin 6,350-6,400 km from it.
 5. `--compress spz`: the payload decoded by the SPZ decoder CesiumJS uses (npm @spz-loader/core, in
    glTF's LUF axes) equals the PLY within SPZ version 2's quantisation steps (positions 2^-bits,
    log-scales 1/16, quaternion and alpha 1/255, colour 1/(0.15 * 255) of the DC, SH 1/128 and buckets
@@ -179,6 +183,35 @@ def check_spz(args, ply, spz_loader):
     return failures
 
 
+def check_tileset(args, ply):
+    out = os.path.join(args.out, "tiles")
+    subprocess.run([args.binary, "export", args.run, "--format", "3dtiles", "--out", out], check=True)
+    tileset = json.load(open(os.path.join(out, "tileset.json")))
+    root = tileset["root"]
+    doc, _ = read_glb(os.path.join(out, root["content"]["uri"]))
+    m, box, t = doc["nodes"][0]["matrix"], root["boundingVolume"]["box"], root["transform"]
+    outside = 0
+    for i in range(len(ply["x"])):
+        p = [ply["x"][i], ply["y"][i], ply["z"][i], 1]
+        g = [sum(m[4 * c + r] * p[c] for c in range(4)) for r in range(3)]
+        local = [g[0], -g[2], g[1]]  # y up -> z up
+        outside += any(abs(local[a] - box[a]) > box[3 + 4 * a] + 1e-6 for a in range(3))
+    cols = [t[4 * c:4 * c + 3] for c in range(3)]
+    dot = lambda a, b: sum(x * y for x, y in zip(a, b))
+    lengths = [math.sqrt(dot(c, c)) for c in cols]
+    skew = max(abs(dot(cols[a], cols[b])) / (lengths[a] * lengths[b]) for a, b in ((0, 1), (0, 2), (1, 2)))
+    centre = t[12:15]
+    radius = math.sqrt(dot(centre, centre))
+    up = dot(cols[2], centre) / (lengths[2] * radius)
+    print(f"3D Tiles: {outside} of {len(ply['x'])} splat centres outside the root box; transform columns of length "
+          f"{', '.join(f'{v:.5f}' for v in lengths)}, largest cosine between two {skew:.1e}, up . radial {up:.6f}, "
+          f"origin {radius / 1000:.1f} km from the Earth's centre")
+    failures = []
+    if outside or max(abs(v - 1) for v in lengths) > 1e-3 or skew > 1e-3 or up < 0.999 or not 6.35e6 < radius < 6.4e6:
+        failures.append("the tileset's box or transform is wrong")
+    return failures
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--binary", required=True)
@@ -294,6 +327,7 @@ def main():
         failures.append("window splats do not score higher for 'window'")
 
     failures += check_spz(args, ply, spz_loader)
+    failures += check_tileset(args, ply)
 
     for f in failures:
         print(f"FAIL: {f}")

@@ -17,6 +17,7 @@
 #include "export/export_job.h"
 #include "export/splat_gltf.h"
 #include "export/spz.h"
+#include "export/tileset.h"
 #include "splat/ply_gaussians.h"
 #include "splat/sh.h"
 
@@ -289,7 +290,7 @@ TEST(ExportJob, APlyGoesOutInItsOwnFrameAndOptionsAreChecked) {
   o.out = (dir / "x.gltf").string();
   EXPECT_NE(test::error_of([&] { run_export(o); }).find("does not end in .glb"), std::string::npos);
   o.format = "obj";
-  EXPECT_NE(test::error_of([&] { run_export(o); }).find("--format must be glb or gltf"), std::string::npos);
+  EXPECT_NE(test::error_of([&] { run_export(o); }).find("--format must be glb, gltf or 3dtiles"), std::string::npos);
   EXPECT_FALSE(fs::exists(dir / "x.gltf"));
   fs::remove_all(dir);
 }
@@ -382,6 +383,49 @@ TEST(Spz, TheGltfHoldsThePayloadAndAccessorsWithoutData) {
   // The payload holds the opacity and the DC term (the extension's example leaves both out).
   EXPECT_FALSE(attributes.contains("KHR_gaussian_splatting:OPACITY"));
   EXPECT_FALSE(attributes.contains("KHR_gaussian_splatting:SH_DEGREE_0_COEF_0"));
+}
+
+TEST(Tileset, TheLocalFrameOnTheGlobeWhereUtmIsKnownInClosedForm) {
+  // UTM 32N (WGS 84) at easting 500000, northing 0 is latitude 0, longitude 9 deg exactly, where the
+  // projection's scale is k0 = 0.9996 (a grid metre is 1 / k0 metres on the ground) and grid north is
+  // true north: east is (-sin 9, cos 9, 0) / k0, north (0, 0, 1) / k0, up (cos 9, sin 9, 0); the origin
+  // at height 0 above the geoid lies N (EGM96) above the ellipsoid, at (a + N) (cos 9, sin 9, 0) with
+  // a = 6378137 m. Central differences over +-10 m leave ~5e-6 of the curvature.
+  const CrsToGeocentric to_ecef("EPSG:32632");
+  const Egm96Geoid geoid;
+  const double n = geoid.undulation(0, 9).value_or(0);
+  const std::array<double, 16> m = ecef_tile_transform(to_ecef, {500000, 0, 0});
+  const double c = std::cos(9 * M_PI / 180), s = std::sin(9 * M_PI / 180), k = 1 / 0.9996;
+  const double expected[16] = {-k * s, k * c, 0, 0, 0, 0, k, 0, c, s, 0, 0, (6378137 + n) * c, (6378137 + n) * s, 0, 1};
+  for (int i = 0; i < 12; ++i) EXPECT_NEAR(m[i], expected[i], 1e-5) << i;
+  for (int i = 12; i < 15; ++i) EXPECT_NEAR(m[i], expected[i], 1e-3) << i;
+  EXPECT_EQ(m[15], 1);
+  if (!geoid.available()) GTEST_SKIP() << "EGM96's grid is not installed: heights went on as ellipsoidal";
+  EXPECT_GT(std::abs(n), 1.0);  // the test says something about the geoid only where N is not ~0
+}
+
+TEST(Tileset, TheBoxHoldsEveryGaussianWithItsRadius) {
+  const std::array<double, 12> box = bounding_box({{0, 0, 0}, {10, -4, 2}}, {1, 0.5});
+  const std::array<double, 12> expected{4.75, -1.75, 0.75, 5.75, 0, 0, 0, 2.75, 0, 0, 0, 1.75};  // x -1..10.5, y -4.5..1, z -1..2.5
+  EXPECT_EQ(box, expected);
+  const json t = tileset_json({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}, box, "g.glb", json::object());
+  EXPECT_EQ(t["asset"]["version"], "1.1");
+  EXPECT_EQ(t["root"]["content"]["uri"], "g.glb");
+  EXPECT_EQ(t["root"]["refine"], "ADD");
+  EXPECT_NEAR(t["geometricError"].get<double>(), 2 * std::sqrt(5.75 * 5.75 + 2.75 * 2.75 + 1.75 * 1.75), 1e-12);
+}
+
+TEST(Tileset, APlyWithoutACityFrameIsRefused) {
+  const fs::path dir = fs::temp_directory_path() / "cls_test_export_tiles";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  write_gaussians_ply((dir / "model.ply").string(), hand_gaussians());
+  ExportOptions o;
+  o.input = (dir / "model.ply").string();
+  o.format = "3dtiles";
+  EXPECT_NE(test::error_of([&] { run_export(o); }).find("a 3D Tiles tileset needs the city model's CRS"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir / "model_3dtiles"));
+  fs::remove_all(dir);
 }
 
 }  // namespace
