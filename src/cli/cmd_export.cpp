@@ -1,6 +1,4 @@
 // citylangsplat export: a trained model as glTF with its city objects (src/export, docs/export.md).
-#include <iostream>
-
 #include "cli/commands.h"
 #include "core/args.h"
 #include "core/log.h"

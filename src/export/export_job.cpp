@@ -113,10 +113,17 @@ json run_export(const ExportOptions& o) {
   ExportInput in = read_input(o);
   if (!o.queries.empty() && !in.model)
     throw UsageError("export: text queries need a language model (a run output or a model directory), not a PLY");
+  fs::path out = o.out.empty() ? in.default_out : fs::path(o.out);
+  if (tiles && o.out.empty()) out = in.default_out.replace_extension("").string() + "_3dtiles";
+  if (!tiles && out.extension() != "." + o.format)
+    throw UsageError("export: --out " + out.string() + " does not end in ." + o.format + " (--format " + o.format + ")");
 
   SplatGltfOptions options;
   options.compression = compress == "spz" ? SplatCompression::Spz : SplatCompression::None;
+  // With the city transform: the Gaussians' centres in the city model's CRS, once, for the origin and
+  // the tileset's box.
   std::optional<CityFrame> city_frame;
+  std::vector<Vec3d> in_crs;
   Vec3d origin{0, 0, 0};
   json frame{{"frame", "scene"}, {"description", "the frame the model was trained in (no city transform recorded)"}};
   const fs::path transform_file = in.labels_dir.empty() ? fs::path() : in.labels_dir / kLabelsCityTransform;
@@ -126,7 +133,10 @@ json run_export(const ExportOptions& o) {
     const at::Tensor means = in.gaussians.means.to(torch::kFloat64).contiguous();
     const double* p = means.data_ptr<double>();
     Vec3d sum{0, 0, 0};
-    for (int64_t i = 0; i < in.gaussians.size(); ++i) sum = sum + crs_from_scene.apply({p[3 * i], p[3 * i + 1], p[3 * i + 2]});
+    for (int64_t i = 0; i < in.gaussians.size(); ++i) {
+      in_crs.push_back(crs_from_scene.apply({p[3 * i], p[3 * i + 1], p[3 * i + 2]}));
+      sum = sum + in_crs.back();
+    }
     for (int a = 0; a < 3; ++a) origin[a] = std::round(sum[a] / std::max<int64_t>(1, in.gaussians.size()));
     options.node_matrix = gltf_city_matrix(city.transform, origin);
     frame = {{"frame", "city"},
@@ -143,6 +153,27 @@ json run_export(const ExportOptions& o) {
   }
   options.extras = {{"citylangsplat", frame}};
 
+  // The tileset's frame before anything is computed or written: PROJ must know the CRS and place the origin.
+  json tileset;
+  if (tiles) {
+    const std::optional<CrsName> crs = parse_crs_name(city_frame->crs);
+    if (!crs) throw Error("export: a 3D Tiles tileset needs the city model's CRS in a form PROJ reads; " + transform_file.string() +
+                          " names '" + city_frame->crs + "'");
+    const CrsToGeocentric to_ecef(cat("EPSG:", crs->horizontal_epsg));
+    if (!to_ecef.geoid_available())
+      log_warn("export: EGM96's grid is not installed (proj-data): the city model's heights go on the globe as ellipsoidal, tens of metres low");
+    const double scale = inverse(city_frame->transform).scale();
+    const at::Tensor extent = std::get<0>(in.gaussians.scales().to(torch::kFloat64).max(1)).contiguous();
+    std::vector<Vec3d> local(in_crs.size());
+    std::vector<double> radii(in_crs.size());
+    for (size_t i = 0; i < in_crs.size(); ++i) {
+      local[i] = in_crs[i] - origin;
+      radii[i] = 3 * scale * extent.data_ptr<double>()[i];
+    }
+    tileset = tileset_json(ecef_tile_transform(to_ecef, origin), bounding_box(local, radii), "gaussians.glb",
+                           {{"citylangsplat", frame}});
+  }
+
   SplatSemantics semantics;
   const GaussianExtra* object = in.gaussians.extra(kObjectProperty);
   const bool with_semantics = in.model && !in.model->objects.objects.empty() && object;
@@ -155,32 +186,6 @@ json run_export(const ExportOptions& o) {
   }
   const std::vector<SplatScores> scores = o.queries.empty() ? std::vector<SplatScores>{} : query_scores(*in.model, in.model_dir, o);
 
-  fs::path out = o.out.empty() ? in.default_out : fs::path(o.out);
-  if (tiles && o.out.empty()) out = in.default_out.replace_extension("").string() + "_3dtiles";
-  if (!tiles && out.extension() != "." + o.format)
-    throw UsageError("export: --out " + out.string() + " does not end in ." + o.format + " (--format " + o.format + ")");
-  // The tileset's frame before anything is written: PROJ must know the CRS and place the origin.
-  json tileset;
-  if (tiles) {
-    const std::optional<CrsName> crs = parse_crs_name(city_frame->crs);
-    if (!crs) throw Error("export: a 3D Tiles tileset needs the city model's CRS in a form PROJ reads; " + transform_file.string() +
-                          " names '" + city_frame->crs + "'");
-    const CrsToGeocentric to_ecef(cat("EPSG:", crs->horizontal_epsg));
-    if (!to_ecef.geoid_available())
-      log_warn("export: EGM96's grid is not installed (proj-data): the city model's heights go on the globe as ellipsoidal, tens of metres low");
-    const CityTransform crs_from_scene = inverse(city_frame->transform);
-    const at::Tensor means = in.gaussians.means.to(torch::kFloat64).contiguous();
-    const at::Tensor extent = std::get<0>(in.gaussians.scales().to(torch::kFloat64).max(1)).contiguous();
-    std::vector<Vec3d> local(in.gaussians.size());
-    std::vector<double> radii(in.gaussians.size());
-    for (int64_t i = 0; i < in.gaussians.size(); ++i) {
-      const double* p = means.data_ptr<double>() + 3 * i;
-      local[i] = crs_from_scene.apply({p[0], p[1], p[2]}) - origin;
-      radii[i] = 3 * crs_from_scene.scale() * extent.data_ptr<double>()[i];
-    }
-    tileset = tileset_json(ecef_tile_transform(to_ecef, origin), bounding_box(local, radii), "gaussians.glb",
-                           {{"citylangsplat", frame}});
-  }
   const GltfBuilder gltf = splat_gltf(in.gaussians, with_semantics ? &semantics : nullptr, scores, options);
   if (tiles) {
     fs::create_directories(out);

@@ -77,12 +77,13 @@ int GltfBuilder::add_accessor(const void* data, int64_t count, const std::string
 }
 
 void GltfBuilder::use_extension(const std::string& name, bool required) {
-  for (const char* list : {"extensionsUsed", "extensionsRequired"}) {
-    if (list == std::string("extensionsRequired") && !required) continue;
+  auto add_to = [&](const char* list) {
     nlohmann::json& names = json_[list];
     if (names.is_null()) names = nlohmann::json::array();
     if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
-  }
+  };
+  add_to("extensionsUsed");
+  if (required) add_to("extensionsRequired");
 }
 
 std::string GltfBuilder::glb() const {

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "export/finite_values.h"
 #include "export/spz.h"
 #include "splat/sh.h"
 
@@ -19,17 +20,6 @@ using nlohmann::json;
 // need a padded stride (vertex attributes align to 4 bytes), and a float holds every integer to 2^24.
 constexpr int64_t kMaxFeatureIds = int64_t(1) << 24;
 constexpr const char* kLevelLabels[3] = {"level1_opening", "level2_surface", "level3_building"};
-
-std::vector<float> floats(const at::Tensor& t) {
-  const at::Tensor c = t.to(torch::kFloat32).contiguous().cpu();
-  return std::vector<float>(c.data_ptr<float>(), c.data_ptr<float>() + c.numel());
-}
-
-void check_finite(const std::vector<float>& v, const std::string& what) {
-  for (size_t i = 0; i < v.size(); ++i)
-    if (!std::isfinite(v[i])) throw Error(cat("export: the model's ", what, " holds a value that is not finite (", v[i],
-                                              ", element ", i, "): a glTF accessor cannot carry it"));
-}
 
 double srgb_to_linear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
 
@@ -153,8 +143,7 @@ GltfBuilder splat_gltf(const GaussianModel& g, const SplatSemantics* semantics, 
   json primitive{{"mode", 0}, {"attributes", json::object()}};
   json& attributes = primitive["attributes"];
 
-  const std::vector<float> means = floats(g.means);
-  check_finite(means, "positions");
+  const std::vector<float> means = finite_floats(g.means, "positions");
   std::vector<double> lo(3, INFINITY), hi(3, -INFINITY);
   for (int64_t i = 0; i < n; ++i)
     for (int a = 0; a < 3; ++a) {
@@ -162,19 +151,15 @@ GltfBuilder splat_gltf(const GaussianModel& g, const SplatSemantics* semantics, 
       hi[a] = std::max(hi[a], double(means[3 * i + a]));
     }
   // Unit quaternions reordered from (w, x, y, z) to glTF's (x, y, z, w).
-  const std::vector<float> wxyz = floats(torch::nn::functional::normalize(
-      g.quats.to(torch::kFloat64), torch::nn::functional::NormalizeFuncOptions().dim(1)));
-  check_finite(wxyz, "rotations");
+  const std::vector<float> wxyz = finite_floats(torch::nn::functional::normalize(
+      g.quats.to(torch::kFloat64), torch::nn::functional::NormalizeFuncOptions().dim(1)), "rotations");
   std::vector<float> xyzw(4 * n);
   for (int64_t i = 0; i < n; ++i)
     for (int c = 0; c < 4; ++c) xyzw[4 * i + c] = wxyz[4 * i + (c + 1) % 4];
-  const std::vector<float> scales = floats(g.scales());
-  check_finite(scales, "scales");
-  const std::vector<float> opacity = floats(g.opacities());
-  check_finite(opacity, "opacities");
+  const std::vector<float> scales = finite_floats(g.scales(), "scales");
+  const std::vector<float> opacity = finite_floats(g.opacities(), "opacities");
   const int64_t coeffs = sh_coeff_count(g.sh_degree());
-  const std::vector<float> sh = floats(g.sh());  // N x coeffs x 3
-  check_finite(sh, "spherical harmonics");
+  const std::vector<float> sh = finite_floats(g.sh(), "spherical harmonics");  // N x coeffs x 3
   // The fallback colour: the DC colour, clamped, decoded from sRGB to glTF's linear COLOR_0; alpha the opacity.
   std::vector<uint8_t> rgba(4 * n);
   for (int64_t i = 0; i < n; ++i) {

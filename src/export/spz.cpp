@@ -11,6 +11,7 @@
 #include "core/endian.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "export/finite_values.h"
 #include "splat/sh.h"
 
 namespace cls {
@@ -27,14 +28,6 @@ uint8_t sh_byte(double x, int bucket) {
   int q = static_cast<int>(std::round(x * 128.0) + 128.0);
   q = (q + bucket / 2) / bucket * bucket;
   return static_cast<uint8_t>(std::clamp(q, 0, 255));
-}
-
-std::vector<float> floats(const at::Tensor& t) {
-  const at::Tensor c = t.to(torch::kFloat32).contiguous().cpu();
-  std::vector<float> v(c.data_ptr<float>(), c.data_ptr<float>() + c.numel());
-  for (size_t i = 0; i < v.size(); ++i)
-    if (!std::isfinite(v[i])) throw Error(cat("export: SPZ: the model holds a value that is not finite (element ", i, ")"));
-  return v;
 }
 
 std::string gzip(const std::string& raw) {
@@ -74,8 +67,9 @@ std::string spz_v2(const GaussianModel& g) {
   at::NoGradGuard no_grad;
   const int64_t n = g.size();
   if (n > int64_t(UINT32_MAX)) throw Error("export: SPZ holds at most 2^32 - 1 Gaussians");
-  const std::vector<float> means = floats(g.means), log_scales = floats(g.log_scales), logits = floats(g.opacity_logits),
-                           sh = floats(g.sh()), quats = floats(g.quats);
+  const std::vector<float> means = finite_floats(g.means, "positions"), log_scales = finite_floats(g.log_scales, "log-scales"),
+                           logits = finite_floats(g.opacity_logits, "opacity logits"),
+                           sh = finite_floats(g.sh(), "spherical harmonics"), quats = finite_floats(g.quats, "rotations");
   const int degree = g.sh_degree(), coeffs = sh_coeff_count(degree);
 
   float extent = 0;

@@ -17,7 +17,6 @@
 
 #include <ATen/ATen.h>
 
-#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdint>
@@ -74,14 +73,10 @@ struct ViewTargets {
 
 // SAM's maps 1..3 (its default level 0 is no level's target) and CityGML's three, as int16 when every id fits.
 at::Tensor compact_seg_maps(std::vector<int32_t>& sam_seg, std::vector<int32_t>& gml_seg, int height, int width) {
-  const int64_t hw = int64_t(height) * width;
-  const at::Tensor sam = at::from_blob(sam_seg.data(), {4, height, width}, at::kInt).slice(0, 1, 4);
-  const at::Tensor gml = at::from_blob(gml_seg.data(), {3, height, width}, at::kInt);
-  int32_t lo = 0, hi = 0;
-  for (const std::vector<int32_t>* maps : {&sam_seg, &gml_seg})
-    for (size_t p = maps == &sam_seg ? size_t(hw) : 0; p < maps->size(); ++p) lo = std::min(lo, (*maps)[p]), hi = std::max(hi, (*maps)[p]);
-  const bool fits = lo >= INT16_MIN && hi <= INT16_MAX;
-  return at::cat({sam, gml}, 0).to(fits ? at::kShort : at::kInt).contiguous();
+  const at::Tensor maps = at::cat({at::from_blob(sam_seg.data(), {4, height, width}, at::kInt).slice(0, 1, 4),
+                                   at::from_blob(gml_seg.data(), {3, height, width}, at::kInt)}, 0);
+  const bool fits = maps.min().item<int32_t>() >= INT16_MIN && maps.max().item<int32_t>() <= INT16_MAX;
+  return fits ? maps.to(at::kShort) : maps;
 }
 
 at::Tensor encode_rows(const Autoencoder& ae, const at::Tensor& features, at::Device device) {

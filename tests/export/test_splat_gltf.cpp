@@ -18,6 +18,7 @@
 #include "export/splat_gltf.h"
 #include "export/spz.h"
 #include "export/tileset.h"
+#include "scene/scene_test_util.h"
 #include "splat/ply_gaussians.h"
 #include "splat/sh.h"
 
@@ -257,9 +258,7 @@ TEST(SplatGltf, TheCityMatrixTakesTheSceneToTheCrsYUp) {
 }
 
 TEST(SplatGltf, AGltfWithItsBufferBeside) {
-  const fs::path dir = fs::temp_directory_path() / "cls_test_gltf_bin";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = test::fresh_dir("gltf_bin");
   const GltfBuilder b = splat_gltf(hand_gaussians(), nullptr, {}, {});
   b.write(dir / "model.gltf");
   const json doc = json::parse(read_text_file(dir / "model.gltf"));
@@ -270,9 +269,7 @@ TEST(SplatGltf, AGltfWithItsBufferBeside) {
 }
 
 TEST(ExportJob, APlyGoesOutInItsOwnFrameAndOptionsAreChecked) {
-  const fs::path dir = fs::temp_directory_path() / "cls_test_export_ply";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = test::fresh_dir("export_ply");
   write_gaussians_ply((dir / "model.ply").string(), hand_gaussians());
   ExportOptions o;
   o.input = (dir / "model.ply").string();
@@ -416,9 +413,7 @@ TEST(Tileset, TheBoxHoldsEveryGaussianWithItsRadius) {
 }
 
 TEST(Tileset, APlyWithoutACityFrameIsRefused) {
-  const fs::path dir = fs::temp_directory_path() / "cls_test_export_tiles";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = test::fresh_dir("export_tiles");
   write_gaussians_ply((dir / "model.ply").string(), hand_gaussians());
   ExportOptions o;
   o.input = (dir / "model.ply").string();
