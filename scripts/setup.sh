@@ -25,7 +25,8 @@ PACKAGES=(build-essential cmake ninja-build pkg-config
           libgtest-dev libtorch-dev libopenblas0-pthread libcurl4-openssl-dev zlib1g-dev libicu-dev
           libcpp-httplib-dev                                          # the viewer's server
           libexiv2-dev libproj-dev                                    # the photos' EXIF GPS, in the model's CRS
-          chromium chromium-driver python3-selenium python3-pil)  # the browser tests (report, viewer)
+          chromium chromium-driver python3-selenium python3-pil      # the browser tests (report, viewer)
+          python3-jsonschema)                                         # enrich's CityJSON against the official schemas
 # npm installs the viewer page's packages (three, Spark); Debian's when no npm is on the PATH.
 command -v npm >/dev/null 2>&1 || PACKAGES+=(npm)
 [ "$SLURM" = 0 ] || PACKAGES+=(slurm-wlm munge)

@@ -1,0 +1,169 @@
+// The enriched city model's parts on hand-made cases: rings back from the mesh builder's triangles,
+// the CityJSON structure of a wall with a window, and the covered fraction of a wall half in view.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "citymodel/city_objects.h"
+#include "citymodel/city_transform.h"
+#include "citymodel/mesh_builder.h"
+#include "core/npy.h"
+#include "export/city_observations.h"
+#include "export/cityjson_writer.h"
+#include "raycast/label_map_io.h"
+#include "scene/scene_test_util.h"
+
+namespace cls {
+namespace {
+
+using nlohmann::json;
+
+// A rotation of `ring` that starts at its smallest vertex, so that two rings compare as cycles.
+std::vector<uint32_t> canonical(std::vector<uint32_t> ring) {
+  std::rotate(ring.begin(), std::min_element(ring.begin(), ring.end()), ring.end());
+  return ring;
+}
+
+// The positions of a ring's vertices in the mesh, rotated to start at the smallest (x, y, z).
+std::vector<std::array<double, 3>> positions(const std::vector<uint32_t>& ring, const SemanticMesh& mesh) {
+  std::vector<std::array<double, 3>> p;
+  for (const uint32_t v : ring)
+    p.push_back({mesh.vertices[v][0] + mesh.origin[0], mesh.vertices[v][1] + mesh.origin[1], mesh.vertices[v][2] + mesh.origin[2]});
+  std::rotate(p.begin(), std::min_element(p.begin(), p.end()), p.end());
+  return p;
+}
+
+// A wall of 4 x 3 m in the plane y = 0 (normal -y: counter-clockwise seen from y < 0), with a window of
+// 1 x 1 m cut out of it and added as its own polygon.
+struct WallWithWindow {
+  Taxonomy taxonomy = Taxonomy::builtin();
+  SemanticMesh mesh;
+  Ring outer = {{0, 0, 0}, {4, 0, 0}, {4, 0, 3}, {0, 0, 3}};
+  Ring hole = {{1, 0, 1}, {1, 0, 2}, {2, 0, 2}, {2, 0, 1}};  // clockwise seen from y < 0
+  WallWithWindow() {
+    MeshBuilder b(taxonomy);
+    const int building = b.add_entity(3, taxonomy.find("building"), -1, "house");
+    const int wall = b.add_entity(2, taxonomy.find("wall"), building, "wall-1");
+    const int window = b.add_entity(1, taxonomy.find("window"), wall, "window-1");
+    b.add_polygon({outer, hole}, taxonomy.find("wall"), wall, "p-wall");
+    b.add_polygon({{hole.rbegin(), hole.rend()}}, taxonomy.find("window"), window, "p-window");
+    mesh = b.finish();
+  }
+};
+
+TEST(CityJsonWriter, PolygonRingsAreTheBuildersRingsWithTheExteriorFirst) {
+  const WallWithWindow w;
+  std::vector<std::array<uint32_t, 3>> wall_triangles;
+  for (size_t t = 0; t < w.mesh.triangles.size(); ++t)
+    if (w.mesh.tri_polygon[t] == 0) wall_triangles.push_back(w.mesh.triangles[t]);
+  ASSERT_GE(wall_triangles.size(), 8u);  // a quad with a quad hole: at least 8 triangles
+  const auto rings = polygon_rings(wall_triangles, w.mesh.vertices);
+  ASSERT_EQ(rings.size(), 2u);
+  // The exterior in the input's order (counter-clockwise about the wall's normal), then the hole reversed.
+  const std::vector<std::array<double, 3>> outer(w.outer.begin(), w.outer.end());
+  EXPECT_EQ(positions(rings[0], w.mesh), outer);
+  std::vector<std::array<double, 3>> hole(w.hole.begin(), w.hole.end());
+  std::rotate(hole.begin(), std::min_element(hole.begin(), hole.end()), hole.end());
+  EXPECT_EQ(positions(rings[1], w.mesh), hole);
+  // One triangle: itself; two triangles sharing an edge: the quad; two apart: two rings; an open fan: none.
+  EXPECT_EQ(canonical(polygon_rings({{0, 1, 2}}, w.mesh.vertices).at(0)), (std::vector<uint32_t>{0, 1, 2}));
+  EXPECT_EQ(canonical(polygon_rings({{0, 1, 2}, {0, 2, 3}}, w.mesh.vertices).at(0)), (std::vector<uint32_t>{0, 1, 2, 3}));
+  EXPECT_EQ(polygon_rings({{0, 1, 2}, {3, 4, 5}}, w.mesh.vertices).size(), 2u);
+  EXPECT_TRUE(polygon_rings({}, w.mesh.vertices).empty());
+}
+
+TEST(CityJsonWriter, AWallWithAWindowIsABuildingWithTwoSemanticSurfaces) {
+  const WallWithWindow w;
+  const CityJsonDocument doc = semantic_mesh_cityjson(w.mesh, w.taxonomy, "https://www.opengis.net/def/crs/EPSG/0/25832");
+  const json& d = doc.document;
+  EXPECT_EQ(d["type"], "CityJSON");
+  EXPECT_EQ(d["version"], "2.0");
+  EXPECT_EQ(d["metadata"]["referenceSystem"], "https://www.opengis.net/def/crs/EPSG/0/25832");
+  ASSERT_EQ(d["CityObjects"].size(), 1u);
+  const json& house = d["CityObjects"]["house"];
+  EXPECT_EQ(house["type"], "Building");
+  const json& g = house["geometry"][0];
+  EXPECT_EQ(g["type"], "MultiSurface");
+  ASSERT_EQ(g["boundaries"].size(), 2u);
+  EXPECT_EQ(g["boundaries"][0].size(), 2u);  // the wall: exterior and hole
+  EXPECT_EQ(g["boundaries"][1].size(), 1u);  // the window
+  const json& s = g["semantics"];
+  EXPECT_EQ(s["surfaces"][0]["type"], "WallSurface");
+  EXPECT_EQ(s["surfaces"][1]["type"], "Window");
+  EXPECT_EQ(s["surfaces"][1]["parent"], 0);
+  EXPECT_EQ(s["surfaces"][0]["children"], json::array({1}));
+  EXPECT_EQ(s["values"], json::array({0, 1}));
+  // 8 distinct corners, shared between the wall's hole and the window; coordinates back in the CRS.
+  ASSERT_EQ(d["vertices"].size(), 8u);
+  const json& t = d["transform"];
+  for (const json& v : d["vertices"])
+    for (int a = 0; a < 3; ++a) {
+      const double x = v[a].get<double>() * t["scale"][a].get<double>() + t["translate"][a].get<double>();
+      EXPECT_NEAR(x, std::round(x), 1e-9);  // the hand case's corners are whole metres
+    }
+  // Where each entity's attributes go.
+  ASSERT_EQ(doc.places.size(), 3u);
+  EXPECT_TRUE(doc.places[0].is_object);
+  EXPECT_EQ(doc.places[1].object, "house");
+  EXPECT_EQ(doc.places[1].surface, 0);
+  EXPECT_EQ(doc.places[2].surface, 1);
+  EXPECT_EQ(cityjson_reference_system("urn:adv:crs:ETRS89_UTM32*DE_DHHN92_NH"), "https://www.opengis.net/def/crs/EPSG/0/25832");
+  EXPECT_EQ(cityjson_reference_system("no such CRS"), "");
+}
+
+TEST(CityObservations, AWallHalfInViewIsHalfCoveredAndItsWindowCountsForIt) {
+  const WallWithWindow w;
+  const CityObjects objects = city_objects(w.mesh, w.taxonomy);
+  const std::vector<Vec3f> vertices = scene_vertices(w.mesh, CityTransform{});
+  // One camera on the wall's normal at y = -5 looking along +y, its image covering x in [2, 4] of the wall
+  // (z in [0, 3]): the right half of the wall, and none of the window (x in [1, 2]).
+  Scene scene;
+  SceneView view;
+  view.name = "v.png";
+  view.camera = {100, 100, 0, 0, 80, 120};  // u = 100 * (x - 2) / 5 on [0, 80): x in [2, 6)
+  Mat3d R;  // camera x = world x, camera y = -world z, camera z = world y
+  R.m[0][0] = 1, R.m[1][2] = -1, R.m[2][1] = 1;
+  view.pose.R = R;
+  view.pose.t = {-2, 3, 5};  // world (2, -5, 3) at the camera centre: image top-left looks at x = 2, z = 3
+  scene.views.push_back(view);
+  const auto dir = test::fresh_dir("cls_observations") / "v";
+  std::filesystem::create_directories(dir);
+  const int W = view.camera.width, H = view.camera.height;
+  // The label maps as the raycaster would write them: the wall where the image shows it, at depth 5.
+  std::vector<float> depth(static_cast<size_t>(W) * H, 0.0f);
+  NpyArray object{"<i4", {H, W}, std::vector<uint8_t>(static_cast<size_t>(W) * H * 4)};
+  int32_t* o = object.as<int32_t>();
+  for (int v = 0; v < H; ++v)
+    for (int u = 0; u < W; ++u) {
+      const double x = 2 + (u + 0.5) * 5 / 100.0, z = 3 - (v + 0.5) * 5 / 100.0;
+      const bool on_wall = x < 4 && z > 0;
+      o[v * W + u] = on_wall ? 1 : -1;
+      depth[static_cast<size_t>(v) * W + u] = on_wall ? 5.0f : 0.0f;
+    }
+  write_npy(dir / "object.npy", object);
+  write_pfm(dir / "depth.pfm", depth, W, H);
+  // Two Gaussians on the window and one on the wall.
+  const std::vector<int32_t> gaussians = {2, 2, 1, -1};
+  const auto seen = observe_city_objects(objects, w.mesh, vertices, scene, dir.parent_path(), gaussians);
+  ASSERT_EQ(seen.size(), 3u);
+  // The wall with the window in it: 12 m2; the visible part x in [2, 4]: 6 m2 (no window there).
+  EXPECT_NEAR(seen[1].area, 12.0, 1e-9);
+  EXPECT_NEAR(seen[1].covered_fraction(), 0.5, 0.01);
+  EXPECT_NEAR(seen[2].area, 1.0, 1e-9);
+  EXPECT_EQ(seen[2].seen_area, 0.0);
+  EXPECT_NEAR(seen[0].area, 12.0, 1e-9);                  // the building: wall and window
+  EXPECT_NEAR(seen[0].seen_area, seen[1].seen_area, 1e-9);
+  EXPECT_EQ(seen[1].views, 1);
+  EXPECT_EQ(seen[2].views, 0);
+  EXPECT_EQ(seen[1].pixels, 40 * 60);                     // x in [2, 4) and z in (0, 3]: 40 x 60 pixels
+  EXPECT_EQ(seen[0].pixels, seen[1].pixels);
+  EXPECT_EQ(seen[2].gaussians, 2);
+  EXPECT_EQ(seen[1].gaussians, 3);                        // its window's and its own
+  EXPECT_EQ(seen[0].gaussians, 3);
+}
+
+}  // namespace
+}  // namespace cls
