@@ -21,6 +21,7 @@ int cmd_report(int argc, char** argv);      // the HTML report of a run director
 int cmd_view(int argc, char** argv);        // the browser viewer with live text queries
 int cmd_export(int argc, char** argv);      // glTF with KHR_gaussian_splatting and the city objects
 int cmd_enrich(int argc, char** argv);      // the city model as CityJSON 2.0 with what the run learned
+int cmd_changes(int argc, char** argv);     // openings the city model lacks, surfaces the photos contradict
 int cmd_tile(int argc, char** argv);        // cut a district into tiles
 int cmd_run_tiles(int argc, char** argv);   // every tile's pipeline on Slurm or locally
 int cmd_tiles(int argc, char** argv);       // tiles status | task

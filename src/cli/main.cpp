@@ -46,6 +46,7 @@ const Command kCommands[] = {
     {"view", cls::cmd_view, "serve a model in the browser: splats, cameras, live text queries answered with city objects"},
     {"export", cls::cmd_export, "write a model as glTF (KHR_gaussian_splatting) with its city objects and query scores"},
     {"enrich", cls::cmd_enrich, "write the run's city model as CityJSON 2.0 enriched with what the run learned of each object"},
+    {"changes", cls::cmd_changes, "propose the windows and doors the city model lacks, flag the surfaces the photos contradict"},
     {"tile", cls::cmd_tile, "cut a district into tiles of whole buildings for run-tiles (docs/scale.md)"},
     {"run-tiles", cls::cmd_run_tiles, "run every tile (Slurm arrays or local processes) with one shared autoencoder"},
     {"tiles", cls::cmd_tiles, "progress of run-tiles (status), or one of its tasks (task)"},

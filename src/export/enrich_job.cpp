@@ -10,6 +10,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "core/progress.h"
 #include "core/run_layout.h"
 #include "eval/evaluation.h"
 #include "export/city_observations.h"
@@ -20,6 +21,7 @@
 #include "query/selection.h"
 #include "query/text_queries.h"
 #include "raycast/label_export.h"
+#include "raycast/label_map_io.h"
 
 namespace cls {
 extern const char* const kCityLangSplatExtensionJson;  // generated from data/schemas/citylangsplat.ext.json by CMake
@@ -58,13 +60,141 @@ std::array<at::Tensor, 3> level_scores(const LanguageModel& model, const at::Ten
   return s;
 }
 
+
+// `changes`: every view's rendered level-1 field votes on the surfaces' planes (opening_proposals.h): the best
+// class per pixel among the classes of levels 1 and 2 (level 1 carries the part classes where a face has no
+// opening: the subpart fallback), the cosine of the decoded feature with each class's prototype. Then the
+// proposals as Window/Door surfaces of their building's geometry (on their wall), and the surfaces the
+// photos contradict; returns changes.json's content.
+json add_changes(CityJsonDocument& doc, const EnrichOptions& o, const LanguageModel& model, const SceneCityModel& city,
+                 const CityObjects& objects, const std::vector<ObjectObservation>& seen, const Scene& scene,
+                 const fs::path& labels, FeatureProvider& provider) {
+  const SemanticMesh& mesh = city.mesh;
+  const CityTransform crs_from_scene = inverse(city.transform);
+  const double metres = crs_from_scene.scale();  // per scene unit
+  const Vec3d origin{mesh.origin[0], mesh.origin[1], mesh.origin[2]};
+  std::vector<int> classes, openings;
+  for (size_t c = 0; c < city.taxonomy.classes.size(); ++c)
+    if (city.taxonomy.classes[c].level <= 2) classes.push_back(static_cast<int>(c));
+  for (const char* name : {"window", "door"})
+    if (city.taxonomy.find(name) >= 0) openings.push_back(city.taxonomy.find(name));
+  const at::Tensor prototypes = class_prototypes(provider, city.taxonomy, classes);
+  OpeningVotes votes(objects, mesh, openings, o.proposals);
+  const std::vector<fs::path> dirs = label_map_dirs(scene, labels);
+  Progress progress("changes: votes", scene.views.size(), "views");
+  for (size_t k = 0; k < scene.views.size(); ++k) {
+    const SceneView& view = scene.views[k];
+    const int W = view.camera.width, H = view.camera.height;
+    const std::vector<int32_t> object = read_object_map(dirs[k] / "object.npy", H, W);
+    const FloatImage depth = read_pfm(dirs[k] / "depth.pfm");
+    if (depth.width != W || depth.height != H)
+      fail((dirs[k] / "depth.pfm").string(), cat(depth.width, "x", depth.height, ", but the view is ", W, "x", H));
+    const DecodedView decoded = render_decoded(model, 1, view);
+    const at::Tensor best = cosine_maps(decoded.features, prototypes).argmax(0).to(torch::kInt32).contiguous();  // H x W
+    const int32_t* b = best.data_ptr<int32_t>();
+    const Mat3d Rt = transpose(view.pose.R);
+    const PinholeCamera& c = view.camera;
+    for (int v = 0; v < H; ++v)
+      for (int u = 0; u < W; ++u) {
+        const size_t p = static_cast<size_t>(v) * W + u;
+        const double d = depth.data[p];
+        if (!(d > 0) || !votes.has_plane(object[p])) continue;
+        const Vec3d camera{(u + 0.5 - c.cx) / c.fx * d, (v + 0.5 - c.cy) / c.fy * d, d};
+        votes.add(object[p], crs_from_scene.apply(Rt * (camera - view.pose.t)) - origin, classes[b[p]]);
+      }
+    progress.advance();
+  }
+  progress.finish();
+  const std::vector<OpeningProposal> proposals = votes.proposals();
+
+  json& vertices = doc.document["vertices"];
+  json listed = json::array();
+  for (size_t k = 0; k < proposals.size(); ++k) {
+    const OpeningProposal& p = proposals[k];
+    const CityJsonPlace& wall = doc.places[p.surface];
+    const std::string name = city.taxonomy.classes[p.class_id].name;
+    const std::string id = cat("proposal-", k + 1);
+    json corners = json::array();
+    for (const Vec3d& c : p.corners) corners.push_back({c.x + origin.x, c.y + origin.y, c.z + origin.z});
+    int32_t building = p.surface;
+    while (objects.objects[building].parent >= 0) building = objects.objects[building].parent;
+    listed.push_back({{"id", id},
+                      {"class", name},
+                      {"surface", objects.objects[p.surface].id},
+                      {"surfaceClass", objects.class_name(p.surface)},
+                      {"building", objects.objects[building].id},
+                      {"corners", corners},
+                      {"width", p.width},
+                      {"height", p.height},
+                      {"cells", p.cells},
+                      {"votes", p.votes},
+                      {"confidence", p.confidence}});
+    if (wall.object.empty()) continue;  // a face of no CityObject: listed, not drawn
+    json& geometry = doc.document["CityObjects"][wall.object]["geometry"][0];
+    json ring = json::array();
+    for (const Vec3d& c : p.corners) {
+      ring.push_back(vertices.size());
+      vertices.push_back({std::llround(c.x * 1000.0), std::llround(c.y * 1000.0), std::llround(c.z * 1000.0)});
+    }
+    json& semantics = geometry["semantics"];
+    if (!semantics.contains("surfaces")) semantics = {{"surfaces", json::array()}, {"values", json::array()}};
+    const size_t index = semantics["surfaces"].size();
+    json surface{{"type", name == "door" ? "Door" : "Window"},
+                 {"+clsProposed", true},
+                 {"+clsProposal", id},
+                 {"+clsConfidence", p.confidence},
+                 {"+clsVotes", p.votes}};
+    if (wall.surface >= 0) {
+      surface["parent"] = wall.surface;
+      semantics["surfaces"][wall.surface]["children"].push_back(index);
+    }
+    semantics["surfaces"].push_back(surface);
+    geometry["boundaries"].push_back(json::array({ring}));
+    semantics["values"].push_back(index);
+  }
+
+  // Surfaces the cameras see well but the photos put (almost) no Gaussians on.
+  std::vector<double> densities;
+  const double m2 = metres * metres;
+  for (size_t e = 0; e < objects.objects.size(); ++e)
+    if (objects.objects[e].level == 2 && seen[e].seen_area * m2 >= o.contradiction_seen_area)
+      densities.push_back(seen[e].gaussians / (seen[e].seen_area * m2));
+  std::sort(densities.begin(), densities.end());
+  const double median = densities.empty() ? 0.0 : densities[densities.size() / 2];
+  json contradicted = json::array();
+  for (size_t e = 0; e < objects.objects.size(); ++e) {
+    const ObjectObservation& s = seen[e];
+    if (objects.objects[e].level != 2 || s.seen_area * m2 < o.contradiction_seen_area) continue;
+    const double density = s.gaussians / (s.seen_area * m2);
+    if (density >= o.contradiction_density * median) continue;
+    contradicted.push_back({{"id", objects.objects[e].id},
+                            {"class", objects.class_name(static_cast<int32_t>(e))},
+                            {"seenArea", s.seen_area * m2},
+                            {"coveredFraction", s.covered_fraction()},
+                            {"gaussians", s.gaussians},
+                            {"gaussiansPerM2", density},
+                            {"medianGaussiansPerM2", median}});
+    const CityJsonPlace& place = doc.places[e];
+    if (place.surface >= 0)
+      doc.document["CityObjects"][place.object]["geometry"][0]["semantics"]["surfaces"][place.surface]["+clsContradicted"] = true;
+  }
+  const ProposalSettings& ps = o.proposals;
+  return {{"proposals", listed},
+          {"contradicted", contradicted},
+          {"crs", mesh.crs},
+          {"settings",
+           {{"cell", ps.cell}, {"min_votes", ps.min_votes}, {"opening_share", ps.opening_share}, {"min_area", ps.min_area},
+            {"plane_distance", ps.plane_distance}, {"existing_margin", ps.existing_margin},
+            {"contradiction_density", o.contradiction_density}, {"contradiction_seen_area", o.contradiction_seen_area}}}};
+}
+
 }  // namespace
 
 json run_enrich(const EnrichOptions& o) {
   const fs::path root = o.run;
   const RunLayout run(root);
   if (!fs::exists(run.run_json())) throw UsageError("enrich: " + root.string() + " is no `run` output (no run.json there)");
-  const fs::path out = o.out.empty() ? root / "enriched.city.json" : fs::path(o.out);
+  const fs::path out = !o.out.empty() ? fs::path(o.out) : o.changes ? root / "changes" / "enriched.city.json" : root / "enriched.city.json";
   if (out.extension() != ".json") throw UsageError("enrich: --out " + out.string() + " does not end in .json (CityJSON)");
   if (o.sample_points < 1) throw UsageError("enrich: --sample-points must be at least 1");
   const json record = parse_json_file(run.run_json());
@@ -188,6 +318,8 @@ json run_enrich(const EnrichOptions& o) {
       ++enriched_surfaces;
     }
   }
+  json changes;
+  if (o.changes) changes = add_changes(doc, o, model, city, objects, seen, scene, labels, *provider);
   json queries = json::array();
   for (size_t q = 0; q < o.queries.size(); ++q) queries.push_back({{"text", o.queries[q]}, {"surfaceMember", "+clsQuery_" + slugs[q]}});
   json about{{"run", fs::absolute(root).lexically_normal().string()},
@@ -204,7 +336,10 @@ json run_enrich(const EnrichOptions& o) {
   if (out.has_parent_path()) fs::create_directories(out.parent_path());
   write_text_atomic(out.parent_path() / kCityJsonExtensionFile, kCityLangSplatExtensionJson);
   write_text_atomic(out, doc.document.dump());
+  if (o.changes) write_text_atomic(out.parent_path() / "changes.json", changes.dump(1));
   return {{"file", out.string()},
+          {"proposals", o.changes ? changes["proposals"].size() : 0},
+          {"contradicted", o.changes ? changes["contradicted"].size() : 0},
           {"objects", enriched_objects},
           {"surfaces", enriched_surfaces},
           {"queries", o.queries},

@@ -15,6 +15,8 @@
 4. The counts are the label maps': each enriched surface's +clsViews and +clsPixels equal what
    object.npy of every view holds (read here) for it and the openings in it.
 5. The scores mean something: the windows' mean score for the query "window" is higher than the walls'.
+7. `changes` on the same run (its city model is the one the photos show): the document (with any
+   proposals) passes checks 1 and 2, and nothing is proposed: the exact model lacks no opening.
 6. Bad input: no run there, an --out that is no .json, and a city model other than the run's (citygml4j's
    LoD3 building for a run on FZK-Haus: --other-city) each fail with the path named, writing nothing.
 
@@ -203,8 +205,11 @@ def validate(doc, ext, schemas):
             enriched_objects += 1
         for g in o.get("geometry", []):
             for s in g.get("semantics", {}).get("surfaces", []):
-                if any(k.startswith("+cls") for k in s):
-                    member_errors += errors_of(ours("surfaceMembers"), {k: v for k, v in s.items() if k.startswith("+")})
+                members = {k: v for k, v in s.items() if k.startswith("+")}
+                if "+clsProposed" in members:
+                    member_errors += errors_of(ours("proposalMembers"), members)
+                elif members:
+                    member_errors += errors_of(ours("surfaceMembers"), members)
                     enriched_surfaces += 1
     for e in member_errors[:10]:
         print("  Extension definitions: %s" % e.message[:200])
@@ -331,6 +336,21 @@ def main():
           % (win, walls, best, len(window_surfaces)))
     if not win > walls:
         fail("the windows do not answer 'window' better than the walls")
+
+    # 7. `changes` on the exact model.
+    changes_out = os.path.join(a.out, "changes", "enriched.city.json")
+    r = subprocess.run([a.binary, "changes", a.run, "--out", changes_out], capture_output=True, text=True)
+    if r.returncode != 0:
+        fail("changes exited %d: %s" % (r.returncode, r.stderr))
+    print(r.stderr.strip().splitlines()[-1])
+    with open(changes_out) as f:
+        changed = json.load(f)
+    with open(os.path.join(a.out, "changes", "citylangsplat.ext.json")) as f:
+        validate(changed, json.load(f), a.schemas)
+    with open(os.path.join(a.out, "changes", "changes.json")) as f:
+        proposals = json.load(f)["proposals"]
+    if proposals:
+        fail("changes proposes %d openings on the exact model: %s" % (len(proposals), proposals[:2]))
 
     # 6. Bad input.
     bad_out = os.path.join(a.out, "bad")

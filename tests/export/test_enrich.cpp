@@ -13,6 +13,7 @@
 #include "core/npy.h"
 #include "export/city_observations.h"
 #include "export/cityjson_writer.h"
+#include "export/opening_proposals.h"
 #include "raycast/label_map_io.h"
 #include "scene/scene_test_util.h"
 
@@ -163,6 +164,65 @@ TEST(CityObservations, AWallHalfInViewIsHalfCoveredAndItsWindowCountsForIt) {
   EXPECT_EQ(seen[2].gaussians, 2);
   EXPECT_EQ(seen[1].gaussians, 3);                        // its window's and its own
   EXPECT_EQ(seen[0].gaussians, 3);
+}
+
+TEST(OpeningProposals, WindowVotesOnAWallWithoutOneAreProposedAndAModelledWindowsRimIsNot) {
+  const WallWithWindow w;
+  const CityObjects objects = city_objects(w.mesh, w.taxonomy);
+  const int window = w.taxonomy.find("window"), wall = w.taxonomy.find("wall");
+  OpeningVotes votes(objects, w.mesh, {window, w.taxonomy.find("door")});
+  const auto at = [&](double x, double z, double y = 0) {
+    return Vec3d{x - w.mesh.origin[0], y - w.mesh.origin[1], z - w.mesh.origin[2]};
+  };
+  // Three views' votes every 5 cm over the wall: an unmodelled window at x in [2.6, 3.4], z in [1.2, 2.2]
+  // votes window, so does a 10 cm rim around the modelled one (the field's blur), the rest votes wall.
+  int64_t counted = 0;
+  for (int view = 0; view < 3; ++view)
+    for (double x = 0.025; x < 4; x += 0.05)
+      for (double z = 0.025; z < 3; z += 0.05) {
+        if (x > 1 && x < 2 && z > 1 && z < 2) {
+          EXPECT_FALSE(votes.add(2, at(x, z), window));  // a modelled opening is no surface with a plane
+          continue;
+        }
+        const bool unmodelled = x > 2.6 && x < 3.4 && z > 1.2 && z < 2.2;
+        const bool rim = x > 0.9 && x < 2.1 && z > 0.9 && z < 2.1;
+        counted += votes.add(1, at(x, z), unmodelled || rim ? window : wall);
+      }
+  EXPECT_GT(counted, 0);
+  EXPECT_FALSE(votes.add(1, at(3.0, 1.5, 1.0), window));  // 1 m off the wall's plane
+  EXPECT_FALSE(votes.add(0, at(3.0, 1.5), window));       // the building: no surface
+  const auto proposals = votes.proposals();
+  ASSERT_EQ(proposals.size(), 1u);
+  const OpeningProposal& p = proposals[0];
+  EXPECT_EQ(p.surface, 1);
+  EXPECT_EQ(p.class_id, window);
+  EXPECT_GT(p.confidence, 0.9);
+  // The rectangle: the window's extent to within one cell (the grid is anchored at the wall's centroid).
+  double x0 = 1e9, x1 = -1e9, z0 = 1e9, z1 = -1e9, y = 0;
+  for (const Vec3d& c : p.corners) {
+    x0 = std::min(x0, c.x + w.mesh.origin[0]), x1 = std::max(x1, c.x + w.mesh.origin[0]);
+    z0 = std::min(z0, c.z + w.mesh.origin[2]), z1 = std::max(z1, c.z + w.mesh.origin[2]);
+    y = std::max(y, std::abs(c.y + w.mesh.origin[1]));
+  }
+  const double cell = ProposalSettings{}.cell;
+  EXPECT_NEAR(x0, 2.6, cell);
+  EXPECT_NEAR(x1, 3.4, cell);
+  EXPECT_NEAR(z0, 1.2, cell);
+  EXPECT_NEAR(z1, 2.2, cell);
+  EXPECT_NEAR(y, 0.0, 1e-9);  // on the wall's plane
+  EXPECT_NEAR(p.width, x1 - x0, 1e-9);
+  EXPECT_NEAR(p.height, z1 - z0, 1e-9);
+  // Counter-clockwise about the wall's normal (-y): (c1 - c0) x (c3 - c0) points along -y.
+  const Vec3d n = cross(p.corners[1] - p.corners[0], p.corners[3] - p.corners[0]);
+  EXPECT_LT(n.y, 0);
+  // With a margin of 0 around modelled openings, their rim is proposed too.
+  ProposalSettings no_margin;
+  no_margin.existing_margin = 0;
+  OpeningVotes rim(objects, w.mesh, {window}, no_margin);
+  for (double x = 0.025; x < 4; x += 0.05)
+    for (double z = 0.025; z < 3; z += 0.05)
+      for (int view = 0; view < 3; ++view) rim.add(1, at(x, z), x > 0.9 && x < 2.1 && z > 0.9 && z < 2.1 ? window : wall);
+  EXPECT_EQ(rim.proposals().size(), 1u);
 }
 
 }  // namespace
