@@ -27,7 +27,7 @@ if not os.path.exists(LAYERS_DOC):
     LAYERS_DOC = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "docs", "development.md")
 
 # Path components of the run layout (RunLayout, LanguageModelFiles, SceneFiles).
-LAYOUT_NAMES = (r"run\.json|language|labels|features|rgb|render|query|eval|align|report|model\.json|"
+LAYOUT_NAMES = (r"run\.json|language|labels|features|rgb|render|query|eval|changes|align|report|model\.json|"
                 r"latents\.safetensors|autoencoder\.safetensors|autoencoder-langsplat\.safetensors|"
                 r"city_objects\.json|stage\.json|started\.json|checkpoints|scene\.json|gt|points\.ply")
 LAYOUT_LITERAL = re.compile(r'/\s*"(%s)"|"(%s)"\s*/|"(%s)/' % (LAYOUT_NAMES, LAYOUT_NAMES, LAYOUT_NAMES))

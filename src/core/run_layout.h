@@ -33,6 +33,7 @@ class RunLayout {
   path queries() const { return root_ / "query"; }
   path query(const std::string& method) const { return queries() / method; }
   path eval() const { return root_ / "eval"; }
+  path changes() const { return root_ / "changes"; }  // `changes`: enriched.city.json, changes.json, views/
 
   // A stage's stamp (stage.h): in its output directory, or beside its output file.
   static path stamp_in(const path& dir) { return dir / "stage.json"; }

@@ -4,10 +4,12 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 
 #include "citymodel/city_objects.h"
 #include "citymodel/scene_city_model.h"
 #include "core/atomic_file.h"
+#include "core/image_file.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/progress.h"
@@ -22,6 +24,7 @@
 #include "query/text_queries.h"
 #include "raycast/label_export.h"
 #include "raycast/label_map_io.h"
+#include "scene/image_loader.h"
 
 namespace cls {
 extern const char* const kCityLangSplatExtensionJson;  // generated from data/schemas/citylangsplat.ext.json by CMake
@@ -61,6 +64,55 @@ std::array<at::Tensor, 3> level_scores(const LanguageModel& model, const at::Ten
 }
 
 
+// Where each proposal is best seen, for the report: the view that looks at it most squarely (its centre in
+// the image, at the label map's depth within 5 %), that view's photo at the label maps' size written to
+// OUT_DIR/views/<stem>.jpg, and the rectangle's corners in its pixels. null for a proposal no view sees.
+std::vector<json> proposal_views(const std::vector<OpeningProposal>& proposals, const SceneCityModel& city, const Scene& scene,
+                                 const std::vector<fs::path>& dirs, const fs::path& out_dir) {
+  const Vec3d origin{city.mesh.origin[0], city.mesh.origin[1], city.mesh.origin[2]};
+  const auto in_scene = [&](const Vec3d& crs_local) { return city.transform.apply(crs_local + origin); };
+  std::vector<double> best(proposals.size(), 0.0);
+  std::vector<int> view_of(proposals.size(), -1);
+  for (size_t k = 0; k < scene.views.size() && !proposals.empty(); ++k) {
+    const SceneView& view = scene.views[k];
+    const FloatImage depth = read_pfm(dirs[k] / "depth.pfm");
+    const PinholeCamera& c = view.camera;
+    for (size_t i = 0; i < proposals.size(); ++i) {
+      const auto& q = proposals[i].corners;
+      const Vec3d centre = in_scene(0.25 * (q[0] + q[1] + q[2] + q[3]));
+      const Vec3d normal = normalized(cross(in_scene(q[1]) - in_scene(q[0]), in_scene(q[3]) - in_scene(q[0])));
+      const Vec3d p = view.pose.R * centre + view.pose.t;
+      if (!(p.z > 0)) continue;
+      const double u = c.fx * p.x / p.z + c.cx, v = c.fy * p.y / p.z + c.cy;
+      if (!(u >= 0 && u < c.width && v >= 0 && v < c.height) || depth.width != c.width || depth.height != c.height) continue;
+      const double d = depth.data[static_cast<size_t>(v) * c.width + static_cast<size_t>(u)];
+      if (!(d > 0) || std::abs(d - p.z) > 0.05 * d) continue;
+      const double squarely = -dot(normalized(centre - view.pose.center()), normal) / p.z;
+      if (squarely > best[i]) best[i] = squarely, view_of[i] = static_cast<int>(k);
+    }
+  }
+  std::vector<json> out(proposals.size());
+  ImageLoader loader;
+  std::map<int, std::string> written;
+  for (size_t i = 0; i < proposals.size(); ++i) {
+    if (view_of[i] < 0) continue;
+    const SceneView& view = scene.views[view_of[i]];
+    std::string& image = written[view_of[i]];
+    if (image.empty()) {
+      image = "views/" + dirs[view_of[i]].filename().string() + ".jpg";
+      write_image(out_dir / image, loader.load(view));
+    }
+    json polygon = json::array();
+    for (const Vec3d& q : proposals[i].corners) {
+      const Vec3d p = view.pose.R * in_scene(q) + view.pose.t;
+      polygon.push_back({view.camera.fx * p.x / p.z + view.camera.cx, view.camera.fy * p.y / p.z + view.camera.cy});
+    }
+    out[i] = {{"name", view.name}, {"image", image}, {"width", view.camera.width}, {"height", view.camera.height},
+              {"polygon", polygon}};
+  }
+  return out;
+}
+
 // `changes`: every view's rendered level-1 field votes on the surfaces' planes (opening_proposals.h): the best
 // class per pixel among the classes of levels 1 and 2 (level 1 carries the part classes where a face has no
 // opening: the subpart fallback), the cosine of the decoded feature with each class's prototype. Then the
@@ -68,7 +120,7 @@ std::array<at::Tensor, 3> level_scores(const LanguageModel& model, const at::Ten
 // photos contradict; returns changes.json's content.
 json add_changes(CityJsonDocument& doc, const EnrichOptions& o, const LanguageModel& model, const SceneCityModel& city,
                  const CityObjects& objects, const std::vector<ObjectObservation>& seen, const Scene& scene,
-                 const fs::path& labels, FeatureProvider& provider) {
+                 const fs::path& labels, FeatureProvider& provider, const fs::path& out_dir) {
   const SemanticMesh& mesh = city.mesh;
   const CityTransform crs_from_scene = inverse(city.transform);
   const double metres = crs_from_scene.scale();  // per scene unit
@@ -106,6 +158,7 @@ json add_changes(CityJsonDocument& doc, const EnrichOptions& o, const LanguageMo
   }
   progress.finish();
   const std::vector<OpeningProposal> proposals = votes.proposals();
+  const std::vector<json> pictures = proposal_views(proposals, city, scene, dirs, out_dir);
 
   json& vertices = doc.document["vertices"];
   json listed = json::array();
@@ -128,7 +181,8 @@ json add_changes(CityJsonDocument& doc, const EnrichOptions& o, const LanguageMo
                       {"height", p.height},
                       {"cells", p.cells},
                       {"votes", p.votes},
-                      {"confidence", p.confidence}});
+                      {"confidence", p.confidence},
+                      {"view", pictures[k]}});
     if (wall.object.empty()) continue;  // a face of no CityObject: listed, not drawn
     json& geometry = doc.document["CityObjects"][wall.object]["geometry"][0];
     json ring = json::array();
@@ -194,7 +248,7 @@ json run_enrich(const EnrichOptions& o) {
   const fs::path root = o.run;
   const RunLayout run(root);
   if (!fs::exists(run.run_json())) throw UsageError("enrich: " + root.string() + " is no `run` output (no run.json there)");
-  const fs::path out = !o.out.empty() ? fs::path(o.out) : o.changes ? root / "changes" / "enriched.city.json" : root / "enriched.city.json";
+  const fs::path out = !o.out.empty() ? fs::path(o.out) : o.changes ? run.changes() / "enriched.city.json" : root / "enriched.city.json";
   if (out.extension() != ".json") throw UsageError("enrich: --out " + out.string() + " does not end in .json (CityJSON)");
   if (o.sample_points < 1) throw UsageError("enrich: --sample-points must be at least 1");
   const json record = parse_json_file(run.run_json());
@@ -319,7 +373,7 @@ json run_enrich(const EnrichOptions& o) {
     }
   }
   json changes;
-  if (o.changes) changes = add_changes(doc, o, model, city, objects, seen, scene, labels, *provider);
+  if (o.changes) changes = add_changes(doc, o, model, city, objects, seen, scene, labels, *provider, out.parent_path());
   json queries = json::array();
   for (size_t q = 0; q < o.queries.size(); ++q) queries.push_back({{"text", o.queries[q]}, {"surfaceMember", "+clsQuery_" + slugs[q]}});
   json about{{"run", fs::absolute(root).lexically_normal().string()},

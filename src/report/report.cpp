@@ -553,6 +553,63 @@ void evaluation(Page& page, const json& run, const std::vector<std::pair<std::st
   page.html << "</tbody></table>\n";
 }
 
+// `changes` (docs/export.md): each proposed opening drawn on the photo that sees it most squarely, the
+// drawing toggled by a checkbox (CSS only: the page works offline, without scripts), then the tables.
+void changes(Page& page) {
+  const fs::path dir = RunLayout().changes();
+  const json c = page.read_json(dir / "changes.json");
+  if (!c.is_object()) return;
+  const json& proposals = c.at("proposals");
+  const json& contradicted = c.at("contradicted");
+  page.html << "<h2 id=\"changes\">What the city model lacks</h2>\n<p>" << proposals.size()
+            << " proposed openings (windows and doors the photos show on a surface where the city model has none) and "
+            << contradicted.size() << " contradicted surfaces (seen by the cameras, almost no Gaussians on them): "
+            << "<code>changes/changes.json</code>, and in the CityJSON <code>changes/enriched.city.json</code>.</p>\n";
+  if (!proposals.empty()) {
+    page.html << "<style>#show-proposals:not(:checked) ~ .proposals polygon{display:none}"
+                 ".proposals svg{max-width:360px;width:100%;height:auto}.proposals polygon{fill:rgba(255,64,32,.25);"
+                 "stroke:#ff4020;stroke-width:1.5}</style>\n<input type=\"checkbox\" id=\"show-proposals\" checked>"
+                 "<label for=\"show-proposals\"> show the proposals on the photos</label>\n<div class=\"proposals gallery\">\n";
+    for (const json& p : proposals) {
+      const std::string caption = p.at("id").get<std::string>() + ": " + p.at("class").get<std::string>() + " on " +
+                                  p.at("surfaceClass").get<std::string>() + " " + p.at("surface").get<std::string>() + ", " +
+                                  fixed(p.at("width").get<double>(), 2) + " x " + fixed(p.at("height").get<double>(), 2) +
+                                  " m, confidence " + fixed(p.at("confidence").get<double>(), 2);
+      const json& v = p.value("view", json());
+      const fs::path image = v.is_object() ? dir / v.at("image").get<std::string>() : fs::path();
+      if (!v.is_object() || !page.has(image)) {
+        page.html << "<figure><p class=\"missing\">no view sees it</p><figcaption>" << html_escape(caption) << "</figcaption></figure>\n";
+        continue;
+      }
+      std::string points;
+      for (const json& q : v.at("polygon")) points += fixed(q.at(0).get<double>(), 1) + "," + fixed(q.at(1).get<double>(), 1) + " ";
+      const std::string w = number_text(v.at("width")), h = number_text(v.at("height"));
+      page.html << "<figure><svg viewBox=\"0 0 " << w << " " << h << "\" role=\"img\" aria-label=\"" << html_escape(caption)
+                << "\"><image href=\"../" << url_of(image) << "\" width=\"" << w << "\" height=\"" << h
+                << "\"/><polygon points=\"" << points << "\"/></svg><figcaption>" << html_escape(caption) << " (view "
+                << html_escape(v.at("name").get<std::string>()) << ")</figcaption></figure>\n";
+    }
+    page.html << "</div>\n<table><thead><tr><th>Proposal</th><th>Class</th><th>On</th><th>Building</th><th>Width (m)</th>"
+                 "<th>Height (m)</th><th>Votes</th><th>Confidence</th></tr></thead><tbody>\n";
+    for (const json& p : proposals)
+      page.html << "<tr><td>" << html_escape(p.at("id").get<std::string>()) << "</td><td>" << html_escape(p.at("class").get<std::string>())
+                << "</td><td>" << html_escape(p.at("surface").get<std::string>()) << "</td><td>"
+                << html_escape(p.at("building").get<std::string>()) << "</td><td>" << fixed(p.at("width").get<double>(), 2)
+                << "</td><td>" << fixed(p.at("height").get<double>(), 2) << "</td><td>" << number_text(p.at("votes"))
+                << "</td><td>" << fixed(p.at("confidence").get<double>(), 2) << "</td></tr>\n";
+    page.html << "</tbody></table>\n";
+  }
+  if (!contradicted.empty()) {
+    page.html << "<table><thead><tr><th>Contradicted surface</th><th>Class</th><th>Seen (m2)</th><th>Gaussians per m2</th>"
+                 "<th>Median surface</th></tr></thead><tbody>\n";
+    for (const json& s : contradicted)
+      page.html << "<tr><td>" << html_escape(s.at("id").get<std::string>()) << "</td><td>" << html_escape(s.at("class").get<std::string>())
+                << "</td><td>" << fixed(s.at("seenArea").get<double>(), 1) << "</td><td>" << fixed(s.at("gaussiansPerM2").get<double>(), 2)
+                << "</td><td>" << fixed(s.at("medianGaussiansPerM2").get<double>(), 2) << "</td></tr>\n";
+    page.html << "</tbody></table>\n";
+  }
+}
+
 // One section of the page under its heading (none for an empty title). A file of an unexpected shape
 // (a JSON field of another type) costs that section only: the page says so instead of the run failing.
 void section(Page& page, const char* id, const char* title, const std::function<void(Page&)>& write) {
@@ -596,6 +653,7 @@ fs::path write_report(const fs::path& run_dir) {
   section(page, "language", "Language fields", [&](Page& p) { language(p, run); });
   section(page, "queries", "Queries: relevance maps", [&](Page& p) { queries(p, run); });
   section(page, "evaluation", "Evaluation", [&](Page& p) { evaluation(p, run, legend); });
+  section(page, "", "", changes);  // only when `changes` ran: its own heading
   page.html << "</main>\n</body>\n</html>\n";
   const fs::path out = RunLayout(run_dir).report_page();
   write_text_atomic(out, page.html.str());

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "citymodel/city_transform.h"
 #include "citymodel/mesh_ply.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -16,6 +17,7 @@
 #include "query/object_ranking.h"
 #include "query/relevance.h"
 #include "query/text_queries.h"
+#include "raycast/label_export.h"
 #include "scene/view_selection.h"
 #include "splat/sh.h"
 
@@ -84,6 +86,32 @@ at::Tensor normalised_rows(const at::Tensor& x) {
   return (x.to(at::kFloat) / x.to(at::kFloat).norm(2, {-1}, true).clamp_min(1e-30)).contiguous();
 }
 
+// `changes`' proposals (RUN/changes/changes.json beside the run's label maps) in the scene frame, for
+// GET /api/changes: {"proposals": [{id, class, confidence, width, height, corners}]} (empty without them).
+json changes_of(const fs::path& labels) {
+  json out{{"proposals", json::array()}};
+  if (labels.empty()) return out;
+  const fs::path file = RunLayout(labels.parent_path()).changes() / "changes.json";
+  const fs::path transform = labels / kLabelsCityTransform;
+  if (!fs::exists(file) || !fs::exists(transform)) return out;
+  const CityTransform scene_from_crs = read_city_transform(transform.string());
+  try {
+    const json changes = json::parse(read_text_file(file));  // named: the loop below must not outlive it
+    for (const json& p : changes.at("proposals")) {
+      json corners = json::array();
+      for (const json& c : p.at("corners")) {
+        const Vec3d q = scene_from_crs.apply({c.at(0).get<double>(), c.at(1).get<double>(), c.at(2).get<double>()});
+        corners.push_back({q.x, q.y, q.z});
+      }
+      out["proposals"].push_back({{"id", p.at("id")}, {"class", p.at("class")}, {"confidence", p.at("confidence")},
+                                  {"width", p.at("width")}, {"height", p.at("height")}, {"corners", corners}});
+    }
+  } catch (const json::exception& e) {
+    fail(file.string(), std::string("not a `changes` output: ") + e.what());
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string run_scene_dir(const fs::path& out) {
@@ -131,6 +159,7 @@ ViewerModel::ViewerModel(const fs::path& model_dir, const std::string& scene_dir
   }
   const fs::path labels = recorded_labels_dir(model_.info);
   if (!labels.empty() && fs::exists(labels / "city_mesh.ply")) city_mesh_ = city_mesh_of(labels / "city_mesh.ply");
+  changes_json_ = changes_of(labels);
 
   objects_json_ = {{"objects", json::array()}};
   if (!model_.objects.objects.empty()) {
@@ -177,7 +206,8 @@ ViewerModel::ViewerModel(const fs::path& model_dir, const std::string& scene_dir
                  {"views", views},
                  {"bounds", {{"min", {lo[0].item<double>(), lo[1].item<double>(), lo[2].item<double>()}},
                              {"max", {hi[0].item<double>(), hi[1].item<double>(), hi[2].item<double>()}}}},
-                 {"city_mesh", !city_mesh_.empty()}};
+                 {"city_mesh", !city_mesh_.empty()},
+                 {"changes", changes_json_["proposals"].size()}};
 }
 
 std::string ViewerModel::image_path(size_t index) const {

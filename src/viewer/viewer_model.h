@@ -50,6 +50,8 @@ class ViewerModel {
   // GET /api/objects: {"objects": [{index, id, class, level, building, part, gaussians, center, radius}]}, every
   // city object that has Gaussians, with those of its parts (a wall with its windows).
   const nlohmann::json& objects_json() const { return objects_json_; }
+  // GET /api/changes: `changes`' proposed openings in the scene frame ({"proposals": []} without them).
+  const nlohmann::json& changes_json() const { return changes_json_; }
   // The photo of view `index`, or "" when out of range.
   std::string image_path(size_t index) const;
 
@@ -67,7 +69,7 @@ class ViewerModel {
   std::array<at::Tensor, 3> canonical_max_;  // per level N: the highest cosine with a canonical phrase
   at::Tensor means_;                         // N x 3 float32
   Scene scene_;
-  nlohmann::json model_json_, objects_json_;
+  nlohmann::json model_json_, objects_json_, changes_json_;
   std::string gaussians_, city_mesh_;
   std::map<std::string, at::Tensor> text_cache_;
   struct LastQuery {

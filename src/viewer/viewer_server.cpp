@@ -90,6 +90,9 @@ struct ViewerServer::Impl {
       if (model.city_mesh_buffer().empty()) return send_error(res, 404, "no city mesh beside the model's label maps");
       res.set_content(model.city_mesh_buffer(), "application/octet-stream");
     });
+    server.Get("/api/changes", [this](const httplib::Request&, httplib::Response& res) {
+      res.set_content(model.changes_json().dump(), "application/json");
+    });
     server.Get("/api/objects", [this](const httplib::Request&, httplib::Response& res) {
       res.set_content(model.objects_json().dump(), "application/json");
     });

@@ -31,6 +31,11 @@ export async function getCityMesh() {
   return new Float32Array(await (await fetchOk("/api/citymesh")).arrayBuffer());
 }
 
+// `changes`' proposed openings in the scene frame: {proposals: [{id, class, confidence, width, height, corners}]}.
+export async function getChanges() {
+  return (await fetchOk("/api/changes")).json();
+}
+
 // The query's answer (JSON) and its per-Gaussian scores, fetched together.
 export async function runQuery({ text, level, mode, threshold }, count) {
   const params = new URLSearchParams({ q: text, level, mode });

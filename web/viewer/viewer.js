@@ -49,6 +49,7 @@ let splats = null;
 let frusta = null;
 let cityMesh = null;
 let cityMeshData = null; // promise of /api/citymesh: its bounds are part of the scene's box
+let proposals = null; // THREE.Group of `changes`' proposed openings, made at the first toggle
 let sceneBox = null; // THREE.Box3: the camera centres and the city model (sceneBoxOf)
 let activeView = null; // the view whose pose and intrinsics the camera has, or null (free camera)
 let current = null; // the applied query: {params, answer, scores}
@@ -329,6 +330,42 @@ async function toggleCityMesh() {
   invalidate();
 }
 
+// ---- `changes`' proposals: each a rectangle, outlined, filled more opaquely the higher its confidence
+
+async function toggleChanges() {
+  const button = $("changes-toggle");
+  const show = button.getAttribute("aria-pressed") !== "true";
+  button.setAttribute("aria-pressed", String(show));
+  if (show && !proposals) {
+    try {
+      const changes = await api.getChanges();
+      proposals = new THREE.Group();
+      for (const p of changes.proposals) {
+        const corners = p.corners.map((c) => new THREE.Vector3(...c));
+        const outline = new THREE.LineLoop(new THREE.BufferGeometry().setFromPoints(corners),
+          new THREE.LineBasicMaterial({ color: 0xff4020, depthTest: false }));
+        const fill = new THREE.Mesh(
+          new THREE.BufferGeometry().setFromPoints([corners[0], corners[1], corners[2], corners[0], corners[2], corners[3]]),
+          new THREE.MeshBasicMaterial({ color: 0xff4020, transparent: true, opacity: 0.1 + 0.5 * p.confidence,
+                                        side: THREE.DoubleSide, depthWrite: false }));
+        outline.renderOrder = fill.renderOrder = 2;
+        proposals.add(outline, fill);
+        const item = document.createElement("li");
+        item.textContent = `${p.id}: ${p.class}, ${p.width.toFixed(2)} x ${p.height.toFixed(2)} m, confidence ${p.confidence.toFixed(2)}`;
+        $("changes-list").append(item);
+      }
+      scene.add(proposals);
+    } catch (error) {
+      button.setAttribute("aria-pressed", "false");
+      showError(error);
+      return;
+    }
+  }
+  if (proposals) proposals.visible = show;
+  $("changes-list").hidden = !show;
+  invalidate();
+}
+
 // ---- far splats
 
 // The scene's box: the camera centres and the city model where the page has them (the photos were
@@ -406,6 +443,7 @@ function wireUi() {
   });
   $("fly-toggle").addEventListener("click", () => setFly(!fly.enabled));
   $("citymesh-toggle").addEventListener("click", toggleCityMesh);
+  $("changes-toggle").addEventListener("click", toggleChanges);
   $("farsplats-toggle").addEventListener("click", (e) => {
     e.target.setAttribute("aria-pressed", String(e.target.getAttribute("aria-pressed") !== "true"));
     if (splats) applyFarSplats();
@@ -444,6 +482,11 @@ function fillControls() {
   if (model.warning) {
     $("warning").textContent = model.warning;
     $("warning").hidden = false;
+  }
+  $("changes-toggle").textContent = `proposals (${model.changes ?? 0})`;
+  if (!model.changes) {
+    $("changes-toggle").disabled = true;
+    $("changes-toggle").title = "no `changes` output beside this run (citylangsplat changes RUN)";
   }
   if (!model.city_mesh) {
     $("citymesh-toggle").disabled = true;
