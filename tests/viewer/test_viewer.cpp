@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "cli_runner.h"
+#include "citymodel/city_transform.h"
 #include "core/atomic_file.h"
 #include "language/language_model.h"
 #include "features/feature_provider.h"
@@ -255,11 +256,45 @@ TEST(ViewerServer, ServesTheModelTheGaussiansAndThePhotos) {
   EXPECT_EQ(get("/api/image/0").body, "PNGBYTES");
   EXPECT_EQ(get("/api/image/1").status, 404);
   EXPECT_EQ(get("/api/citymesh").status, 404);  // no label maps beside this model
+  EXPECT_EQ(json::parse(get("/api/changes").body)["proposals"].size(), 0u);  // nor `changes`
   EXPECT_EQ(get("/").body, "<html>viewer</html>");
   EXPECT_EQ(get("/vendor/three/three.module.js").status, 200);
   EXPECT_EQ(get("/files/run.json").body, "{}");
   const json objects = json::parse(get("/api/objects").body);
   EXPECT_EQ(objects["objects"].size(), 4u);  // windows, the wall with them, the building
+}
+
+// `changes`' proposals beside a run (RUN/changes/changes.json, corners in the CRS) come out in the scene
+// frame through the label maps' city transform (scene = 2 * CRS - (10, 20, 5)).
+TEST(ViewerModel, ServesTheProposalsOfChangesInTheSceneFrame) {
+  const ServedModel& s = served();
+  const fs::path run = temp_root("changes") / "run";
+  const fs::path model_dir = run / "language" / "citylangsplat";
+  fs::create_directories(model_dir.parent_path());
+  fs::copy(s.model_dir, model_dir, fs::copy_options::recursive);
+  json info = json::parse(cls::read_text_file(model_dir / "model.json"));
+  info["features"] = (run / "features").string();
+  write_text_atomic(model_dir / "model.json", info.dump());
+  write_text_atomic(run / "features" / "features.json", json{{"labels_dir", (run / "labels").string()}}.dump());
+  write_city_transform((run / "labels" / "city_transform.json").string(),
+                       similarity_transform(2.0, Mat3d::identity(), {-10, -20, -5}), "EPSG:25832");
+  const json corners = {{10, 20, 5}, {11, 20, 5}, {11, 20, 6}, {10, 20, 6}};
+  write_text_atomic(run / "changes" / "changes.json",
+                    json{{"proposals", {{{"id", "proposal-1"}, {"class", "window"}, {"confidence", 0.8}, {"width", 1.0},
+                                         {"height", 1.0}, {"corners", corners}}}},
+                         {"contradicted", json::array()}}
+                        .dump());
+  const ViewerModel m(model_dir);
+  EXPECT_EQ(m.model_json()["changes"], 1);
+  const json& p = m.changes_json()["proposals"];
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_EQ(p[0]["id"], "proposal-1");
+  EXPECT_EQ(p[0]["corners"][1], json({12.0, 20.0, 5.0}));
+  EXPECT_EQ(p[0]["corners"][3], json({10.0, 20.0, 7.0}));
+  // Without a `changes` output: none, and the page disables the toggle.
+  fs::remove_all(run / "changes");
+  EXPECT_EQ(ViewerModel(model_dir).model_json()["changes"], 0);
+  fs::remove_all(run.parent_path());
 }
 
 TEST(ViewerServer, RefusesEveryWayOutOfItsFolders) {
