@@ -6,7 +6,8 @@
 # images, features from the exact ground truth under them: nothing comes from the label maps, which lack
 # those openings), then `changes`; its proposals against the openings the photos show and the given model
 # lacks (the LoD3 file's openings whose gml:id the given model does not have), matched one to one by IoU on
-# the wall's plane (>= 0.5): precision and recall per building.
+# the wall's plane (>= 0.5): precision and recall per building (bench/changes_score.py; "of them in a
+# photo": the missing openings whose centre some view's ground-truth labels show).
 # What it shows: whether the language field and the photos find the openings the model lacks, with stand-in
 # features. What it does not: CLIP/SAM on real photos, real SfM points.
 #   bash bench/changes.sh [--work DIR] [--buildings "fzk citygml4j texture4"] [--variants "drop=0.3 lod2"]
@@ -65,7 +66,7 @@ for b in $buildings; do
       || { echo "changes.sh: changes failed, see $out.changes.log" >&2; tail -5 "$out.changes.log" >&2; exit 1; }
     given=$(python3 -c "import json,sys,os; d=sys.argv[1]; print(os.path.join(d, json.load(open(os.path.join(d, 'scene.json')))['city_model']))" "$scene")
     python3 bench/changes_score.py --true-city "${city[$b]}" --given-city "$given" --changes "$out/changes/changes.json" \
-      > "$out/changes/score.json"
+      --scene "$scene" > "$out/changes/score.json"
     echo "$b $v: $(cat "$out/changes/score.json")" >&2
   done
 done
@@ -83,14 +84,14 @@ for v in variants:
         c = json.load(open(os.path.join(work, b, "run-" + v, "changes", "changes.json")))
         mine.append(s)
         fmt = lambda x: "-" if x is None else f"{x:.2f}"
-        rows.append(f"| {b} | {v} | {s['true_openings']} | {s['missing']} | {s['proposals']} | {s['matched']} | "
+        rows.append(f"| {b} | {v} | {s['true_openings']} | {s['missing']} | {s['visible']} | {s['proposals']} | {s['matched']} | "
                     f"{fmt(s['precision'])} | {fmt(s['recall'])} | {len(c['contradicted'])} |")
     if len(mine) > 1:
         tp, pr, mi = sum(s["matched"] for s in mine), sum(s["proposals"] for s in mine), sum(s["missing"] for s in mine)
-        rows.append(f"| all | {v} | {sum(s['true_openings'] for s in mine)} | {mi} | {pr} | {tp} | "
+        rows.append(f"| all | {v} | {sum(s['true_openings'] for s in mine)} | {mi} | {sum(s['visible'] for s in mine)} | {pr} | {tp} | "
                     f"{tp / pr if pr else 0:.2f} | {tp / mi if mi else 0:.2f} | |")
-md = ["| building | given model | openings | missing | proposals | matched (IoU >= 0.5) | precision | recall | contradicted surfaces |",
-      "|---|---|---:|---:|---:|---:|---:|---:|---:|"] + rows
+md = ["| building | given model | openings | missing | of them in a photo | proposals | matched (IoU >= 0.5) | precision | recall | contradicted surfaces |",
+      "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|"] + rows
 open(os.path.join(work, "changes.md"), "w").write("\n".join(md) + "\n")
 print("\n".join(md))
 PY

@@ -13,7 +13,12 @@ openings are matched one to one, highest IoU first. Precision = matched proposal
 matched openings / missing openings.
 
     python3 bench/changes_score.py --true-city TRUE --given-city GIVEN --changes RUN/changes/changes.json
-Prints one JSON line: {"missing", "proposals", "matched", "precision", "recall", "ious"}.
+With --scene (the synth scene: its COLMAP text model, city/transform.json and gt/labels), a missing
+opening counts as visible when its centroid projects, in at least one view, onto a pixel whose
+ground-truth label (rendered by synth from the true model) is a window or door: the recall over those
+is the share of what the photos show.
+Prints one JSON line: {"missing", "visible", "proposals", "matched", "precision", "recall",
+"recall_visible", "ious"}.
 """
 import argparse
 import json
@@ -125,12 +130,49 @@ def iou(corners, rings, step=0.02):
     return both / either if either else 0.0
 
 
+def visible_openings(scene, missing):
+    """The keys of the missing openings that some view's ground-truth labels show (see the docstring)."""
+    from PIL import Image  # python3-pil, as the browser tests
+    t = json.load(open(f"{scene}/city/transform.json"))["matrix"]
+    cams = {}
+    for line in open(f"{scene}/sparse/0/cameras.txt"):
+        w = line.split()
+        if w and not w[0].startswith("#"):
+            cams[w[0]] = [float(x) for x in w[4:8]]  # PINHOLE fx fy cx cy
+    lines = [l.split() for l in open(f"{scene}/sparse/0/images.txt") if l.strip() and not l.startswith("#")]
+    legend = json.load(open(f"{scene}/gt/legend.json"))
+    opening_labels = {c["id"] + 1 for c in legend if c["name"] in ("window", "door")}
+    views = []
+    for f in lines[0::2]:
+        qw, qx, qy, qz, tx, ty, tz = map(float, f[1:8])
+        R = [[1 - 2 * (qy * qy + qz * qz), 2 * (qx * qy - qz * qw), 2 * (qx * qz + qy * qw)],
+             [2 * (qx * qy + qz * qw), 1 - 2 * (qx * qx + qz * qz), 2 * (qy * qz - qx * qw)],
+             [2 * (qx * qz - qy * qw), 2 * (qy * qz + qx * qw), 1 - 2 * (qx * qx + qy * qy)]]
+        label = Image.open(f"{scene}/gt/labels/{f[9].rsplit('.', 1)[0]}.png")
+        views.append((R, (tx, ty, tz), cams[f[8]], label))
+    seen = set()
+    for key, rings in missing.items():
+        pts = [p for r in rings for p in r]
+        c = [sum(p[i] for p in pts) / len(pts) for i in range(3)]
+        x = [sum(t[r][k] * c[k] for k in range(3)) + t[r][3] for r in range(3)]
+        for R, tv, (fx, fy, cx, cy), label in views:
+            p = [sum(R[r][k] * x[k] for k in range(3)) + tv[r] for r in range(3)]
+            if p[2] <= 0:
+                continue
+            u, v = int(fx * p[0] / p[2] + cx), int(fy * p[1] / p[2] + cy)
+            if 0 <= u < label.width and 0 <= v < label.height and label.getpixel((u, v)) in opening_labels:
+                seen.add(key)
+                break
+    return seen
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--true-city", required=True)
     ap.add_argument("--given-city", required=True)
     ap.add_argument("--changes", required=True)
     ap.add_argument("--min-iou", type=float, default=0.5)
+    ap.add_argument("--scene", help="the synth scene, for the openings the photos show")
     a = ap.parse_args()
     true, given = openings(a.true_city), openings(a.given_city)
     missing = {k: r for k, r in true.items() if k not in given}
@@ -150,9 +192,15 @@ def main():
         used_t.add(k)
         ious.append(round(s, 3))
     n = len(ious)
-    print(json.dumps({"true_openings": len(true), "missing": len(missing), "proposals": len(proposals), "matched": n,
-                      "precision": n / len(proposals) if proposals else None,
-                      "recall": n / len(missing) if missing else None, "ious": ious}))
+    out = {"true_openings": len(true), "missing": len(missing), "proposals": len(proposals), "matched": n,
+           "precision": n / len(proposals) if proposals else None,
+           "recall": n / len(missing) if missing else None, "ious": ious}
+    if a.scene:
+        visible = visible_openings(a.scene, missing)
+        found = sum(1 for k in used_t if k in visible)
+        out.update({"visible": len(visible), "matched_visible": found,
+                    "recall_visible": found / len(visible) if visible else None})
+    print(json.dumps(out))
 
 
 if __name__ == "__main__":
