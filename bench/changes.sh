@@ -65,7 +65,7 @@ for b in $buildings; do
     "$bin" -q changes "$out" > "$out.changes.log" 2>&1 \
       || { echo "changes.sh: changes failed, see $out.changes.log" >&2; tail -5 "$out.changes.log" >&2; exit 1; }
     given=$(python3 -c "import json,sys,os; d=sys.argv[1]; print(os.path.join(d, json.load(open(os.path.join(d, 'scene.json')))['city_model']))" "$scene")
-    python3 bench/changes_score.py --true-city "${city[$b]}" --given-city "$given" --changes "$out/changes/changes.json" \
+    /usr/bin/python3 bench/changes_score.py --true-city "${city[$b]}" --given-city "$given" --changes "$out/changes/changes.json" \
       --scene "$scene" > "$out/changes/score.json"
     echo "$b $v: $(cat "$out/changes/score.json")" >&2
   done

@@ -13,8 +13,9 @@ int cmd_changes(int argc, char** argv) {
             "surfaces the cameras see but the photos put almost no Gaussians on. Every view's rendered level-1\n"
             "field votes per pixel on the plane of the wall (roof, ...) the label map hits there; cells that\n"
             "vote window or door, away from the openings the model has, grouped into regions: each region's\n"
-            "rectangle is proposed as a Window/Door surface on that wall with a confidence. Writes the enriched CityJSON 2.0 (as `enrich`, plus the proposals and\n"
-            "+clsContradicted surfaces) and changes.json beside it. See docs/export.md.");
+            "rectangle is proposed as a Window/Door surface on that wall with a confidence. Writes the\n"
+            "enriched CityJSON 2.0 (as `enrich`, plus the proposals and +clsContradicted surfaces) and\n"
+            "changes.json beside it; the report and the viewer show the proposals. See docs/export.md.");
   EnrichOptions o;
   o.changes = true;
   ProposalSettings& p = o.proposals;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 
 namespace cls {
 
@@ -99,10 +100,32 @@ std::vector<OpeningProposal> OpeningVotes::proposals() const {
       });
       if (!near) open.emplace(key, &c);
     }
+    // A closing (dilate, then erode, by one cell): an opening whose middle votes less clearly than its
+    // edges (a door's panels, a window's bars) stays one region instead of several fragments.
+    const auto neighbours = [](int64_t key, const auto& visit) {
+      const auto ij = cell_of(key);
+      for (int64_t di = -1; di <= 1; ++di)
+        for (int64_t dj = -1; dj <= 1; ++dj)
+          if (di || dj) visit(cell_key(ij[0] + di, ij[1] + dj));
+    };
+    std::set<int64_t> dilated;
+    for (const auto& [key, unused] : open) {
+      dilated.insert(key);
+      neighbours(key, [&](int64_t n) { dilated.insert(n); });
+    }
+    std::map<int64_t, const Cell*> closed = open;
+    static const Cell kNoVotes;
+    for (const int64_t key : dilated) {
+      bool inside = true;
+      neighbours(key, [&](int64_t n) { inside = inside && dilated.count(n); });
+      if (!inside || closed.count(key)) continue;
+      const auto found = cells_[o].find(key);
+      closed.emplace(key, found == cells_[o].end() ? &kNoVotes : &found->second);
+    }
     // 8-connected regions, each a rectangle.
     std::vector<OpeningProposal> mine;
     std::map<int64_t, bool> done;
-    for (const auto& [start, unused] : open) {
+    for (const auto& [start, unused] : closed) {
       if (done[start]) continue;
       std::vector<int64_t> stack = {start}, region;
       done[start] = true;
@@ -114,7 +137,7 @@ std::vector<OpeningProposal> OpeningVotes::proposals() const {
         for (int64_t di = -1; di <= 1; ++di)
           for (int64_t dj = -1; dj <= 1; ++dj) {
             const int64_t next = cell_key(ij[0] + di, ij[1] + dj);
-            if (open.count(next) && !done[next]) done[next] = true, stack.push_back(next);
+            if (closed.count(next) && !done[next]) done[next] = true, stack.push_back(next);
           }
       }
       double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
@@ -124,7 +147,7 @@ std::vector<OpeningProposal> OpeningVotes::proposals() const {
         const auto ij = cell_of(key);
         u0 = std::min(u0, ij[0] * s.cell), u1 = std::max(u1, (ij[0] + 1) * s.cell);
         v0 = std::min(v0, ij[1] * s.cell), v1 = std::max(v1, (ij[1] + 1) * s.cell);
-        const Cell& c = *open.at(key);
+        const Cell& c = *closed.at(key);
         total += c.votes;
         for (const auto& [cls, n] : c.openings) votes[cls] += n;
       }
