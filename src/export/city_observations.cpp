@@ -76,10 +76,7 @@ std::vector<ObjectObservation> observe_city_objects(const CityObjects& objects, 
   for (size_t k = 0; k < scene.views.size(); ++k) {
     const SceneView& view = scene.views[k];
     const int W = view.camera.width, H = view.camera.height;
-    const std::vector<int32_t> object = read_object_map(dirs[k] / "object.npy", H, W);
-    const FloatImage depth = read_pfm(dirs[k] / "depth.pfm");
-    if (depth.width != W || depth.height != H)
-      fail((dirs[k] / "depth.pfm").string(), cat(depth.width, "x", depth.height, ", but the view is ", W, "x", H));
+    const auto [object, depth] = read_view_hits(dirs[k], W, H);
     std::fill(pixels.begin(), pixels.end(), 0);
     for (const int32_t o : object)
       if (o >= 0 && static_cast<size_t>(o) < num_objects) ++pixels[o];

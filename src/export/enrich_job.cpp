@@ -137,10 +137,7 @@ json add_changes(CityJsonDocument& doc, const EnrichOptions& o, const LanguageMo
   for (size_t k = 0; k < scene.views.size(); ++k) {
     const SceneView& view = scene.views[k];
     const int W = view.camera.width, H = view.camera.height;
-    const std::vector<int32_t> object = read_object_map(dirs[k] / "object.npy", H, W);
-    const FloatImage depth = read_pfm(dirs[k] / "depth.pfm");
-    if (depth.width != W || depth.height != H)
-      fail((dirs[k] / "depth.pfm").string(), cat(depth.width, "x", depth.height, ", but the view is ", W, "x", H));
+    const auto [object, depth] = read_view_hits(dirs[k], W, H);
     const DecodedView decoded = render_decoded(model, 1, view);
     const at::Tensor best = cosine_maps(decoded.features, prototypes).argmax(0).to(torch::kInt32).contiguous();  // H x W
     const int32_t* b = best.data_ptr<int32_t>();

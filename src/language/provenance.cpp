@@ -40,10 +40,7 @@ GaussianProvenance assign_provenance(const GaussianModel& gaussians, const Scene
   for (size_t k = 0; k < scene.views.size(); ++k) {
     const SceneView& view = scene.views[k];
     const int W = view.camera.width, H = view.camera.height;
-    const FloatImage depth = read_pfm(dirs[k] / "depth.pfm");
-    if (depth.width != W || depth.height != H)
-      fail((dirs[k] / "depth.pfm").string(), cat(depth.width, "x", depth.height, ", but the view is ", W, "x", H));
-    const std::vector<int32_t> object = read_object_map(dirs[k] / "object.npy", H, W);
+    const auto [object, depth] = read_view_hits(dirs[k], W, H);
     const Mat3d& R = view.pose.R;
     const Vec3d& t = view.pose.t;
     const PinholeCamera& c = view.camera;

@@ -192,4 +192,11 @@ void write_label_maps(const fs::path& dir, const LabelMaps& maps, const Taxonomy
   write_preview(dir / "preview.png", maps, taxonomy);
 }
 
+ViewHits read_view_hits(const fs::path& dir, int width, int height) {
+  ViewHits hits{read_object_map(dir / "object.npy", height, width), read_pfm(dir / "depth.pfm")};
+  if (hits.depth.width != width || hits.depth.height != height)
+    fail((dir / "depth.pfm").string(), cat(hits.depth.width, "x", hits.depth.height, ", but the view is ", width, "x", height));
+  return hits;
+}
+
 }  // namespace cls

@@ -41,6 +41,15 @@ struct FloatImage {
 // or truncated.
 FloatImage read_pfm(const std::filesystem::path& path);
 
+// What a view's label maps say of its first hits: the finest city object (object.npy) and the camera
+// depth (depth.pfm, 0 where the ray hits nothing) per pixel, row-major; both checked against the view's
+// size (cls::Error naming the file otherwise).
+struct ViewHits {
+  std::vector<int32_t> object;
+  FloatImage depth;
+};
+ViewHits read_view_hits(const std::filesystem::path& dir, int width, int height);
+
 // Label ids (row-major H x W, -1 or any negative = none) as a BGR image: colours[id] is the RGB colour
 // of id, `none` the BGR colour where there is no label.
 cv::Mat colourise(const std::vector<int32_t>& labels, int H, int W, const std::vector<std::array<unsigned char, 3>>& colours,
