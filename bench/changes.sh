@@ -11,13 +11,13 @@
 # What it shows: whether the language field and the photos find the openings the model lacks, with stand-in
 # features. What it does not: CLIP/SAM on real photos, real SfM points.
 #   bash bench/changes.sh [--work DIR] [--buildings "fzk citygml4j texture4"] [--variants "drop=0.3 lod2"]
-#                         [--rgb-iterations N] [--language-iterations N]
+#                         [--rgb-iterations N] [--language-iterations N] [--size 240x180]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 repo=$(pwd)
 bin=${CLS_BIN:-$repo/build/citylangsplat}
 work=/tmp/cls-bench-changes; buildings="fzk citygml4j texture4"; variants="drop=0.3 lod2"
-rgb_iterations=1500; language_iterations=300
+rgb_iterations=1500; language_iterations=300; size=240x180
 while [ $# -gt 0 ]; do
   case $1 in
     --work) work=$2; shift 2 ;;
@@ -25,8 +25,9 @@ while [ $# -gt 0 ]; do
     --variants) variants=$2; shift 2 ;;
     --rgb-iterations) rgb_iterations=$2; shift 2 ;;
     --language-iterations) language_iterations=$2; shift 2 ;;
+    --size) size=$2; shift 2 ;;
     *) echo "usage: $0 [--work DIR (/tmp/cls-bench-changes)] [--buildings \"fzk citygml4j texture4\"]" \
-            "[--variants \"drop=0.3 lod2\"] [--rgb-iterations 1500] [--language-iterations 300]" >&2
+            "[--variants \"drop=0.3 lod2\"] [--rgb-iterations 1500] [--language-iterations 300] [--size 240x180]" >&2
        exit 2 ;;
   esac
 done
@@ -42,7 +43,7 @@ for b in $buildings; do
   mkdir -p "$work/$b"
   rgb=$work/$b/rgb
   for v in $variants; do
-    args=(-q synth --city "${city[$b]}" --lod 3 --views 32 --width 240 --height 180 --seed 1 --skip-if-same)
+    args=(-q synth --city "${city[$b]}" --lod 3 --views 32 --width "${size%x*}" --height "${size#*x}" --seed 1 --skip-if-same)
     case $v in
       lod2) [ -n "${lod2[$b]:-}" ] || { echo "$b: no LoD2 model in the data: $v skipped" >&2; continue; }
             args+=(--given-city "${lod2[$b]}" --given-lod 2) ;;
