@@ -56,13 +56,6 @@ std::vector<double> mean_scores(const std::array<at::Tensor, 3>& scores, const C
   return sum;
 }
 
-// The scores of `latent` (one text) at each level.
-std::array<at::Tensor, 3> level_scores(const LanguageModel& model, const at::Tensor& latent) {
-  std::array<at::Tensor, 3> s;
-  for (int l = 0; l < 3; ++l) s[l] = gaussian_scores(model.latents[l], latent).cpu();
-  return s;
-}
-
 
 // Where each proposal is best seen, for the report: the view that looks at it most squarely (its centre in
 // the image, at the label map's depth within 5 %), that view's photo at the label maps' size written to
@@ -306,14 +299,14 @@ json run_enrich(const EnrichOptions& o) {
     if (level_classes[l].empty()) continue;
     const at::Tensor latents = model.autoencoder.encode(class_prototypes(*provider, city.taxonomy, level_classes[l]));
     for (size_t k = 0; k < level_classes[l].size(); ++k)
-      class_means[level_classes[l][k]] = mean_scores(level_scores(model, latents[static_cast<int64_t>(k)]), objects, gaussian_object, seen);
+      class_means[level_classes[l][k]] = mean_scores(score_levels(model.latents, latents[static_cast<int64_t>(k)]).scores, objects, gaussian_object, seen);
   }
   std::vector<std::vector<double>> query_means;
   const std::vector<std::string> slugs = unique_slugs(o.queries);
   if (!o.queries.empty()) {
     const at::Tensor latents = model.autoencoder.encode(provider->text_features(o.queries).to(torch::kFloat32));
     for (size_t q = 0; q < o.queries.size(); ++q)
-      query_means.push_back(mean_scores(level_scores(model, latents[static_cast<int64_t>(q)]), objects, gaussian_object, seen));
+      query_means.push_back(mean_scores(score_levels(model.latents, latents[static_cast<int64_t>(q)]).scores, objects, gaussian_object, seen));
   }
 
   const std::string frame_crs = read_city_frame(transform.string()).crs;
