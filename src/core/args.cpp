@@ -159,6 +159,12 @@ bool Args::parse(const std::vector<std::string>& args) {
 }
 
 std::string Args::help() const {
+  // A help text's own line breaks continue under its first line.
+  const auto indented = [](const std::string& text) {
+    std::string out;
+    for (const char c : text) out += c == '\n' ? std::string("\n      ") : std::string(1, c);
+    return out;
+  };
   std::ostringstream s;
   s << "usage: " << (program_.empty() ? "" : program_ + " ") << command_;
   for (const auto& p : positionals_)
@@ -166,12 +172,12 @@ std::string Args::help() const {
   s << " [options]\n\n" << summary_ << "\n";
   if (!positionals_.empty()) {
     s << "\narguments:\n";
-    for (const auto& p : positionals_) s << "  " << p.name << "\n      " << p.help << "\n";
+    for (const auto& p : positionals_) s << "  " << p.name << "\n      " << indented(p.help) << "\n";
   }
   s << "\noptions:\n";
   for (const auto& sp : specs_) {
     s << "  " << (sp.short_name.empty() ? "" : "-" + sp.short_name + ", ") << "--" << sp.name
-      << (sp.is_flag ? "" : " VALUE") << "\n      " << sp.help;
+      << (sp.is_flag ? "" : " VALUE") << "\n      " << indented(sp.help);
     if (sp.required) s << " (required)";
     else if (!sp.is_flag && !sp.def.empty()) s << " (default: " + sp.def + ")";
     // A help text that says its default in words ("default: the built-in one") needs no second note.

@@ -42,12 +42,13 @@ TEST(Args, OptionsFlagsPositionalsAndDefaults) {
   bool fast_b = false;
   std::string file_b;
   Args b("demo", "a demo");
-  b.bind("width", width_b, "image width").flag("fast", fast_b, "go fast").positional("FILE", file_b, "input");
+  b.bind("width", width_b, "image width\nin pixels").flag("fast", fast_b, "go fast").positional("FILE", file_b, "input");
   ASSERT_TRUE(b.parse({"x"}));
   EXPECT_EQ(file_b, "x");
   EXPECT_EQ(width_b, 640);
   EXPECT_FALSE(fast_b);
   EXPECT_NE(b.help().find("(default: 640)"), std::string::npos) << b.help();
+  EXPECT_NE(b.help().find("      image width\n      in pixels (default: 640)\n"), std::string::npos) << b.help();  // indented on
   EXPECT_NE(b.help().find("--fast"), std::string::npos) << b.help();
   EXPECT_NE(b.help().find("FILE"), std::string::npos) << b.help();
 }
