@@ -20,7 +20,8 @@ int cmd_enrich(int argc, char** argv) {
   args.positional("RUN", o.run, "a `run` output directory")
       .rest("TEXT", o.queries, "text queries whose mean score each object gets")
       .optional()
-      .bind("out", o.out, "the CityJSON file to write (empty: RUN/enriched.city.json)")
+      .bind("out", o.out, "the CityJSON file to write (empty: RUN/enriched.city.json); ending in .jsonl: CityJSONSeq, a\n"
+                          "feature per building, for models too large to read whole")
       .bind("method", o.method, "whose language model scores the objects: citylangsplat or langsplat")
       .bind("city", o.city, "the city model (empty: the one run.json names; it must be the one the label maps were made from)")
       .bind("sample-points", o.sample_points, "points spread over the city model's surface for the covered fraction");

@@ -77,6 +77,43 @@ std::vector<std::vector<uint32_t>> polygon_rings(const std::vector<std::array<ui
   return rings;
 }
 
+std::vector<json> cityjson_sequence(const json& document) {
+  const json& objects = document.at("CityObjects");
+  const json& vertices = document.at("vertices");
+  json header = document;
+  header["CityObjects"] = json::object();
+  header["vertices"] = json::array();
+  std::vector<json> lines{std::move(header)};
+  for (auto top = objects.begin(); top != objects.end(); ++top) {
+    if (top->contains("parents")) continue;
+    json feature{{"type", "CityJSONFeature"}, {"id", top.key()}, {"CityObjects", json::object()}, {"vertices", json::array()}};
+    std::unordered_map<int64_t, int64_t> local;
+    // Boundaries nest arrays of vertex indices (surfaces of rings here; solids nest deeper): walk to the numbers.
+    const std::function<void(json&)> renumber = [&](json& b) {
+      if (b.is_array()) {
+        for (json& x : b) renumber(x);
+        return;
+      }
+      const int64_t v = b.get<int64_t>();
+      const auto [it, first] = local.try_emplace(v, static_cast<int64_t>(local.size()));
+      if (first) feature["vertices"].push_back(vertices.at(v));
+      b = it->second;
+    };
+    std::vector<std::string> pending{top.key()};
+    while (!pending.empty()) {
+      const std::string id = pending.back();
+      pending.pop_back();
+      json object = objects.at(id);
+      if (object.contains("geometry"))
+        for (json& geometry : object["geometry"]) renumber(geometry.at("boundaries"));
+      for (const json& child : object.value("children", json::array())) pending.push_back(child.get<std::string>());
+      feature["CityObjects"][id] = std::move(object);
+    }
+    lines.push_back(std::move(feature));
+  }
+  return lines;
+}
+
 std::string cityjson_reference_system(const std::string& crs_name) {
   const std::optional<CrsName> crs = parse_crs_name(crs_name);
   return crs ? cat("https://www.opengis.net/def/crs/EPSG/0/", crs->horizontal_epsg) : "";

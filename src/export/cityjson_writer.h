@@ -49,6 +49,13 @@ struct CityJsonDocument {
 CityJsonDocument semantic_mesh_cityjson(const SemanticMesh& mesh, const Taxonomy& taxonomy,
                                         const std::string& reference_system);
 
+// A CityJSON document as CityJSONSeq (CityJSON 2.0, section "CityJSON Text Sequences"), for models too
+// large to read whole: the first line the document without its objects and vertices (its transform,
+// metadata, extensions and root attributes stay there, as the specification asks), then one
+// CityJSONFeature per top-level object (one without "parents") holding it and all its descendants
+// ("children", recursively) with only the vertices they use, renumbered in order of first use.
+std::vector<nlohmann::json> cityjson_sequence(const nlohmann::json& document);
+
 // The OGC URL CityJSON 2.0 asks for ("https://www.opengis.net/def/crs/EPSG/0/25832") of a CRS name
 // parse_crs_name knows; a compound name gives its horizontal CRS. "" when the name is unknown.
 std::string cityjson_reference_system(const std::string& crs_name);

@@ -239,7 +239,9 @@ json run_enrich(const EnrichOptions& o) {
   const RunLayout run(root);
   if (!fs::exists(run.run_json())) throw UsageError("enrich: " + root.string() + " is no `run` output (no run.json there)");
   const fs::path out = !o.out.empty() ? fs::path(o.out) : o.changes ? run.changes() / "enriched.city.json" : root / "enriched.city.json";
-  if (out.extension() != ".json") throw UsageError("enrich: --out " + out.string() + " does not end in .json (CityJSON)");
+  const bool sequence = out.extension() == ".jsonl";
+  if (out.extension() != ".json" && !sequence)
+    throw UsageError("enrich: --out " + out.string() + " does not end in .json (CityJSON) or .jsonl (CityJSONSeq)");
   if (o.sample_points < 1) throw UsageError("enrich: --sample-points must be at least 1");
   const json record = parse_json_file(run.run_json());
   const json settings = record.value("settings", json::object());
@@ -379,7 +381,13 @@ json run_enrich(const EnrichOptions& o) {
 
   if (out.has_parent_path()) fs::create_directories(out.parent_path());
   write_text_atomic(out.parent_path() / kCityJsonExtensionFile, kCityLangSplatExtensionJson);
-  write_text_atomic(out, doc.document.dump());
+  if (sequence) {
+    std::string text;
+    for (const json& line : cityjson_sequence(doc.document)) text += line.dump() + "\n";
+    write_text_atomic(out, text);
+  } else {
+    write_text_atomic(out, doc.document.dump());
+  }
   if (o.changes) write_text_atomic(out.parent_path() / "changes.json", changes.dump(1));
   return {{"file", out.string()},
           {"proposals", o.changes ? changes["proposals"].size() : 0},

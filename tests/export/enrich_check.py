@@ -15,6 +15,8 @@
 4. The counts are the label maps': each enriched surface's +clsViews and +clsPixels equal what
    object.npy of every view holds (read here) for it and the openings in it.
 5. The scores mean something: the windows' mean score for the query "window" is higher than the walls'.
+8. `--out X.jsonl`: CityJSONSeq whose header and features pass the CityJSON and CityJSONFeature schemas
+   and, joined back into one document here, equal the CityJSON output's objects on the same coordinates.
 7. `changes` on the same run (its city model is the one the photos show): the document (with any
    proposals) passes checks 1 and 2, and nothing is proposed: the exact model lacks no opening.
 6. Bad input: no run there, an --out that is no .json, and a city model other than the run's (citygml4j's
@@ -23,7 +25,7 @@
     /usr/bin/python3 tests/export/enrich_check.py --binary build/citylangsplat --run RUN \\
         --city data/citygml/fzk-haus/fzk_haus_lod3_v2.gml --other-city data/citygml/citygml4j/lod3_building_v2.gml \\
         --schemas data/schemas --out /tmp/enrich
-    /usr/bin/python3 tests/export/enrich_check.py --validate FILE.city.json --schemas data/schemas   (checks 1-2 only)
+    /usr/bin/python3 tests/export/enrich_check.py --validate FILE.city.json[l] --schemas data/schemas   (checks 1-2 only)
 Exit status: 0 pass, 1 fail.
 """
 import argparse
@@ -221,6 +223,50 @@ def validate(doc, ext, schemas):
     return objects, vertices
 
 
+def read_sequence(path, schemas):
+    """A CityJSONSeq file: its first line against the CityJSON schema, every other line against the
+    CityJSONFeature schema, then the features joined into one document (vertices appended, indices
+    shifted), as cjio's `cat` would."""
+    schema_dir = os.path.join(schemas, "cityjson-2.0")
+    with open(path) as f:
+        lines = [json.loads(line) for line in f if line.strip()]
+    problems = errors_of(validator_for(schema_dir, "cityjson.schema.json"), lines[0])
+    feature_schema = validator_for(schema_dir, "cityjsonfeature.schema.json")
+    for line in lines[1:]:
+        problems += errors_of(feature_schema, line)
+    for e in problems[:20]:
+        print("  %s at %s" % (e.message[:200], "/".join(map(str, e.absolute_path))))
+    print("CityJSONSeq: header + %d features against the CityJSON and CityJSONFeature schemas: %d errors"
+          % (len(lines) - 1, len(problems)))
+    if problems or lines[0]["CityObjects"] or lines[0]["vertices"]:
+        fail("%s is not a valid CityJSONSeq" % path)
+
+    def shift(b, by):
+        return [shift(x, by) for x in b] if isinstance(b, list) else b + by
+    doc = dict(lines[0], CityObjects={}, vertices=[])
+    for feature in lines[1:]:
+        if feature["id"] not in feature["CityObjects"]:
+            fail("feature %s does not hold its own object" % feature["id"])
+        for oid, o in feature["CityObjects"].items():
+            o = json.loads(json.dumps(o))
+            for g in o.get("geometry", []):
+                g["boundaries"] = shift(g["boundaries"], len(doc["vertices"]))
+            doc["CityObjects"][oid] = o
+        doc["vertices"] += feature["vertices"]
+    return doc
+
+
+def resolved(doc):
+    """The document's objects with every vertex index replaced by its coordinates."""
+    def coords(b):
+        return [coords(x) for x in b] if isinstance(b, list) else doc["vertices"][b]
+    objects = json.loads(json.dumps(doc["CityObjects"]))
+    for o in objects.values():
+        for g in o.get("geometry", []):
+            g["boundaries"] = coords(g["boundaries"])
+    return objects
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--validate", help="only checks 1 and 2 of this enriched file (its Extension beside it)")
@@ -232,8 +278,11 @@ def main():
     ap.add_argument("--out")
     a = ap.parse_args()
     if a.validate:
-        with open(a.validate) as f:
-            doc = json.load(f)
+        if a.validate.endswith(".jsonl"):
+            doc = read_sequence(a.validate, a.schemas)
+        else:
+            with open(a.validate) as f:
+                doc = json.load(f)
         with open(os.path.join(os.path.dirname(os.path.abspath(a.validate)), "citylangsplat.ext.json")) as f:
             validate(doc, json.load(f), a.schemas)
         print("PASS")
@@ -337,7 +386,7 @@ def main():
     if not win > walls:
         fail("the windows do not answer 'window' better than the walls")
 
-    # 7. `changes` on the exact model.
+    # 7. `changes` on the same run.
     changes_out = os.path.join(a.out, "changes", "enriched.city.json")
     r = subprocess.run([a.binary, "changes", a.run, "--out", changes_out], capture_output=True, text=True)
     if r.returncode != 0:
@@ -351,6 +400,19 @@ def main():
         proposals = json.load(f)["proposals"]
     if proposals:
         fail("changes proposes %d openings on the exact model: %s" % (len(proposals), proposals[:2]))
+
+    # 8. The same as CityJSONSeq: each line valid, and joined back the same objects on the same coordinates.
+    seq_out = os.path.join(a.out, "seq", "enriched.city.jsonl")
+    r = subprocess.run([a.binary, "enrich", a.run, "window", "--out", seq_out], capture_output=True, text=True)
+    if r.returncode != 0:
+        fail("enrich --out %s exited %d: %s" % (seq_out, r.returncode, r.stderr))
+    joined = read_sequence(seq_out, a.schemas)
+    validate(joined, ext, a.schemas)
+    same = resolved(joined) == resolved(doc) and joined["transform"] == doc["transform"]
+    print("CityJSONSeq joined back: the document's %d CityObjects on the same coordinates: %s"
+          % (len(doc["CityObjects"]), "yes" if same else "no"))
+    if not same:
+        fail("the CityJSONSeq output is not the document")
 
     # 6. Bad input.
     bad_out = os.path.join(a.out, "bad")

@@ -9,6 +9,7 @@
 
 #include "citymodel/city_objects.h"
 #include "citymodel/city_transform.h"
+#include "citymodel/cityjson_reader.h"
 #include "citymodel/mesh_builder.h"
 #include "core/npy.h"
 #include "export/city_observations.h"
@@ -113,6 +114,55 @@ TEST(CityJsonWriter, AWallWithAWindowIsABuildingWithTwoSemanticSurfaces) {
   EXPECT_EQ(doc.places[2].surface, 1);
   EXPECT_EQ(cityjson_reference_system("urn:adv:crs:ETRS89_UTM32*DE_DHHN92_NH"), "https://www.opengis.net/def/crs/EPSG/0/25832");
   EXPECT_EQ(cityjson_reference_system("no such CRS"), "");
+}
+
+TEST(CityJsonWriter, ASequenceReadsBackAsTheDocumentItCameFrom) {
+  // Two buildings, the first with a BuildingPart that has its own wall: two features, the part in the
+  // first with its parent; each feature with only its own vertices.
+  const Taxonomy taxonomy = Taxonomy::builtin();
+  MeshBuilder b(taxonomy);
+  const int house = b.add_entity(3, taxonomy.find("building"), -1, "house");
+  const int wall = b.add_entity(2, taxonomy.find("wall"), house, "wall-1");
+  const int part = b.add_entity(3, taxonomy.find("building"), house, "house-part");
+  const int part_wall = b.add_entity(2, taxonomy.find("wall"), part, "wall-2");
+  const int shed = b.add_entity(3, taxonomy.find("building"), -1, "shed");
+  const int roof = b.add_entity(2, taxonomy.find("roof"), shed, "roof-1");
+  b.add_polygon({{{0, 0, 0}, {4, 0, 0}, {4, 0, 3}, {0, 0, 3}}}, taxonomy.find("wall"), wall, "p1");
+  b.add_polygon({{{4, 0, 0}, {4, 5, 0}, {4, 5, 3}, {4, 0, 3}}}, taxonomy.find("wall"), part_wall, "p2");
+  b.add_polygon({{{10, 0, 2}, {12, 0, 2}, {12, 2, 2}, {10, 2, 2}}}, taxonomy.find("roof"), roof, "p3");
+  const SemanticMesh mesh = b.finish();
+  const json doc = semantic_mesh_cityjson(mesh, taxonomy, "https://www.opengis.net/def/crs/EPSG/0/25832").document;
+  const std::vector<json> lines = cityjson_sequence(doc);
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0]["type"], "CityJSON");
+  EXPECT_TRUE(lines[0]["CityObjects"].empty());
+  EXPECT_TRUE(lines[0]["vertices"].empty());
+  EXPECT_EQ(lines[0]["transform"], doc["transform"]);
+  EXPECT_EQ(lines[1]["type"], "CityJSONFeature");
+  EXPECT_EQ(lines[1]["id"], "house");
+  EXPECT_EQ(lines[1]["CityObjects"].size(), 2u);  // house and its part
+  EXPECT_EQ(lines[1]["CityObjects"]["house-part"]["parents"], json::array({"house"}));
+  EXPECT_EQ(lines[1]["vertices"].size(), 6u);   // the two walls share an edge
+  EXPECT_EQ(lines[2]["id"], "shed");
+  EXPECT_EQ(lines[2]["vertices"].size(), 4u);
+  // Our CityJSONSeq reader (written for users' files, independently of this writer) reads the sequence
+  // into the mesh our CityJSON reader reads from the document.
+  std::string text;
+  for (const json& line : lines) text += line.dump() + "\n";
+  const SemanticMesh whole = parse_cityjson(doc.dump(), "doc.city.json", taxonomy, 0);
+  const SemanticMesh seq = parse_cityjson_seq(text, "doc.city.jsonl", taxonomy, 0);
+  ASSERT_EQ(seq.entities.size(), whole.entities.size());
+  for (size_t e = 0; e < whole.entities.size(); ++e) {
+    EXPECT_EQ(seq.entities[e].source_id, whole.entities[e].source_id);
+    EXPECT_EQ(seq.entities[e].level, whole.entities[e].level);
+    EXPECT_EQ(seq.entities[e].class_id, whole.entities[e].class_id);
+    EXPECT_EQ(seq.entities[e].parent, whole.entities[e].parent);
+  }
+  ASSERT_EQ(seq.triangles.size(), whole.triangles.size());
+  for (size_t t = 0; t < whole.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      for (int a = 0; a < 3; ++a)
+        EXPECT_NEAR(seq.vertices[seq.triangles[t][k]][a] + seq.origin[a], whole.vertices[whole.triangles[t][k]][a] + whole.origin[a], 1e-9);
 }
 
 TEST(CityObservations, AWallHalfInViewIsHalfCoveredAndItsWindowCountsForIt) {
