@@ -9,8 +9,10 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "core/progress.h"
 #include "core/run_layout.h"
 #include "export/splat_gltf.h"
+#include "export/splat_tiles.h"
 #include "export/tileset.h"
 #include "georef/crs_name.h"
 #include "georef/proj_crs.h"
@@ -87,6 +89,38 @@ std::vector<SplatScores> query_scores(LanguageModel& model, const fs::path& mode
   return out;
 }
 
+// Every tile's Gaussians as its own glTF (the semantics' object table whole in each), written into a
+// fresh OUT/tiles that replaces the old one only when all are written, then tileset.json with the glTF
+// extensions they use.
+void write_splat_tiles(const fs::path& out, json tileset, const SplatTileTree& tree, const GaussianModel& gaussians,
+                       const SplatSemantics* semantics, const std::vector<SplatScores>& scores,
+                       const SplatGltfOptions& options) {
+  const fs::path dir = out / "tiles", fresh = out / "tiles.partial";
+  fs::remove_all(fresh);
+  fs::create_directories(fresh);
+  Progress progress("export", tree.tiles.size(), "tiles");
+  for (const SplatTile& tile : tree.tiles) {
+    const at::Tensor index = torch::tensor(tile.splats, torch::kInt64);
+    SplatSemantics tile_semantics;
+    if (semantics) {
+      tile_semantics.objects = semantics->objects;
+      for (const int64_t i : tile.splats) tile_semantics.object_of.push_back(semantics->object_of[i]);
+    }
+    std::vector<SplatScores> tile_scores;
+    for (const SplatScores& s : scores) {
+      tile_scores.push_back({s.id, s.text, s.level, {}});
+      for (const int64_t i : tile.splats) tile_scores.back().values.push_back(s.values[i]);
+    }
+    const GltfBuilder gltf = splat_gltf(subset_gaussians(gaussians, index), semantics ? &tile_semantics : nullptr, tile_scores, options);
+    declare_gltf_extensions(tileset, gltf.json());
+    gltf.write(fresh / fs::path(splat_tile_uri(tile)).filename());
+    progress.advance();
+  }
+  fs::remove_all(dir);
+  fs::rename(fresh, dir);
+  write_text_atomic(out / "tileset.json", tileset.dump(1));
+}
+
 }  // namespace
 
 std::array<double, 16> gltf_city_matrix(const CityTransform& scene_from_crs, const Vec3d& origin) {
@@ -107,6 +141,9 @@ json run_export(const ExportOptions& o) {
     throw UsageError("export: --format must be glb, gltf or 3dtiles, got '" + o.format + "'");
   if (!o.compress.empty() && o.compress != "none" && o.compress != "spz")
     throw UsageError("export: --compress must be none or spz, got '" + o.compress + "'");
+  if (!o.spz_axes.empty() && o.spz_axes != "luf" && o.spz_axes != "cesium")
+    throw UsageError("export: --spz-axes must be luf or cesium, got '" + o.spz_axes + "'");
+  if (o.tile_splats < 1) throw UsageError(cat("export: --tile-splats must be at least 1, got ", o.tile_splats));
   const bool tiles = o.format == "3dtiles";
   if (tiles && !o.georeference) throw UsageError("export: a 3D Tiles tileset lies on the globe: --scene-frame does not go with it");
   const std::string compress = !o.compress.empty() ? o.compress : tiles ? "spz" : "none";
@@ -120,6 +157,8 @@ json run_export(const ExportOptions& o) {
 
   SplatGltfOptions options;
   options.compression = compress == "spz" ? SplatCompression::Spz : SplatCompression::None;
+  const std::string spz_axes = !o.spz_axes.empty() ? o.spz_axes : tiles ? "cesium" : "luf";
+  options.spz_axes = spz_axes == "luf" ? SpzAxes::Luf : SpzAxes::AsStored;
   // With the city transform: the Gaussians' centres in the city model's CRS, once, for the origin and
   // the tileset's box.
   std::optional<CityFrame> city_frame;
@@ -152,9 +191,13 @@ json run_export(const ExportOptions& o) {
     log_warn("export: " + why + ": the splats stay in the frame they were trained in");
   }
   options.extras = {{"citylangsplat", frame}};
+  if (options.compression == SplatCompression::Spz)  // which axes a reader must unpack the payload to
+    options.extras["citylangsplat"]["spzAxes"] = spz_axes == "luf" ? "LUF, as the extension says" : "as stored, as CesiumJS reads them";
 
-  // The tileset's frame before anything is computed or written: PROJ must know the CRS and place the origin.
+  // The tileset's frame and tiles before anything is computed or written: PROJ must know the CRS and
+  // place the origin.
   json tileset;
+  SplatTileTree tile_tree;
   if (tiles) {
     const std::optional<CrsName> crs = parse_crs_name(city_frame->crs);
     if (!crs) throw Error("export: a 3D Tiles tileset needs the city model's CRS in a form PROJ reads; " + transform_file.string() +
@@ -163,15 +206,18 @@ json run_export(const ExportOptions& o) {
     if (!to_ecef.geoid_available())
       log_warn("export: EGM96's grid is not installed (proj-data): the city model's heights go on the globe as ellipsoidal, tens of metres low");
     const double scale = inverse(city_frame->transform).scale();
-    const at::Tensor extent = std::get<0>(in.gaussians.scales().to(torch::kFloat64).max(1)).contiguous();
+    const at::Tensor sigma = std::get<0>(in.gaussians.scales().to(torch::kFloat64).sort(1)).contiguous();  // ascending
+    const at::Tensor opacity = in.gaussians.opacities().to(torch::kFloat64).contiguous();
     std::vector<Vec3d> local(in_crs.size());
-    std::vector<double> radii(in_crs.size());
+    std::vector<double> radii(in_crs.size()), importance(in_crs.size());
     for (size_t i = 0; i < in_crs.size(); ++i) {
+      const double* s = sigma.data_ptr<double>() + 3 * i;
       local[i] = in_crs[i] - origin;
-      radii[i] = 3 * scale * extent.data_ptr<double>()[i];
+      radii[i] = 3 * scale * s[2];
+      importance[i] = opacity.data_ptr<double>()[i] * s[1] * s[2];  // opacity x footprint, what a distant eye sees
     }
-    tileset = tileset_json(ecef_tile_transform(to_ecef, origin), bounding_box(local, radii), "gaussians.glb",
-                           {{"citylangsplat", frame}});
+    tile_tree = build_splat_tiles(local, radii, importance, o.tile_splats);
+    tileset = tileset_json(ecef_tile_transform(to_ecef, origin), tile_tree, {{"citylangsplat", frame}});
   }
 
   SplatSemantics semantics;
@@ -186,22 +232,21 @@ json run_export(const ExportOptions& o) {
   }
   const std::vector<SplatScores> scores = o.queries.empty() ? std::vector<SplatScores>{} : query_scores(*in.model, in.model_dir, o);
 
-  const GltfBuilder gltf = splat_gltf(in.gaussians, with_semantics ? &semantics : nullptr, scores, options);
   if (tiles) {
-    fs::create_directories(out);
-    gltf.write(out / "gaussians.glb");
-    write_text_atomic(out / "tileset.json", tileset.dump(1));
+    write_splat_tiles(out, tileset, tile_tree, in.gaussians, with_semantics ? &semantics : nullptr, scores, options);
   } else {
     if (out.has_parent_path()) fs::create_directories(out.parent_path());
-    gltf.write(out);
+    splat_gltf(in.gaussians, with_semantics ? &semantics : nullptr, scores, options).write(out);
   }
   json queries = json::array();
   for (const SplatScores& s : scores) queries.push_back({{"text", s.text}, {"level", s.level}, {"property", s.id}});
   return {{"file", tiles ? (out / "tileset.json").string() : out.string()},
           {"format", o.format},
           {"compress", compress},
+          {"spz_axes", compress == "spz" ? json(spz_axes) : json(nullptr)},
           {"gaussians", in.gaussians.size()},
           {"sh_degree", in.gaussians.sh_degree()},
+          {"tiles", tiles ? json(tile_tree.tiles.size()) : json(nullptr)},
           {"semantics", with_semantics ? json(in.model->objects.objects.size()) : json(nullptr)},
           {"queries", queries},
           {"frame", frame}};

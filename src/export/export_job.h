@@ -17,8 +17,10 @@ namespace cls {
 
 struct ExportOptions {
   std::string input;                   // a run output, a language model directory or a .ply
-  std::string format = "glb";          // glb, gltf, or 3dtiles (a directory: tileset.json + gaussians.glb)
+  std::string format = "glb";          // glb, gltf, or 3dtiles (a directory: tileset.json + tiles/*.glb)
+  int64_t tile_splats = 100000;        // 3dtiles: the most Gaussians in one tile (splat_tiles.h)
   std::string compress;                // none or spz (KHR_gaussian_splatting_compression_spz_2); "": spz for 3dtiles
+  std::string spz_axes;                // luf or cesium (spz.h's SpzAxes); "": cesium for 3dtiles, else luf
   std::string out;                     // "" = beside the model: gaussians.<format>, gaussians_3dtiles/
   std::string method = "citylangsplat";  // the language model of a run output
   std::vector<std::string> queries;    // texts whose per-splat scores go out as property attributes
@@ -30,7 +32,7 @@ struct ExportOptions {
 // model's CRS minus `origin`: the inverse of `scene_from_crs`, the shift, then (E, N, U) -> (E, U, -N).
 std::array<double, 16> gltf_city_matrix(const CityTransform& scene_from_crs, const Vec3d& origin);
 
-// Writes the asset and returns what it wrote ({"file", "gaussians", "semantics", "queries", "frame"}).
+// Writes the asset and returns what it wrote ({"file", "gaussians", "tiles", "semantics", "queries", "frame"}).
 // cls::UsageError for bad options, cls::Error naming the file for unreadable inputs.
 nlohmann::json run_export(const ExportOptions& options);
 

@@ -194,7 +194,7 @@ GltfBuilder splat_gltf(const GaussianModel& g, const SplatSemantics* semantics, 
                {"sortingMethod", "cameraDistance"}};
   gltf.use_extension("KHR_gaussian_splatting", spz);
   if (spz) {
-    const std::string payload = spz_v2(g);
+    const std::string payload = spz_v2(g, options.spz_axes);
     splatting["extensions"]["KHR_gaussian_splatting_compression_spz_2"] = {
         {"bufferView", gltf.add_view(payload.data(), payload.size())}};
     gltf.use_extension("KHR_gaussian_splatting_compression_spz_2", true);

@@ -21,6 +21,7 @@
 
 #include "citymodel/city_objects.h"
 #include "export/gltf_builder.h"
+#include "export/spz.h"
 #include "splat/gaussians.h"
 
 namespace cls {
@@ -46,6 +47,7 @@ enum class SplatCompression { None, Spz };
 
 struct SplatGltfOptions {
   SplatCompression compression = SplatCompression::None;
+  SpzAxes spz_axes = SpzAxes::Luf;                    // with Spz: the payload's axes (spz.h)
   std::optional<std::array<double, 16>> node_matrix;  // column-major, as glTF; none = identity
   nlohmann::json extras = nlohmann::json::object();   // the asset's extras (where the frame lies ...)
 };

@@ -63,7 +63,7 @@ int spz_flip_sign(int k) {
   return f[k] * b[k] > 0 ? 1 : -1;
 }
 
-std::string spz_v2(const GaussianModel& g) {
+std::string spz_v2(const GaussianModel& g, SpzAxes axes) {
   at::NoGradGuard no_grad;
   const int64_t n = g.size();
   if (n > int64_t(UINT32_MAX)) throw Error("export: SPZ holds at most 2^32 - 1 Gaussians");
@@ -85,7 +85,8 @@ std::string spz_v2(const GaussianModel& g) {
   append<uint32_t>(raw, static_cast<uint32_t>(n));
   for (uint8_t b : {uint8_t(degree), uint8_t(bits), uint8_t(0), uint8_t(0)}) append<uint8_t>(raw, b);
 
-  const double flip[3] = {-1, 1, -1};  // LUF -> RUB
+  const bool luf = axes == SpzAxes::Luf;
+  const double flip[3] = {luf ? -1.0 : 1.0, 1, luf ? -1.0 : 1.0};  // LUF -> RUB
   for (int64_t i = 0; i < n; ++i)
     for (int a = 0; a < 3; ++a) {
       const int32_t fixed = static_cast<int32_t>(std::lround(std::ldexp(flip[a] * means[3 * i + a], bits)));
@@ -105,7 +106,7 @@ std::string spz_v2(const GaussianModel& g) {
     for (int c = 0; c < 3; ++c) raw.push_back(static_cast<char>(to_byte(sign * flip[c] * q[c] / len * 127.5 + 127.5)));
   }
   int flips[kMaxShCoeffs];
-  for (int k = 0; k < coeffs; ++k) flips[k] = spz_flip_sign(k);
+  for (int k = 0; k < coeffs; ++k) flips[k] = luf ? spz_flip_sign(k) : 1;
   for (int64_t i = 0; i < n; ++i)
     for (int k = 1; k < coeffs; ++k)
       for (int c = 0; c < 3; ++c)

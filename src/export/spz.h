@@ -21,9 +21,16 @@ namespace cls {
 
 constexpr int kSpzVersion = 2;
 
-// The compressed stream of `g`, whose coordinates are a glTF primitive's (LUF). cls::Error when a
-// value is not finite or a coordinate lies beyond 2^23 (what 24-bit fixed point holds).
-std::string spz_v2(const GaussianModel& g);
+// The axes the payload's coordinates are packed from. Luf: the extension's text ("specify a
+// Left-Up-Front coordinate system in the SPZ PackOptions"), x and z flip into SPZ's RUB. AsStored: the
+// primitive's coordinates go in unchanged, which is how CesiumJS 1.145, the extension's one known
+// implementation, reads a payload (spz-loader's coordinateSystem "UNSPECIFIED", no conversion): a
+// payload packed from LUF shows there turned half about the vertical (KhronosGroup/glTF#2509).
+enum class SpzAxes { Luf, AsStored };
+
+// The compressed stream of `g`, whose coordinates are a glTF primitive's. cls::Error when a value is
+// not finite or a coordinate lies beyond 2^23 (what 24-bit fixed point holds).
+std::string spz_v2(const GaussianModel& g, SpzAxes axes = SpzAxes::Luf);
 
 // The sign a SH coefficient k (3DGS's order, 0 the DC term) takes when x and z flip: the parity of
 // its basis function under (x, y, z) -> (-x, y, -z).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "core/error.h"
 #include "core/log.h"
@@ -28,34 +29,39 @@ std::array<double, 16> ecef_tile_transform(const CrsToGeocentric& to_ecef, const
   return m;
 }
 
-std::array<double, 12> bounding_box(const std::vector<Vec3d>& points, const std::vector<double>& radii) {
-  Vec3d lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
-  for (size_t i = 0; i < points.size(); ++i)
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = std::min(lo[a], points[i][a] - radii[i]);
-      hi[a] = std::max(hi[a], points[i][a] + radii[i]);
-    }
-  std::array<double, 12> box{};
-  for (int a = 0; a < 3; ++a) {
-    box[a] = (lo[a] + hi[a]) / 2;
-    box[3 + 4 * a] = (hi[a] - lo[a]) / 2;  // half-axis a along axis a
-  }
-  return box;
-}
+std::string splat_tile_uri(const SplatTile& tile) { return "tiles/" + tile.name + ".glb"; }
 
-nlohmann::json tileset_json(const std::array<double, 16>& transform, const std::array<double, 12>& box,
-                            const std::string& content_uri, const nlohmann::json& extras) {
+nlohmann::json tileset_json(const std::array<double, 16>& transform, const SplatTileTree& tree,
+                            const nlohmann::json& extras) {
+  std::function<nlohmann::json(int)> tile_json = [&](int t) {
+    const SplatTile& tile = tree.tiles[t];
+    nlohmann::json j{{"boundingVolume", {{"box", tile.box}}},
+                     {"geometricError", tile.geometric_error},
+                     {"refine", "ADD"},
+                     {"content", {{"uri", splat_tile_uri(tile)}}}};
+    for (const int c : tile.children) j["children"].push_back(tile_json(c));
+    return j;
+  };
+  nlohmann::json root = tile_json(0);
+  root["transform"] = transform;
+  const std::array<double, 12>& box = tree.tiles[0].box;
   const double diagonal = 2 * std::sqrt(box[3] * box[3] + box[7] * box[7] + box[11] * box[11]);
   nlohmann::json tileset{{"asset", {{"version", "1.1"}, {"generator", "citylangsplat " CLS_VERSION}}},
-                         {"geometricError", diagonal},
-                         {"root",
-                          {{"transform", transform},
-                           {"boundingVolume", {{"box", box}}},
-                           {"geometricError", 0},
-                           {"refine", "ADD"},
-                           {"content", {{"uri", content_uri}}}}}};
+                         {"geometricError", std::max(diagonal, tree.tiles[0].geometric_error)},
+                         {"root", root}};
   if (!extras.empty()) tileset["asset"]["extras"] = extras;
   return tileset;
+}
+
+void declare_gltf_extensions(nlohmann::json& tileset, const nlohmann::json& gltf) {
+  const auto add = [](nlohmann::json& list, const std::string& name) {
+    if (!list.is_array()) list = nlohmann::json::array();
+    if (std::find(list.begin(), list.end(), name) == list.end()) list.push_back(name);
+  };
+  add(tileset["extensionsUsed"], "3DTILES_content_gltf");
+  nlohmann::json& content = tileset["extensions"]["3DTILES_content_gltf"];
+  for (const char* key : {"extensionsUsed", "extensionsRequired"})
+    for (const auto& name : gltf.value(key, nlohmann::json::array())) add(content[key], name.get<std::string>());
 }
 
 }  // namespace cls

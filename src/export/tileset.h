@@ -1,14 +1,15 @@
 #pragma once
-// A 3D Tiles 1.1 tileset of one glTF content (export --format 3dtiles): the root tile's transform takes
-// the content's frame, the city model's CRS minus an origin with z up (3D Tiles turns a glTF's y up to
-// z up itself), to ECEF (EPSG:4978), so a client places it on the globe; its bounding volume is a box in
-// that frame around every Gaussian's 3-sigma extent.
+// A 3D Tiles 1.1 tileset of Gaussian splat tiles (export --format 3dtiles; splat_tiles.h cuts them):
+// the root tile's transform takes the contents' frame, the city model's CRS minus an origin with z up
+// (3D Tiles turns a glTF's y up to z up itself), to ECEF (EPSG:4978), so a client places it on the
+// globe; each tile's bounding volume is a box in that frame around its Gaussians' 3-sigma extents.
 #include <array>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "core/math.h"
+#include "export/splat_tiles.h"
 #include "georef/proj_crs.h"
 
 namespace cls {
@@ -18,14 +19,18 @@ namespace cls {
 // included) and the origin's ECEF position. cls::Error when PROJ cannot place the origin.
 std::array<double, 16> ecef_tile_transform(const CrsToGeocentric& to_ecef, const Vec3d& origin);
 
-// 3D Tiles' box (centre, then three half-axis vectors) around points of the local frame, each grown by
-// its radius; axis-aligned.
-std::array<double, 12> bounding_box(const std::vector<Vec3d>& points, const std::vector<double>& radii);
+// Where a tile's content lies, relative to tileset.json: tiles/<name>.glb.
+std::string splat_tile_uri(const SplatTile& tile);
 
-// tileset.json: asset 1.1, one root tile (refine ADD, geometricError 0: nothing finer) with the
-// transform, the box and `content_uri`; the tileset's geometricError the box's diagonal (below that
-// screen error the tile is drawn).
-nlohmann::json tileset_json(const std::array<double, 16>& transform, const std::array<double, 12>& box,
-                            const std::string& content_uri, const nlohmann::json& extras);
+// tileset.json: asset 1.1, the tree's tiles (refine ADD: a child adds to its parent) with their boxes,
+// geometric errors and contents, the root with the transform; the tileset's geometricError the root
+// box's diagonal, or the root's error where that is larger (below it the root is drawn).
+nlohmann::json tileset_json(const std::array<double, 16>& transform, const SplatTileTree& tree,
+                            const nlohmann::json& extras);
+
+// Adds the glTF extensions `gltf` uses and requires to the tileset's 3DTILES_content_gltf lists (each
+// once): clients decide from them how to load the contents before reading any (CesiumJS loads a tile as
+// Gaussian splats only when KHR_gaussian_splatting and its SPZ compression are listed as required).
+void declare_gltf_extensions(nlohmann::json& tileset, const nlohmann::json& gltf);
 
 }  // namespace cls
