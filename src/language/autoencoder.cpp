@@ -121,7 +121,7 @@ AutoencoderConfig langsplat_autoencoder_config(int input_dim) {
 
 AutoencoderTrainOptions langsplat_autoencoder_training() {
   AutoencoderTrainOptions o;
-  o.lr = 1e-4;
+  o.lr = 7e-4;  // process.sh's --lr 0.0007, not train.py's default 1e-4 (autoencoder.h)
   o.batch_size = 64;
   o.lambda_cos = 0.512;
   return o;

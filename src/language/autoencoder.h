@@ -81,9 +81,10 @@ class Autoencoder {
   std::unique_ptr<Impl> impl_;
 };
 
-// LangSplat as published (autoencoder/train.py's defaults; the paper's "original implementation with its
-// default configuration" baseline): 512 -> 256, 128, 64, 32, 3 -> 16, 32, 64, 128, 256, 256, 512, latent and
-// output normalised, Adam lr 1e-4 in batches of 64. Its loss mean((f - f^)^2) + 0.001 (1 - cos) is ours
+// LangSplat as published (the paper's "original implementation with its default configuration" baseline):
+// 512 -> 256, 128, 64, 32, 3 -> 16, 32, 64, 128, 256, 256, 512, latent and output normalised, Adam lr 7e-4
+// (its published command, process.sh: `train.py ... --lr 0.0007`; train.py's own default is 1e-4) in
+// batches of 64. Its loss mean((f - f^)^2) + 0.001 (1 - cos) is ours
 // with lambda_cos = 0.512 up to the factor 1/512 (its mean runs over the 512 channels too); its cosine runs
 // over the batch axis (F.cosine_similarity(..., dim=0)), a quirk not reproduced: ours is per feature.
 AutoencoderConfig langsplat_autoencoder_config(int input_dim = 512);  // the decoder ends in input_dim
