@@ -64,7 +64,8 @@ std::vector<int> evaluated_classes(const Taxonomy& taxonomy, const LabelledPoint
   return ids;
 }
 
-// The paper's "fallback" level of a class: the subpart map carries parts (docs/conventions.md).
+// Our "fallback" level of a class (the paper names no rule for which level answers a class): the subpart
+// map carries parts (docs/conventions.md).
 int fallback_level(const SemanticClass& c) { return c.level == 3 ? 3 : 1; }
 
 // The level whose field answers a class: its fallback level, or with LangSplat's rule the level whose
