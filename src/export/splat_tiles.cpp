@@ -41,8 +41,19 @@ SplatTileTree build_splat_tiles(const std::vector<Vec3d>& centres, const std::ve
   SplatTileTree tree;
   std::vector<int64_t> all(n);
   for (size_t i = 0; i < n; ++i) all[i] = static_cast<int64_t>(i);
-  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-  for (const Vec3d& c : centres) x0 = std::min(x0, c.x), x1 = std::max(x1, c.x), y0 = std::min(y0, c.y), y1 = std::max(y1, c.y);
+  // The root cell spans the 1st to 99th percentile of the centres: a few far floaters (a trained sky,
+  // stray Gaussians) would make every cell kilometres wide; outside it they join the border cells.
+  const auto span = [&](int axis) {
+    std::vector<double> v(n);
+    for (size_t i = 0; i < n; ++i) v[i] = centres[i][axis];
+    const size_t lo = (n - 1) / 100, hi = n - 1 - (n - 1) / 100;
+    std::nth_element(v.begin(), v.begin() + lo, v.end());
+    const double a = v[lo];
+    std::nth_element(v.begin(), v.begin() + hi, v.end());
+    return std::array<double, 2>{a, v[hi]};
+  };
+  const auto [x0, x1] = span(0);
+  const auto [y0, y1] = span(1);
   tree.tiles.push_back({"r", {}, {}, 0, {}});
   // Breadth first (a parent before its children), without recursion: a tile's depth can reach n / max_splats.
   std::vector<Pending> queue{{0, std::move(all), x0, x1, y0, y1}};

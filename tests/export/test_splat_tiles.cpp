@@ -131,6 +131,21 @@ TEST(SplatTiles, AModelWithinTheLimitIsOneTileAndCoincidentGaussiansEndInAChain)
   EXPECT_THROW(build_splat_tiles(c.centres, c.radii, c.importance, 0), std::invalid_argument);
 }
 
+TEST(SplatTiles, FarFloatersJoinTheBorderCellsInsteadOfWideningThem) {
+  // 1000 Gaussians on a 100 m x 60 m district and 5 floaters 20 km away: the root's error (the spacing
+  // of its Gaussians over its cell) is that of the district's cell, and the floaters still lie in a tile
+  // whose box holds them.
+  Cloud c = random_cloud(1000, 7);
+  for (int k = 0; k < 5; ++k) {
+    c.centres.push_back({20000.0 + k, -20000.0, 100});
+    c.radii.push_back(50);
+    c.importance.push_back(0.5);
+  }
+  const SplatTileTree tree = build_splat_tiles(c.centres, c.radii, c.importance, 100);
+  EXPECT_LE(tree.tiles[0].geometric_error, std::sqrt(100.0 * 60.0 / 100) * 1.01);
+  EXPECT_GT(tree.tiles[0].box[3], 10000);  // the root's box holds the floaters
+}
+
 TEST(Tileset, TheTreeNestsWithItsBoxesErrorsAndContentsAndTheTransformOnTheRoot) {
   const Cloud c = random_cloud(300, 6);
   const SplatTileTree tree = build_splat_tiles(c.centres, c.radii, c.importance, 40);
