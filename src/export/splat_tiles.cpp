@@ -66,7 +66,8 @@ SplatTileTree build_splat_tiles(const std::vector<Vec3d>& centres, const std::ve
       std::sort(tile.splats.begin(), tile.splats.end());
       continue;
     }
-    std::stable_sort(p.subtree.begin(), p.subtree.end(), [&](int64_t a, int64_t b) {
+    // The max_splats most important first (a total order: ties by index); the rest need no order.
+    std::nth_element(p.subtree.begin(), p.subtree.begin() + max_splats, p.subtree.end(), [&](int64_t a, int64_t b) {
       return importance[a] > importance[b] || (importance[a] == importance[b] && a < b);
     });
     tile.splats.assign(p.subtree.begin(), p.subtree.begin() + max_splats);

@@ -240,7 +240,7 @@ def check_view(driver, args, stem, view, m, scene, labels, objects, Image):
     settle(driver, args.timeout)
     w, h = width * args.zoom, height * args.zoom
     shot = Image.open(io.BytesIO(driver.get_screenshot_as_png())).convert("RGB").crop((0, 0, w, h))
-    if args.screenshot and not os.path.exists(args.screenshot):
+    if args.screenshot and stem == args.views.split(",")[0]:
         shot.save(args.screenshot)
     shot.save(os.path.join(args.out, f"cesium_{stem}.png"))
     small = shot.resize((width, height), Image.BOX).load()
