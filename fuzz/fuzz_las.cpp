@@ -1,5 +1,6 @@
 // libFuzzer target for the LAS reader (scene/las.h): the buffer parser with a stride from the first
-// byte, and the streaming file reader on the same bytes, which must agree. Malformed input must end
+// byte, and the streaming file reader on the same bytes, which must agree; where the header describes
+// extra-bytes fields, both read the one the first byte picks, and must agree on it too. Malformed input must end
 // in a cls::Error; anything else (or a disagreement) is a finding.
 #include <unistd.h>
 
@@ -31,6 +32,24 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     b = cls::read_las(file, stride);
     streamed = true;
   } catch (const cls::Error&) {
+  }
+  if (parsed && !a.header.extra_fields.empty()) {
+    const std::string field = a.header.extra_fields[data[0] / 4 % a.header.extra_fields.size()].name;
+    parsed = streamed = false;
+    try {
+      a = cls::parse_las(input, "fuzz.las", stride, field);
+      parsed = true;
+    } catch (const cls::Error&) {
+    }
+    try {
+      b = cls::read_las(file, stride, field);
+      streamed = true;
+    } catch (const cls::Error&) {
+    }
+    if (parsed != streamed) std::abort();
+    if (parsed && (a.field.size() != a.xyz.size() || b.field.size() != a.field.size() ||
+                   std::memcmp(a.field.data(), b.field.data(), a.field.size() * sizeof(double)) != 0))
+      std::abort();
   }
   if (parsed != streamed || a.xyz.size() != b.xyz.size() || a.rgb != b.rgb || a.classification != b.classification)
     std::abort();
