@@ -70,9 +70,18 @@ int cmd_evaluate(int argc, char** argv) {
   options.test_every = 8;
   args.bind("scene", scene_dir, "scene directory (COLMAP / Pix4D)")
       .required()
-      .bind("gt", options.gt_points, "labelled point cloud PLY (x y z + int class = taxonomy id, -1 = none)")
+      .bind("gt", options.gt_points,
+            "labelled point cloud: PLY (x y z + int class = taxonomy id, -1 = none) or LAS 1.0-1.4 (with --class-map)")
       .default_text("SCENE/gt/points.ply")
-      .bind("gt-class-property", options.gt_class_property, "the GT PLY's integer vertex property with the taxonomy class id")
+      .bind("gt-class-property", options.gt_class_property,
+            "the GT's label field: a PLY vertex property, or in a LAS classification or an extra-bytes field")
+      .default_text("class in a PLY, classification in a LAS")
+      .bind("class-map", options.class_map,
+            "JSON mapping the GT's label values to taxonomy classes (data/class-maps/zaha-lofg3.json: ZAHA); without "
+            "it the labels are taxonomy ids")
+      .bind("gt-transform", options.gt_transform,
+            "the GT lies in the city model's CRS: move it into the scene frame by this city transform (a run's "
+            "OUT/labels/city_transform.json)")
       // Read above (it repeats); declared for --help.
       .declare("model", "", "NAME=DIR of a language model directory; repeat for several methods", false)
       .bind("out", out_dir, "output directory")

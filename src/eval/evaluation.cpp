@@ -17,6 +17,8 @@
 #include "core/image_file.h"
 #include "core/log.h"
 #include "core/progress.h"
+#include "citymodel/city_transform.h"
+#include "eval/class_map.h"
 #include "eval/gt_projection.h"
 #include "eval/labelled_points.h"
 #include "eval/metrics_2d.h"
@@ -168,7 +170,17 @@ struct EvaluatedClasses {
 
 EvaluatedClasses load_evaluated_classes(const Taxonomy& taxonomy, const EvaluationOptions& options) {
   EvaluatedClasses e;
-  e.gt = read_labelled_points(options.gt_points, options.gt_class_property);
+  if (options.class_map.empty()) {
+    e.gt = read_labelled_points(options.gt_points, options.gt_class_property);
+  } else {
+    const ClassMap map = read_class_map(options.class_map, taxonomy);
+    e.gt = read_labelled_points(options.gt_points, options.gt_class_property, &map);
+  }
+  if (!options.gt_transform.empty()) {
+    // In double: a CRS's large coordinates cancel against the transform's translation before any rounding.
+    const CityTransform t = read_city_frame(options.gt_transform).transform;
+    for (Vec3d& p : e.gt.positions) p = t.apply(p);
+  }
   e.ids = evaluated_classes(taxonomy, e.gt, options);
   e.eval_of.assign(taxonomy.classes.size(), -1);
   for (int k = 0; k < e.size(); ++k) {
@@ -222,13 +234,18 @@ struct Scores2d {
 
 // A method's 2D prediction for one view: evaluated class index per pixel (row-major H x W), -1 = none.
 // It may add fields to the view's record (e.g. the levels it read).
-using Predict2d = std::function<std::vector<int32_t>(const SceneView& view, size_t index, nlohmann::json& record)>;
+// A view's predictions, one class per pixel (-1 none): the scored reading first, then the alternative
+// readings evaluate_2d was named (scored on the same views, reported apart).
+using Predict2d =
+    std::function<std::vector<std::vector<int32_t>>(const SceneView& view, size_t index, nlohmann::json& record)>;
 
 // The 2D evaluation (paper 4.3) of any prediction: GT label images projected from the cloud, scored on
 // valid GT pixels ("2d") and, when options.labels_dir is set, on those the city model covers (M = 1,
 // "2d_covered"). `visible` (optional, gt.size()) receives which GT points win some pixel of some view.
+// `alternatives`: the names of the readings after the first (out["2d_<name>"], the held-out views).
 nlohmann::json evaluate_2d(const Scene& scene, const EvaluatedClasses& ec, const EvaluationOptions& options,
-                           const Predict2d& predict, std::vector<uint8_t>* visible) {
+                           const Predict2d& predict, std::vector<uint8_t>* visible,
+                           const std::vector<std::string>& alternatives = {}) {
   const int K = ec.size();
   GtProjectionOptions popt;
   popt.point_radius = options.gt_point_radius;
@@ -240,6 +257,7 @@ nlohmann::json evaluate_2d(const Scene& scene, const EvaluatedClasses& ec, const
   std::set<const SceneView*> held_out;
   for (const SceneView* v : split_views(scene, options.test_every).test) held_out.insert(v);
   Scores2d all(K), covered(K), train(K);
+  std::vector<Scores2d> alternative(alternatives.size(), Scores2d(K));
   nlohmann::json views = nlohmann::json::array();
   const fs::path view_dir = options.out_dir.empty() ? fs::path() : fs::path(options.out_dir) / "views";
   if (!view_dir.empty() && options.write_view_images) fs::create_directories(view_dir);
@@ -260,7 +278,10 @@ nlohmann::json evaluate_2d(const Scene& scene, const EvaluatedClasses& ec, const
     nlohmann::json record = {{"name", v.name}};
     const bool scored = options.test_every == 0 || held_out.count(&v);
     if (options.test_every > 0) record["held_out"] = scored;
-    const std::vector<int32_t> pred = predict(v, i, record);
+    const std::vector<std::vector<int32_t>> readings = predict(v, i, record);
+    const std::vector<int32_t>& pred = readings.front();
+    if (scored)
+      for (size_t a = 0; a < alternatives.size(); ++a) alternative[a].add(gt_labels, readings.at(a + 1));
     const ImageScoring s = (scored ? all : train).add(gt_labels, pred);
     const SegmentationScores vs = segmentation_scores(s.confusion);
     record["gt_coverage"] = s.pixels ? double(s.valid_gt) / double(s.pixels) : 0.0;
@@ -291,15 +312,19 @@ nlohmann::json evaluate_2d(const Scene& scene, const EvaluatedClasses& ec, const
   out["2d"]["views_scored"] = options.test_every > 0 ? held_out.size() : scene.views.size();
   if (options.test_every > 0 && held_out.size() < scene.views.size()) out["2d_train"] = train.json(ec.names);
   if (!label_dirs.empty()) out["2d_covered"] = covered.json(ec.names);
+  for (size_t a = 0; a < alternatives.size(); ++a) out["2d_" + alternatives[a]] = alternative[a].json(ec.names);
   return out;
 }
 
 nlohmann::json common_json(const EvaluatedClasses& ec, const EvaluationOptions& options) {
-  return {{"classes", ec.names},
+  nlohmann::json j = {{"classes", ec.names},
           {"threshold_2d", options.threshold_2d},
           {"match_radius", options.match_radius},
           {"gt_points", options.gt_points},
           {"labels", options.labels_dir}};
+  if (!options.class_map.empty()) j["class_map"] = options.class_map;
+  if (!options.gt_transform.empty()) j["gt_transform"] = options.gt_transform;
+  return j;
 }
 
 }  // namespace
@@ -329,28 +354,36 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
   if (langsplat_rule) used_levels.insert(levels.begin(), levels.end());
   else used_levels.insert(class_level.begin(), class_level.end());
 
-  // ---- 2D: per class relevance normalised to [0, 1], argmax per pixel, below the threshold ignored.
+  // ---- 2D: per class relevance normalised to [0, 1], argmax per pixel, below the threshold ignored. The
+  // relevance is the plain cosine ("relevance maps computed without softmax", paper 4.3: the scored
+  // reading); LangSplat's relevancy against its canonical phrases is the other reading ("2d_relevancy"),
+  // on the same views, levels and threshold.
+  const at::Tensor canonical = provider.text_features(canonical_phrases()).to(torch::kCPU, torch::kFloat32);
   std::vector<uint8_t> visible(ec.gt.size(), 0);  // GT points nearest at some pixel of some view
   const Predict2d predict = [&](const SceneView& v, size_t, nlohmann::json& record) {
-    std::map<int, at::Tensor> cos;  // level -> K x H x W raw cosine
-    for (int l : used_levels)
-      cos[l] = relevance_maps(model, l, v, prototypes, prototypes.slice(0, 0, 1)).cosine.to(torch::kCPU);
-    std::vector<at::Tensor> maps;
+    std::map<int, RelevanceMaps> rel;  // level -> K x H x W raw cosine and relevancy
+    for (int l : used_levels) rel[l] = relevance_maps(model, l, v, prototypes, canonical);
+    std::vector<at::Tensor> cosine, relevancy;
     nlohmann::json chosen = nlohmann::json::array();
     for (int k = 0; k < K; ++k) {
       const int level = answering_level(class_level[k], langsplat_rule, levels,
-                                        [&](int l) { return cos[l][k].max().item<double>(); });
+                                        [&](int l) { return rel[l].cosine[k].max().item<double>(); });
       chosen.push_back(level);
-      maps.push_back(minmax_normalise(cos[level][k]));
+      cosine.push_back(minmax_normalise(rel[level].cosine[k].to(torch::kCPU)));
+      relevancy.push_back(minmax_normalise(rel[level].relevancy[k].to(torch::kCPU)));
     }
     record["levels"] = chosen;
-    const auto [best, arg] = torch::stack(maps, 0).max(0);
-    const at::Tensor pred_t =
-        torch::where(best >= options.threshold_2d, arg, torch::full_like(arg, -1)).to(torch::kInt32).contiguous();
-    const int32_t* pp = pred_t.data_ptr<int32_t>();
-    return std::vector<int32_t>(pp, pp + pred_t.numel());
+    const auto classify = [&](const std::vector<at::Tensor>& maps) {
+      const auto [best, arg] = torch::stack(maps, 0).max(0);
+      const at::Tensor pred_t =
+          torch::where(best >= options.threshold_2d, arg, torch::full_like(arg, -1)).to(torch::kInt32).contiguous();
+      const int32_t* pp = pred_t.data_ptr<int32_t>();
+      return std::vector<int32_t>(pp, pp + pred_t.numel());
+    };
+    return std::vector<std::vector<int32_t>>{classify(cosine), classify(relevancy)};
   };
-  nlohmann::json result = evaluate_2d(scene, ec, options, predict, &visible);
+  nlohmann::json result = evaluate_2d(scene, ec, options, predict, &visible, {"relevancy"});
+  result["relevance"] = "cosine";
 
   // ---- 3D: every Gaussian's decoded latent argmax over the prototypes; GT points matched to centres.
   const int64_t N = model.gaussians.size();
@@ -446,7 +479,7 @@ nlohmann::json evaluate_label_maps(const Scene& scene, const Taxonomy& taxonomy,
         for (int x = 0; x < W; ++x)
           if (const int32_t c = ec.to_eval(int32_t(m.at<uint16_t>(y, x)) - 1); c >= 0) pred[size_t(y) * W + x] = c;
     }
-    return pred;
+    return std::vector<std::vector<int32_t>>{pred};
   };
   nlohmann::json result = evaluate_2d(scene, ec, options, predict, nullptr);
   result.update(common_json(ec, options));

@@ -16,8 +16,11 @@
 namespace cls {
 
 struct EvaluationOptions {
-  std::string gt_points;          // labelled PLY (x y z + int "class" = taxonomy id, -1 = unlabelled)
-  std::string gt_class_property = "class";  // the PLY's vertex property holding the class id
+  std::string gt_points;          // labelled PLY (x y z + int "class" = taxonomy id, -1 = unlabelled) or LAS
+  std::string gt_class_property;  // its label field ("": "class" in a PLY, "classification" in a LAS)
+  std::string class_map;          // its label values -> taxonomy classes (eval/class_map.h); "" = taxonomy ids
+  std::string gt_transform;       // a city transform JSON moving the GT from the city model's CRS into the scene
+                                  // frame (the run's labels/city_transform.json); "" = the GT is in the scene frame
   std::vector<std::string> classes;  // evaluated class names; empty = every class present in the GT
   double threshold_2d = 0.3;      // pixels whose best normalised relevance is below are ignored
   double match_radius = 0.2;      // 3D nearest-neighbour radius (scene units)
@@ -42,12 +45,14 @@ struct EvaluationOptions {
 };
 
 // One method's scores; the JSON has the paper's table fields (2D: miou, wiou, accuracy, coverage,
-// per_class {iou, precision, recall}; 3D: miou, wiou, coverage, mean_distance).
+// per_class {iou, precision, recall}; 3D: miou, wiou, coverage, mean_distance). "2d" reads the plain
+// cosine ("relevance": "cosine"); "2d_relevancy" the same views with LangSplat's relevancy instead.
 nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, FeatureProvider& provider,
                               const Taxonomy& taxonomy, const EvaluationOptions& options);
 
 // The tables' layout version: `run` recomputes an evaluation written by another version.
-inline constexpr const char* kEvaluationTables = "2026-11-26 held-out phrases, held-out 2D views, 3D Gaussians per class";
+inline constexpr const char* kEvaluationTables =
+    "2026-11-29 held-out phrases, held-out 2D views, 3D Gaussians per class, 2D with LangSplat's relevancy";
 
 // The label maps' row name in the tables.
 inline constexpr const char* kLabelMapsMethod = "city-model-labels";

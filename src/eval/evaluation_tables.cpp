@@ -153,6 +153,12 @@ std::vector<ResultTable> evaluation_tables(const Methods& methods) {
     tables.push_back(method_table("table-1c", "Table 1c: 2D on the training views (Tables 1 and 1b: the held-out views)",
                                   "The views the photometric and language training saw; reported apart, not the result.",
                                   methods, columns_2d("2d_train")));
+  if (std::any_of(methods.begin(), methods.end(), [](const auto& m) { return m.second.contains("2d_relevancy"); }))
+    tables.push_back(method_table(
+        "table-1d", "Table 1d: 2D with LangSplat's relevancy (Table 1: the plain cosine, the default)",
+        "The held-out views of Table 1, each class's map LangSplat's relevancy against its canonical phrases "
+        "(object, things, stuff, texture) instead of the cosine, then the same normalisation, argmax and threshold.",
+        methods, columns_2d("2d_relevancy")));
   tables.push_back(method_table(
       "table-2", "Table 2: 3D (nearest Gaussian centre)",
       "Cov.: GT points with a Gaussian centre within the radius (%); Dist.: mean match distance (scene units); best "

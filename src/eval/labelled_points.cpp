@@ -1,27 +1,60 @@
 #include "eval/labelled_points.h"
 
+#include <algorithm>
+#include <cctype>
 #include <climits>
 #include <cstring>
+#include <filesystem>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/ply.h"
+#include "scene/las.h"
 
 namespace cls {
+namespace {
 
-LabelledPoints read_labelled_points(const std::string& path, const std::string& class_property) {
-  const PlyVertices v = read_ply_vertices(path);
-  const PlyProperty &x = v.require("x"), &y = v.require("y"), &z = v.require("z"), &c = v.require(class_property);
+bool is_las(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext == ".las" || ext == ".laz";
+}
+
+}  // namespace
+
+std::string default_label_field(const std::string& path) { return is_las(path) ? "classification" : "class"; }
+
+LabelledPoints read_labelled_points(const std::string& path, const std::string& field_arg, const ClassMap* map) {
+  const std::string field = field_arg.empty() ? default_label_field(path) : field_arg;
   LabelledPoints out;
-  out.positions.resize(v.count);
-  out.labels.resize(v.count);
-  for (uint64_t i = 0; i < v.count; ++i) {
-    out.positions[i] = {v.finite_value(i, x), v.finite_value(i, y), v.finite_value(i, z)};
-    const double label = v.finite_value(i, c);
-    if (label < INT32_MIN || label > INT32_MAX)
-      fail(path, "vertex " + std::to_string(i) + " has " + class_property + " = " + std::to_string(label) +
-                     ": not a class id");
-    out.labels[i] = static_cast<int32_t>(label);
+  std::vector<double> values;
+  if (is_las(path)) {
+    if (!map)
+      fail(path, "a LAS ground truth needs a class map (--class-map FILE) from its " + field +
+                     " values to the taxonomy's classes (data/class-maps/ has ZAHA's)");
+    LasPoints las = read_las(path, 1, field == "classification" ? "" : field);
+    out.positions = std::move(las.xyz);
+    values = field == "classification" ? std::vector<double>(las.classification.begin(), las.classification.end())
+                                       : std::move(las.field);
+  } else {
+    const PlyVertices v = read_ply_vertices(path);
+    const PlyProperty &x = v.require("x"), &y = v.require("y"), &z = v.require("z"), &c = v.require(field);
+    out.positions.resize(v.count);
+    values.resize(v.count);
+    for (uint64_t i = 0; i < v.count; ++i) {
+      out.positions[i] = {v.finite_value(i, x), v.finite_value(i, y), v.finite_value(i, z)};
+      values[i] = v.finite_value(i, c);
+    }
+  }
+  if (map) {
+    out.labels = map_labels(*map, values, path, field);
+    return out;
+  }
+  out.labels.resize(values.size());
+  for (size_t i = 0; i < values.size(); ++i) {
+    if (values[i] < INT32_MIN || values[i] > INT32_MAX)
+      fail(path, "vertex " + std::to_string(i) + " has " + field + " = " + std::to_string(values[i]) + ": not a class id");
+    out.labels[i] = static_cast<int32_t>(values[i]);
   }
   return out;
 }

@@ -202,6 +202,12 @@ TEST(Evaluation, ACorrectFieldScoresHighAndWritesViews) {
   }
   EXPECT_TRUE(fs::exists(out / "views" / "0000_gt.png"));
   EXPECT_TRUE(fs::exists(out / "views" / "0000_pred.png"));
+  // The other reading, LangSplat's relevancy, on the same views and GT: the correct field scores high too.
+  EXPECT_EQ(r["relevance"], "cosine");
+  const nlohmann::json& rel = r["2d_relevancy"];
+  EXPECT_EQ(rel["valid_gt_pixels"], r["2d"]["valid_gt_pixels"]);
+  EXPECT_GT(rel["wiou"].get<double>(), 0.9);
+  EXPECT_GT(rel["per_class"]["roof"]["iou"].get<double>(), 0.9);
 }
 
 TEST(Evaluation, SwappedClassesScoreLow) {
@@ -212,6 +218,8 @@ TEST(Evaluation, SwappedClassesScoreLow) {
   EXPECT_LT(bad["2d"]["miou"].get<double>(), good["2d"]["miou"].get<double>() - 0.3);
   EXPECT_LT(bad["3d"]["miou"].get<double>(), good["3d"]["miou"].get<double>() - 0.3);
   EXPECT_LT(bad["2d"]["per_class"]["wall"]["iou"].get<double>(), 0.2);
+  EXPECT_LT(bad["2d_relevancy"]["per_class"]["wall"]["iou"].get<double>(), 0.2);
+  EXPECT_LT(bad["2d_relevancy"]["miou"].get<double>(), good["2d_relevancy"]["miou"].get<double>() - 0.3);
   EXPECT_LT(bad["3d"]["per_class"]["roof"]["iou"].get<double>(), 0.2);
   // The best labelling of the Gaussians does not depend on the latents, and no field is more accurate.
   for (const char* group : {"3d", "3d_visible"}) {
