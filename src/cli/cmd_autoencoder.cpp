@@ -21,7 +21,7 @@ int cmd_autoencoder(int argc, char** argv) {
   autoencoder_options().declare(args, o);
   args.bind("preset", preset,
             "langsplat: LangSplat's published autoencoder (the langsplat-original baseline): sizes "
-            "256,128,64,32,3 / 16,32,64,128,256,256,512, normalised output, lr 1e-4, batch 64, lambda-cos 0.512; "
+            "256,128,64,32,3 / 16,32,64,128,256,256,512, normalised output, lr 7e-4 (its published command), batch 64, lambda-cos 0.512; "
             "combines with --epochs, --holdout and --seed only",
             choice_codec({"", "langsplat"}));
   if (!args.parse(argc, argv)) return 0;

@@ -10,7 +10,7 @@
 namespace cls {
 namespace fs = std::filesystem;
 
-const std::vector<std::string> kBaselines = {"langsplat", "langsplat-original"};
+const std::vector<std::string> kBaselines = {"langsplat-original", "langsplat"};
 
 ProviderChoice PipelineConfig::auto_features() {
   ProviderChoice c;
@@ -43,7 +43,8 @@ void PipelineConfig::validate() const {
   if (!rgb_model.empty() && !fs::exists(rgb_model)) fail(rgb_model, "--rgb-model: file not found");
   const bool original = std::find(baselines.begin(), baselines.end(), "langsplat-original") != baselines.end();
   if (!autoencoder.empty() && original)
-    throw UsageError("run: --baseline langsplat-original trains its own autoencoder: not with --autoencoder (tiles)");
+    throw UsageError("run: the baseline langsplat-original (the default) trains its own autoencoder: with --autoencoder "
+                     "give --baseline langsplat or none");
   // The autoencoder is read from its step on (tiles stop after the features, before it exists).
   const bool needs_autoencoder = step == steps.end() || step >= std::find(steps.begin(), steps.end(), "autoencoder");
   if (!autoencoder.empty() && needs_autoencoder && !fs::exists(autoencoder))
@@ -130,9 +131,9 @@ OptionList<PipelineConfig> make_pipeline_options() {
       .add("lambda-sam", &C::lambda_sam, "weight of the SAM term in covered pixels")
       .add("lambda-citygml", &C::lambda_citygml, "weight of the CityGML term")
       .add("baseline", &C::baselines,
-           "baselines beside CityLangSplat, comma-separated: langsplat (LangSplat's objective on the shared "
-           "autoencoder), langsplat-original (LangSplat as published: its 3-d autoencoder and settings, "
-           "normalised splatting), or none",
+           "baselines beside CityLangSplat, comma-separated: langsplat-original (the paper's baseline: LangSplat "
+           "as published, its 3-d autoencoder and settings, normalised splatting), langsplat (an ablation: "
+           "LangSplat's objective on CityLangSplat's 128-d autoencoder and splatting), or none",
            R::Setting, baselines_codec())
       .add("autoencoder", &C::autoencoder,
            "use this autoencoder (e.g. the one shared by all tiles, docs/scale.md) instead of training one",

@@ -28,8 +28,16 @@ TilePhase parse_tile_phase(const std::string& name);  // cls::UsageError for an 
 // (pipeline_options() without per_scene(): `run-tiles` takes them as `run` does), and the shared
 // autoencoder's sample. run-tiles resolves `--models auto` and the default counts once, where it is
 // started, so every task of every node runs the same models and schedule.
+// run's defaults but the baseline: the one on the shared autoencoder (langsplat-original trains its own
+// per scene, the tiles share one).
+inline PipelineConfig tile_pipeline_defaults() {
+  PipelineConfig c;
+  c.baselines = {"langsplat"};
+  return c;
+}
+
 struct RunTilesSettings {
-  PipelineConfig pipeline;
+  PipelineConfig pipeline = tile_pipeline_defaults();
   int64_t autoencoder_samples = 200000;  // SAM features the shared autoencoder trains on, drawn from all tiles
 
   nlohmann::json to_json() const;

@@ -93,6 +93,7 @@ PipelineConfig quick(const fs::path& scene, const fs::path& out) {
   c.rgb_iterations = 5;
   c.language_iterations = 2;
   c.autoencoder_epochs = 3;
+  c.baselines = {"langsplat"};  // the baseline on the shared autoencoder: no second autoencoder to train
   return c;
 }
 

@@ -12,6 +12,7 @@
 #include "core/error.h"
 #include "models/temp_dir.h"
 #include "pipeline/pipeline_config.h"
+#include "tiles/tile_tasks.h"
 
 using namespace cls;
 using Binding = OptionList<PipelineConfig>::Binding;
@@ -116,7 +117,7 @@ TEST(PipelineOptions, BaselinesAreKeptOnceInOneOrder) {
     ADD_FAILURE() << "no --baseline";
     return std::vector<std::string>{};
   };
-  EXPECT_EQ(parse("langsplat-original,langsplat,langsplat"), (std::vector<std::string>{"langsplat", "langsplat-original"}));
+  EXPECT_EQ(parse("langsplat,langsplat-original,langsplat"), (std::vector<std::string>{"langsplat-original", "langsplat"}));
   EXPECT_EQ(parse("none,langsplat"), std::vector<std::string>{"langsplat"});
   EXPECT_TRUE(parse("none").empty());
   EXPECT_THROW(parse("langsplat,other"), std::invalid_argument);
@@ -128,6 +129,11 @@ TEST(PipelineOptions, TheAutoencoderMustExistOnlyWhereTheRunReadsIt) {
   PipelineConfig c;
   c.city = "model.gml";
   c.autoencoder = "/nonexistent/shared.safetensors";
+  // The default baseline, the paper's, trains its own autoencoder: a given one needs the others.
+  EXPECT_EQ(c.baselines, std::vector<std::string>{"langsplat-original"});
+  c.stop_after = "labels";
+  EXPECT_THROW(c.validate(), UsageError);
+  c.baselines = {"langsplat"};
   for (const char* early : {"labels", "features"}) {
     c.stop_after = early;
     EXPECT_NO_THROW(c.validate()) << early;
@@ -156,7 +162,7 @@ TEST(PipelineOptions, RunAndRunTilesHelpShowEveryOptionOnceWithTheDefaultOfTheSt
     // run-tiles carries every option that is not the scene's own, declared by the same binding.
     EXPECT_EQ(count(tiles.out, "--" + b.name + (b.flag ? "\n" : " VALUE\n")), b.per_scene ? 0u : 1u) << b.name;
     if (!b.per_scene) {
-      EXPECT_EQ(count(tiles.out, help_entry(b, defaults)), 1u) << b.name;
+      EXPECT_EQ(count(tiles.out, help_entry(b, tile_pipeline_defaults())), 1u) << b.name;
     }
   }
   // The models' defaults come from one table (the provider registry), not from a help string.

@@ -4,10 +4,14 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <array>
+#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
+#include "eval/labelled_points.h"
+#include "hand_las.h"
 #include "core/atomic_file.h"
 #include "core/exit_codes.h"
 #include "core/run_layout.h"
@@ -78,9 +82,10 @@ TEST(RunCli, TinyModelsRunEveryStageOnTheBundledExampleAndASecondRunReusesThem) 
   ASSERT_EQ(first.status, 0) << first.err;
   EXPECT_NE(first.err.find("tiny random"), std::string::npos);
   const auto record = read_json(out / "run.json");
-  for (const char* stage : {"labels", "features", "autoencoder", "train-rgb", "render", "evaluate"})
+  for (const char* stage : {"labels", "features", "autoencoder", "autoencoder-langsplat", "train-rgb", "render", "evaluate"})
     EXPECT_EQ(record[stage]["status"], "done") << stage;
-  for (const char* method : {"citylangsplat", "langsplat"}) {
+  // Beside CityLangSplat, the paper's baseline: LangSplat as published, with its own autoencoder.
+  for (const char* method : {"citylangsplat", "langsplat-original"}) {
     EXPECT_EQ(record["train-language"][method]["status"], "done") << method;
     EXPECT_EQ(record["query"][method]["status"], "done") << method;
     EXPECT_TRUE(fs::exists(out / "language" / method / "latents.safetensors")) << method;
@@ -115,19 +120,57 @@ TEST(RunCli, TinyModelsRunEveryStageOnTheBundledExampleAndASecondRunReusesThem) 
   // One evaluation writer: `evaluate` on the run's own models and label maps writes the same bytes.
   const fs::path eval_again = base / "eval_again";
   const auto evaluated = run_cli("-q evaluate --scene " + (base / "fzk-haus").string() + " --model citylangsplat=" +
-                                 (out / "language" / "citylangsplat").string() + " --model langsplat=" +
-                                 (out / "language" / "langsplat").string() + " --labels " + (out / "labels").string() +
+                                 (out / "language" / "citylangsplat").string() + " --model langsplat-original=" +
+                                 (out / "language" / "langsplat-original").string() + " --labels " + (out / "labels").string() +
                                  " --out " + eval_again.string());
   ASSERT_EQ(evaluated.status, 0) << evaluated.err;
   EXPECT_EQ(cls::read_text_file(eval_again / "eval.json"), cls::read_text_file(out / "eval" / "eval.json"));
   EXPECT_TRUE(read_json(eval_again / "eval.json")["methods"].is_array());
 
+  // The same GT as a user would bring it: a LAS cloud (format 6) in a projected CRS with its own class
+  // codes, a class map to the taxonomy and the city transform into the scene: the same scores.
+  {
+    const cls::LabelledPoints ply = cls::read_labelled_points((base / "fzk-haus" / "gt" / "points.ply").string());
+    const cls::Taxonomy taxonomy = cls::Taxonomy::builtin();
+    const std::array<double, 3> crs{691000, 5335000, 500}, scale{0x1p-23, 0x1p-23, 0x1p-23};
+    std::vector<cls::test::HandLasPoint> points(ply.size());
+    nlohmann::json classes = {{"0", nullptr}};
+    for (size_t k = 0; k < taxonomy.classes.size(); ++k) classes[std::to_string(k + 1)] = taxonomy.classes[k].name;
+    for (size_t i = 0; i < ply.size(); ++i) {
+      points[i].x = int32_t(std::llround(ply.positions[i].x / scale[0]));
+      points[i].y = int32_t(std::llround(ply.positions[i].y / scale[1]));
+      points[i].z = int32_t(std::llround(ply.positions[i].z / scale[2]));
+      points[i].classification = uint8_t(ply.labels[i] + 1);
+    }
+    const fs::path las = base / "gt.las", map = base / "map.json", transform = base / "crs_to_scene.json";
+    cls::write_text_atomic(las, cls::test::hand_las(6, points, scale, crs));
+    cls::write_text_atomic(map, nlohmann::json{{"name", "codes + 1"}, {"classes", classes}}.dump());
+    cls::write_text_atomic(transform, nlohmann::json{{"matrix", {{1, 0, 0, -crs[0]}, {0, 1, 0, -crs[1]}, {0, 0, 1, -crs[2]},
+                                                                 {0, 0, 0, 1}}}}.dump());
+    const auto from_las = run_cli("-q evaluate --scene " + (base / "fzk-haus").string() + " --model citylangsplat=" +
+                                  (out / "language" / "citylangsplat").string() + " --labels " + (out / "labels").string() +
+                                  " --gt " + las.string() + " --class-map " + map.string() + " --gt-transform " +
+                                  transform.string() + " --no-images --out " + (base / "eval_las").string());
+    ASSERT_EQ(from_las.status, 0) << from_las.err;
+    nlohmann::json a = read_json(base / "eval_las" / "eval.json")["results"]["citylangsplat"];
+    nlohmann::json b = read_json(out / "eval" / "eval.json")["results"]["citylangsplat"];
+    EXPECT_EQ(a["class_map"], map.string());
+    for (const char* key : {"gt_points", "class_map", "gt_transform"}) a.erase(key), b.erase(key);
+    // Coordinates under 1 m are finer in the PLY's floats than 2^-23 m: the LAS moves them by up to
+    // 6e-8 m, which only the mean match distance sees.
+    for (const char* group : {"3d", "3d_visible"}) {
+      EXPECT_NEAR(a[group]["mean_distance"].get<double>(), b[group]["mean_distance"].get<double>(), 1e-7) << group;
+      a[group].erase("mean_distance"), b[group].erase("mean_distance");
+    }
+    EXPECT_EQ(a.dump(1), b.dump(1));
+  }
+
   const auto second = run_cli(cmd);
   ASSERT_EQ(second.status, 0) << second.err;
   const auto again = read_json(out / "run.json");
-  for (const char* stage : {"labels", "features", "autoencoder", "train-rgb", "render", "evaluate"})
+  for (const char* stage : {"labels", "features", "autoencoder", "autoencoder-langsplat", "train-rgb", "render", "evaluate"})
     EXPECT_EQ(again[stage]["status"], "reused") << stage;
-  for (const char* method : {"citylangsplat", "langsplat"}) {
+  for (const char* method : {"citylangsplat", "langsplat-original"}) {
     EXPECT_EQ(again["train-language"][method]["status"], "reused") << method;
     EXPECT_EQ(again["query"][method]["status"], "reused") << method;
   }
