@@ -38,6 +38,14 @@ std::string images_fingerprint(const Scene& scene) {
 
 std::string file_fingerprint(const fs::path& file) { return file.empty() ? "" : file_fnv1a64_hex(file); }
 
+std::string taxonomy_fingerprint(const Taxonomy& taxonomy) {
+  nlohmann::json classes = nlohmann::json::array();
+  for (const SemanticClass& c : taxonomy.classes)
+    classes.push_back({{"name", c.name}, {"level", c.level}, {"source_types", c.source_types}, {"prompts", c.prompts},
+                       {"color", c.color}});
+  return hex64(fnv1a64(classes.dump()));
+}
+
 std::string features_fingerprint(const fs::path& features_dir) {
   const std::string text = read_text_file(features_dir / "features.json");
   uint64_t h = fnv1a64(text);

@@ -4,12 +4,16 @@
 #include <filesystem>
 #include <string>
 
+#include "citymodel/taxonomy.h"
 #include "scene/scene.h"
 
 namespace cls {
 
 // Every view's name, intrinsics and pose at the loaded resolution.
 std::string views_fingerprint(const Scene& scene);
+// Every field of every class (names, levels, source types, prompts, colours): the built-in taxonomy has no
+// file, and a new release may change it.
+std::string taxonomy_fingerprint(const Taxonomy& taxonomy);
 
 // The views and their images' bytes (what the photometric model and the features see).
 std::string images_fingerprint(const Scene& scene);

@@ -15,7 +15,7 @@ std::vector<Stage> label_stages(RunContext& run) {
   s.outputs = {dir / "objects.json", dir / kLabelsCityTransform, dir / "legend.json"};
   s.inputs = {{"city_model", file_fingerprint(c.city)},
               {"city_transform", file_fingerprint(run.city_transform)},
-              {"taxonomy", file_fingerprint(c.city_options.taxonomy_path)},
+              {"taxonomy", taxonomy_fingerprint(run.city.taxonomy)},
               {"lod", c.city_options.lod},
               {"views", views_fingerprint(run.language_scene)}};
   s.reused_fields = {{"dir", dir.string()}};
