@@ -200,3 +200,28 @@ TEST(Las, AnExtraBytesFieldIsReadByName) {
     EXPECT_NE(message.find("no extra-bytes field 'class' (it has: label"), std::string::npos) << message;
   }
 }
+
+// A real file with extra bytes (PDAL's writer, laspy's test data): arrays and undocumented bytes before the
+// scalar fields. PDAL copied each record's intensity into "Intensity" and its GPS time, truncated, into
+// "Time": the record's own bytes, read here without the reader, are the truth.
+TEST(Las, PdalsExtraBytesReadAsTheRecordsOwnFields) {
+  const std::string path = (kLas / "extrabytes.las").string();
+  const std::string bytes = read_text_file(path);
+  const LasHeader h = read_las_header(path);
+  std::vector<std::string> names;
+  for (const LasExtraField& f : h.extra_fields) names.push_back(f.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"Intensity", "Time"}));  // Colors, Reserved, Flags: not scalars
+  const LasPoints intensity = read_las(path, 1, "Intensity"), time = read_las(path, 1, "Time");
+  ASSERT_EQ(intensity.field.size(), h.point_count);
+  ASSERT_EQ(time.field.size(), h.point_count);
+  for (uint64_t i = 0; i < h.point_count; ++i) {
+    const char* r = bytes.data() + h.point_offset + i * h.record_length;
+    uint16_t record_intensity;
+    double gps_time;
+    std::memcpy(&record_intensity, r + 12, 2);
+    std::memcpy(&gps_time, r + 20, 8);
+    EXPECT_EQ(intensity.field[i], record_intensity) << i;
+    EXPECT_EQ(time.field[i], std::floor(gps_time)) << i;
+  }
+  EXPECT_NE(test::error_of([&] { read_las(path, 1, "Colors"); }).find("(it has: Intensity, Time;"), std::string::npos);
+}
