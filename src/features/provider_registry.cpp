@@ -1,5 +1,7 @@
 #include "features/provider_registry.h"
 
+#include <filesystem>
+
 #include "core/error.h"
 #include "core/run_layout.h"
 #include "features/clip_provider.h"
@@ -55,7 +57,9 @@ std::vector<FeatureProviderInfo> make_registry() {
                {1500, 300, 40},
                [](const ProviderChoice& c, const std::string& scene_dir) {
                  nlohmann::json spec = seeded("image-segments", c);
-                 spec["gt"] = c.gt.empty() ? SceneFiles{scene_dir}.gt_labels().string() : c.gt;
+                 // Absolute: the same scene named relatively or absolutely is the same provider (its stages reused).
+                 const std::filesystem::path gt = c.gt.empty() ? SceneFiles{scene_dir}.gt_labels() : std::filesystem::path(c.gt);
+                 spec["gt"] = std::filesystem::absolute(gt).lexically_normal().string();
                  return spec;
                },
                [](const nlohmann::json& spec, const Taxonomy& taxonomy) -> std::unique_ptr<FeatureProvider> {
