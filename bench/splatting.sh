@@ -16,13 +16,13 @@ cd "$(dirname "$0")/.."
 repo=$(pwd)
 bin=${CLS_BIN:-$repo/build/citylangsplat}
 usage="usage: $0 SCENE --work DIR [--models synthetic (or image-segments)] [--iterations 1000] [--rgb-model PLY (default: train it)] [--ablation]"
-scene=""; work=""; models=synthetic; iterations=1000; rgb=(); ablation=0
+scene=""; work=""; models=synthetic; iterations=1000; rgb=(); geometry=""; ablation=0
 while [ $# -gt 0 ]; do
   case $1 in
     --work) work=$2; shift 2 ;;
     --models) models=$2; shift 2 ;;
     --iterations) iterations=$2; shift 2 ;;
-    --rgb-model) rgb=(--rgb-model "$(readlink -f "$2")"); shift 2 ;;
+    --rgb-model) geometry=$(readlink -f "$2"); rgb=(--rgb-model "$geometry"); shift 2 ;;
     --ablation) ablation=1; shift ;;
     -h|--help) echo "$usage"; exit 0 ;;
     -*) echo "$usage" >&2; exit 2 ;;
@@ -33,13 +33,14 @@ done
 [ -x "$bin" ] || { echo "splatting.sh: $bin not found: build first (cmake --build build)" >&2; exit 1; }
 mkdir -p "$work"
 out=$work/run
+[ -n "$geometry" ] || geometry=$out/rgb/point_cloud.ply  # what run trains when no model is given
 methods=(citylangsplat); baselines=langsplat-original
 [ $ablation = 1 ] && methods+=(langsplat) && baselines+=,langsplat
 "$bin" run "$scene" --out "$out" --models "$models" --baseline "$baselines" --language-iterations "$iterations" "${rgb[@]}"
 models_args=(--model "ours raw (default)=$out/language/citylangsplat")
 for method in "${methods[@]}"; do
   baseline=(); [ $method = langsplat ] && baseline=(--baseline langsplat)
-  "$bin" train-language --scene "$scene" --model "$out/rgb/point_cloud.ply" --features "$out/features" \
+  "$bin" train-language --scene "$scene" --model "$geometry" --features "$out/features" \
     --autoencoder "$out/autoencoder.safetensors" --out "$work/$method-normalised" --iterations "$iterations" \
     --normalize-latents "${baseline[@]}" --resume
 done
