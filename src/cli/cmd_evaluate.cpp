@@ -72,7 +72,11 @@ int cmd_evaluate(int argc, char** argv) {
       .required()
       .bind("gt", options.gt_points,
             "labelled point cloud: PLY (x y z + int class = taxonomy id, -1 = none) or LAS 1.0-1.4 (with --class-map)")
-      .default_text("SCENE/gt/points.ply")
+      .default_text("SCENE/gt/points.ply; none with --gt-images")
+      .bind("gt-images", options.gt_images,
+            "2D ground truth as label images, DIR/<photo name>.png, one channel of 8 or 16 bits at the photo's size "
+            "(taxonomy id + 1, 0 = none, or the --class-map's codes), in place of the cloud's projection; 3D is "
+            "scored only with --gt")
       .bind("gt-class-property", options.gt_class_property,
             "the GT's label field: a PLY vertex property, or in a LAS classification or an extra-bytes field")
       .default_text("class in a PLY, classification in a LAS")
@@ -118,7 +122,9 @@ int cmd_evaluate(int argc, char** argv) {
 
   const Taxonomy taxonomy = taxonomy_path.empty() ? Taxonomy::builtin() : Taxonomy::load(taxonomy_path);
   const Scene scene = load_scene(scene_dir, scene_options);
-  if (options.gt_points.empty()) options.gt_points = SceneFiles{scene_dir}.gt_points().string();
+  if (options.gt_points.empty() && options.gt_images.empty()) options.gt_points = SceneFiles{scene_dir}.gt_points().string();
+  if (!options.gt_images.empty() && !fs::is_directory(options.gt_images))
+    fail(options.gt_images, "--gt-images: not a directory (DIR/<photo name>.png per view)");
   if (options.test_every < 0) throw UsageError("evaluate: --test-every must be >= 0");
   if (!options.labels_dir.empty()) {
     if (!fs::is_directory(options.labels_dir))
@@ -146,7 +152,8 @@ int cmd_evaluate(int argc, char** argv) {
     log_info("evaluate: " + name + " (" + dir + ")");
     options.out_dir = (out / name).string();
     nlohmann::json r = evaluate_model(scene, model, *provider, taxonomy, options);
-    log_info(cat("  2D mIoU ", r["2d"]["miou"].get<double>(), ", 3D mIoU ", r["3d"]["miou"].get<double>()));
+    log_info(cat("  2D mIoU ", r["2d"]["miou"].get<double>(),
+                 r.contains("3d") ? cat(", 3D mIoU ", r["3d"]["miou"].get<double>()) : std::string(", no 3D GT")));
     results.emplace_back(name, std::move(r));
   }
   if (!options.labels_dir.empty()) {
@@ -155,7 +162,7 @@ int cmd_evaluate(int argc, char** argv) {
     results.emplace_back(kLabelMapsMethod, evaluate_label_maps(scene, taxonomy, options));
   }
   const std::string warning = provider ? provider_warning(provider->name()) : "";
-  write_evaluation(out, results, scene_dir, options.gt_points, warning);
+  write_evaluation(out, results, scene_dir, options.gt_points.empty() ? options.gt_images : options.gt_points, warning);
   log_info("evaluate: wrote " + (out / "eval.json").string() + " and " + (out / "eval.md").string());
   return 0;
 }

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <optional>
 #include <opencv2/imgcodecs.hpp>
 #include <set>
 
@@ -19,6 +20,7 @@
 #include "core/progress.h"
 #include "citymodel/city_transform.h"
 #include "eval/class_map.h"
+#include "eval/gt_images.h"
 #include "eval/gt_projection.h"
 #include "eval/labelled_points.h"
 #include "eval/metrics_2d.h"
@@ -37,7 +39,9 @@ namespace {
 constexpr int64_t kDecodeChunk = 1 << 16;
 
 // The evaluated classes (taxonomy ids, ascending): the named ones, or every class in the GT.
-std::vector<int> evaluated_classes(const Taxonomy& taxonomy, const LabelledPoints& gt, const EvaluationOptions& o) {
+// `labels`: every GT label (cloud points, image pixels), taxonomy ids, negative = none.
+std::vector<int> evaluated_classes(const Taxonomy& taxonomy, const std::vector<int32_t>& labels,
+                                   const EvaluationOptions& o) {
   std::vector<int> ids;
   if (!o.classes.empty()) {
     for (const std::string& name : o.classes) {
@@ -48,7 +52,7 @@ std::vector<int> evaluated_classes(const Taxonomy& taxonomy, const LabelledPoint
   } else {
     std::set<int> present;
     int64_t outside = 0;
-    for (int32_t l : gt.labels) {
+    for (int32_t l : labels) {
       if (l < 0) continue;
       if (l >= int(taxonomy.classes.size())) {
         ++outside;
@@ -57,12 +61,13 @@ std::vector<int> evaluated_classes(const Taxonomy& taxonomy, const LabelledPoint
       present.insert(l);
     }
     if (outside > 0)
-      log_warn(cat("evaluate: ", outside, " GT points have a class id outside the taxonomy; they are not evaluated"));
+      log_warn(cat("evaluate: ", outside, " GT labels have a class id outside the taxonomy; they are not evaluated"));
     ids.assign(present.begin(), present.end());
   }
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-  if (ids.empty()) fail(o.gt_points, "no evaluated class (the GT has no labelled point of the taxonomy)");
+  if (ids.empty())
+    fail(o.gt_points.empty() ? o.gt_images : o.gt_points, "no evaluated class (the GT has no label of the taxonomy)");
   return ids;
 }
 
@@ -155,9 +160,11 @@ at::Tensor class_prototypes(FeatureProvider& provider, const Taxonomy& taxonomy,
 
 namespace {
 
-// What every evaluation shares: the GT cloud, the evaluated classes and their names and colours.
+// What every evaluation shares: the GT cloud (empty with label images alone), the class map, the evaluated
+// classes and their names and colours.
 struct EvaluatedClasses {
   LabelledPoints gt;
+  std::optional<ClassMap> map;
   std::vector<int> ids;      // taxonomy ids, ascending
   std::vector<int> eval_of;  // taxonomy id -> evaluated index or -1
   nlohmann::json names = nlohmann::json::array();
@@ -168,20 +175,31 @@ struct EvaluatedClasses {
   }
 };
 
-EvaluatedClasses load_evaluated_classes(const Taxonomy& taxonomy, const EvaluationOptions& options) {
+EvaluatedClasses load_evaluated_classes(const Scene& scene, const Taxonomy& taxonomy, const EvaluationOptions& options) {
   EvaluatedClasses e;
-  if (options.class_map.empty()) {
-    e.gt = read_labelled_points(options.gt_points, options.gt_class_property);
-  } else {
-    const ClassMap map = read_class_map(options.class_map, taxonomy);
-    e.gt = read_labelled_points(options.gt_points, options.gt_class_property, &map);
-  }
+  if (options.gt_points.empty() && options.gt_images.empty())
+    throw UsageError("evaluate: no ground truth: give a labelled cloud, label images, or both");
+  if (!options.class_map.empty()) e.map = read_class_map(options.class_map, taxonomy);
+  const ClassMap* map = e.map ? &*e.map : nullptr;
+  if (!options.gt_points.empty()) e.gt = read_labelled_points(options.gt_points, options.gt_class_property, map);
   if (!options.gt_transform.empty()) {
     // In double: a CRS's large coordinates cancel against the transform's translation before any rounding.
     const CityTransform t = read_city_frame(options.gt_transform).transform;
     for (Vec3d& p : e.gt.positions) p = t.apply(p);
   }
-  e.ids = evaluated_classes(taxonomy, e.gt, options);
+  std::vector<int32_t> labels = e.gt.labels;
+  if (!options.gt_images.empty()) {
+    size_t masks = 0;
+    for (const SceneView& v : scene.views)
+      if (const auto ids = read_gt_image(options.gt_images, v, map)) {
+        ++masks;
+        std::set<int32_t> present(ids->begin(), ids->end());
+        labels.insert(labels.end(), present.begin(), present.end());
+      }
+    if (masks == 0) fail(options.gt_images, "no label image of any view (<photo name>.png)");
+    log_info(cat("evaluate: label images of ", masks, " of ", scene.views.size(), " views"));
+  }
+  e.ids = evaluated_classes(taxonomy, labels, options);
   e.eval_of.assign(taxonomy.classes.size(), -1);
   for (int k = 0; k < e.size(); ++k) {
     e.eval_of[size_t(e.ids[k])] = k;
@@ -249,7 +267,8 @@ nlohmann::json evaluate_2d(const Scene& scene, const EvaluatedClasses& ec, const
   const int K = ec.size();
   GtProjectionOptions popt;
   popt.point_radius = options.gt_point_radius;
-  const double radius = footprint_radius(ec.gt, popt);
+  const bool cloud = ec.gt.size() > 0;
+  const double radius = cloud ? footprint_radius(ec.gt, popt) : 0.0;
   const std::vector<fs::path> label_dirs =
       options.labels_dir.empty() ? std::vector<fs::path>() : label_map_dirs(scene, options.labels_dir);
   // With a split, "2d" scores the held-out views (no photometric or language training saw them) and
@@ -265,15 +284,21 @@ nlohmann::json evaluate_2d(const Scene& scene, const EvaluatedClasses& ec, const
   for (size_t i = 0; i < scene.views.size(); ++i) {
     const SceneView& v = scene.views[i];
     const int H = v.camera.height, W = v.camera.width;
-    cv::Mat winner;
-    const cv::Mat proj = project_gt_labels(ec.gt, v.camera, v.pose, radius, popt, nullptr, &winner);
-    if (visible)
+    std::vector<int32_t> gt_labels(size_t(H) * W, -1);
+    if (cloud) {  // the projected cloud: the 2D GT without label images; which points some pixel sees
+      cv::Mat winner;
+      const cv::Mat proj = project_gt_labels(ec.gt, v.camera, v.pose, radius, popt, nullptr, &winner);
+      if (visible)
+        for (int y = 0; y < H; ++y)
+          for (int x = 0; x < W; ++x)
+            if (const int32_t w = winner.at<int32_t>(y, x); w >= 0) (*visible)[size_t(w)] = 1;
       for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x)
-          if (const int32_t w = winner.at<int32_t>(y, x); w >= 0) (*visible)[size_t(w)] = 1;
-    std::vector<int32_t> gt_labels(size_t(H) * W);
-    for (int y = 0; y < H; ++y)
-      for (int x = 0; x < W; ++x) gt_labels[size_t(y) * W + x] = ec.to_eval(proj.at<int32_t>(y, x));
+        for (int x = 0; x < W; ++x) gt_labels[size_t(y) * W + x] = ec.to_eval(proj.at<int32_t>(y, x));
+    }
+    if (!options.gt_images.empty()) {  // a view without its label image has no 2D GT
+      const auto ids = read_gt_image(options.gt_images, v, ec.map ? &*ec.map : nullptr);
+      for (size_t p = 0; p < gt_labels.size(); ++p) gt_labels[p] = ids ? ec.to_eval((*ids)[p]) : -1;
+    }
 
     nlohmann::json record = {{"name", v.name}};
     const bool scored = options.test_every == 0 || held_out.count(&v);
@@ -306,7 +331,8 @@ nlohmann::json evaluate_2d(const Scene& scene, const EvaluatedClasses& ec, const
     }
     progress.advance();
   }
-  nlohmann::json out = {{"gt_point_radius", radius}, {"2d", all.json(ec.names)}};
+  nlohmann::json out = {{"2d", all.json(ec.names)}};
+  if (cloud) out["gt_point_radius"] = radius;
   out["2d"]["views"] = views;
   out["2d"]["test_every"] = options.test_every;
   out["2d"]["views_scored"] = options.test_every > 0 ? held_out.size() : scene.views.size();
@@ -324,6 +350,7 @@ nlohmann::json common_json(const EvaluatedClasses& ec, const EvaluationOptions& 
           {"labels", options.labels_dir}};
   if (!options.class_map.empty()) j["class_map"] = options.class_map;
   if (!options.gt_transform.empty()) j["gt_transform"] = options.gt_transform;
+  if (!options.gt_images.empty()) j["gt_images"] = options.gt_images;
   return j;
 }
 
@@ -334,7 +361,7 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
   if (options.level_rule != "fallback" && options.level_rule != "langsplat")
     throw UsageError("evaluate: level rule must be 'fallback' or 'langsplat', got '" + options.level_rule + "'");
   at::NoGradGuard no_grad;
-  const EvaluatedClasses ec = load_evaluated_classes(taxonomy, options);
+  const EvaluatedClasses ec = load_evaluated_classes(scene, taxonomy, options);
   const int K = ec.size();
   if (options.test_every > 0 && model.info.contains("test_every") && model.info["test_every"] != options.test_every)
     log_warn(cat("evaluate: the model was trained holding out every ", model.info["test_every"].dump(),
@@ -385,72 +412,74 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
   nlohmann::json result = evaluate_2d(scene, ec, options, predict, &visible, {"relevancy"});
   result["relevance"] = "cosine";
 
-  // ---- 3D: every Gaussian's decoded latent argmax over the prototypes; GT points matched to centres.
-  const int64_t N = model.gaussians.size();
-  std::map<int, at::Tensor> gcos;
-  for (int l : used_levels) gcos[l] = gaussian_cosines(model, l, prototypes);
-  std::vector<at::Tensor> cols;
-  nlohmann::json levels_3d = nlohmann::json::array();
-  for (int k = 0; k < K; ++k) {
-    const int level = answering_level(class_level[k], langsplat_rule, levels, [&](int l) {
-      return N > 0 ? gcos[l].select(1, k).max().item<double>() : 0.0;
-    });
-    levels_3d.push_back(level);
-    cols.push_back(gcos[level].select(1, k));
-  }
-  std::vector<int32_t> centre_labels(size_t(N), 0);
-  if (N > 0) {
-    const at::Tensor arg = torch::stack(cols, 1).argmax(1).to(torch::kInt32).contiguous();
-    std::copy(arg.data_ptr<int32_t>(), arg.data_ptr<int32_t>() + N, centre_labels.begin());
-  }
-  const at::Tensor means = model.gaussians.means.to(torch::kCPU, torch::kFloat64).contiguous();
-  std::vector<Vec3d> centres(static_cast<size_t>(N));
-  for (int64_t i = 0; i < N; ++i) {
-    const double* m = means.data_ptr<double>() + 3 * i;
-    centres[size_t(i)] = {m[0], m[1], m[2]};
-  }
-  std::vector<int32_t> gt_eval(ec.gt.size());
-  for (size_t i = 0; i < ec.gt.size(); ++i) gt_eval[i] = ec.to_eval(ec.gt.labels[i]);
-  auto scores_3d_json = [&](const std::vector<int32_t>& labels) {
-    const GtMatching matching = match_gt(ec.gt.positions, labels, centres, options.match_radius);
-    const Scores3d s3 = score_matched(matching, centre_labels, K);
-    // What these Gaussians allow: the labelling that gets the most matched GT points right.
-    const Scores3d best = score_matched(matching, best_centre_labels(matching, K), K);
-    const std::vector<int64_t> support = centres_per_class(matching, K);
-    auto per_class_of = [&](const Scores3d& s) {
-      nlohmann::json per_class = nlohmann::json::object();
-      for (int k = 0; k < K; ++k) {
-        nlohmann::json c = scores_json(s.scores.per_class[size_t(k)]);
-        c["gaussians"] = support[size_t(k)];
-        per_class[ec.names[k].get<std::string>()] = c;
-      }
-      return per_class;
+  if (ec.gt.size() > 0) {  // 3D needs a labelled cloud (label images alone score 2D only)
+    // ---- 3D: every Gaussian's decoded latent argmax over the prototypes; GT points matched to centres.
+    const int64_t N = model.gaussians.size();
+    std::map<int, at::Tensor> gcos;
+    for (int l : used_levels) gcos[l] = gaussian_cosines(model, l, prototypes);
+    std::vector<at::Tensor> cols;
+    nlohmann::json levels_3d = nlohmann::json::array();
+    for (int k = 0; k < K; ++k) {
+      const int level = answering_level(class_level[k], langsplat_rule, levels, [&](int l) {
+        return N > 0 ? gcos[l].select(1, k).max().item<double>() : 0.0;
+      });
+      levels_3d.push_back(level);
+      cols.push_back(gcos[level].select(1, k));
+    }
+    std::vector<int32_t> centre_labels(size_t(N), 0);
+    if (N > 0) {
+      const at::Tensor arg = torch::stack(cols, 1).argmax(1).to(torch::kInt32).contiguous();
+      std::copy(arg.data_ptr<int32_t>(), arg.data_ptr<int32_t>() + N, centre_labels.begin());
+    }
+    const at::Tensor means = model.gaussians.means.to(torch::kCPU, torch::kFloat64).contiguous();
+    std::vector<Vec3d> centres(static_cast<size_t>(N));
+    for (int64_t i = 0; i < N; ++i) {
+      const double* m = means.data_ptr<double>() + 3 * i;
+      centres[size_t(i)] = {m[0], m[1], m[2]};
+    }
+    std::vector<int32_t> gt_eval(ec.gt.size());
+    for (size_t i = 0; i < ec.gt.size(); ++i) gt_eval[i] = ec.to_eval(ec.gt.labels[i]);
+    auto scores_3d_json = [&](const std::vector<int32_t>& labels) {
+      const GtMatching matching = match_gt(ec.gt.positions, labels, centres, options.match_radius);
+      const Scores3d s3 = score_matched(matching, centre_labels, K);
+      // What these Gaussians allow: the labelling that gets the most matched GT points right.
+      const Scores3d best = score_matched(matching, best_centre_labels(matching, K), K);
+      const std::vector<int64_t> support = centres_per_class(matching, K);
+      auto per_class_of = [&](const Scores3d& s) {
+        nlohmann::json per_class = nlohmann::json::object();
+        for (int k = 0; k < K; ++k) {
+          nlohmann::json c = scores_json(s.scores.per_class[size_t(k)]);
+          c["gaussians"] = support[size_t(k)];
+          per_class[ec.names[k].get<std::string>()] = c;
+        }
+        return per_class;
+      };
+      return nlohmann::json{{"coverage", s3.coverage},
+                            {"mean_distance", s3.mean_distance},
+                            {"miou", s3.scores.miou},
+                            {"wiou", s3.scores.wiou},
+                            {"accuracy", s3.scores.accuracy},
+                            {"classes_in_miou", s3.scores.classes_in_miou},
+                            {"gt_points", s3.gt_points},
+                            {"matched", s3.matched},
+                            {"gaussians", N},
+                            {"levels", levels_3d},
+                            {"per_class", per_class_of(s3)},
+                            {"confusion", confusion_json(s3.confusion)},
+                            {"best_labelling",
+                             {{"miou", best.scores.miou},
+                              {"wiou", best.scores.wiou},
+                              {"accuracy", best.scores.accuracy},
+                              {"per_class", per_class_of(best)}}}};
     };
-    return nlohmann::json{{"coverage", s3.coverage},
-                          {"mean_distance", s3.mean_distance},
-                          {"miou", s3.scores.miou},
-                          {"wiou", s3.scores.wiou},
-                          {"accuracy", s3.scores.accuracy},
-                          {"classes_in_miou", s3.scores.classes_in_miou},
-                          {"gt_points", s3.gt_points},
-                          {"matched", s3.matched},
-                          {"gaussians", N},
-                          {"levels", levels_3d},
-                          {"per_class", per_class_of(s3)},
-                          {"confusion", confusion_json(s3.confusion)},
-                          {"best_labelling",
-                           {{"miou", best.scores.miou},
-                            {"wiou", best.scores.wiou},
-                            {"accuracy", best.scores.accuracy},
-                            {"per_class", per_class_of(best)}}}};
-  };
-  // The paper's 3D scores use every GT point; a synthetic cloud also samples surfaces no view sees
-  // (e.g. a building's ground surface), whose Gaussians no loss reaches: "3d_visible" keeps the GT
-  // points that are the nearest point at some pixel of some view.
-  result["3d"] = scores_3d_json(gt_eval);
-  for (size_t i = 0; i < ec.gt.size(); ++i)
-    if (!visible[i]) gt_eval[i] = -1;
-  result["3d_visible"] = scores_3d_json(gt_eval);
+    // The paper's 3D scores use every GT point; a synthetic cloud also samples surfaces no view sees
+    // (e.g. a building's ground surface), whose Gaussians no loss reaches: "3d_visible" keeps the GT
+    // points that are the nearest point at some pixel of some view.
+    result["3d"] = scores_3d_json(gt_eval);
+    for (size_t i = 0; i < ec.gt.size(); ++i)
+      if (!visible[i]) gt_eval[i] = -1;
+    result["3d_visible"] = scores_3d_json(gt_eval);
+  }
 
   nlohmann::json levels_json = nlohmann::json::array();
   for (int l : class_level) levels_json.push_back(l);
@@ -466,7 +495,7 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
 nlohmann::json evaluate_label_maps(const Scene& scene, const Taxonomy& taxonomy, const EvaluationOptions& options) {
   if (options.labels_dir.empty()) throw UsageError("evaluate: the label-map reference needs the label maps' directory");
   check_label_legend(options.labels_dir, taxonomy);
-  const EvaluatedClasses ec = load_evaluated_classes(taxonomy, options);
+  const EvaluatedClasses ec = load_evaluated_classes(scene, taxonomy, options);
   const std::vector<fs::path> dirs = label_map_dirs(scene, options.labels_dir);
   // Each pixel takes its finest level's class among the evaluated ones (a window pixel scores as window
   // when windows are evaluated, as its wall otherwise); no evaluated class at any level = no prediction.

@@ -19,6 +19,8 @@ struct EvaluationOptions {
   std::string gt_points;          // labelled PLY (x y z + int "class" = taxonomy id, -1 = unlabelled) or LAS
   std::string gt_class_property;  // its label field ("": "class" in a PLY, "classification" in a LAS)
   std::string class_map;          // its label values -> taxonomy classes (eval/class_map.h); "" = taxonomy ids
+  std::string gt_images;          // 2D GT as label images, one per photo (eval/gt_images.h), instead of the cloud's
+                                  // projection; with no cloud (gt_points "") there are no 3D scores
   std::string gt_transform;       // a city transform JSON moving the GT from the city model's CRS into the scene
                                   // frame (the run's labels/city_transform.json); "" = the GT is in the scene frame
   std::vector<std::string> classes;  // evaluated class names; empty = every class present in the GT

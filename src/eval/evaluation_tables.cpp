@@ -142,7 +142,7 @@ ResultTable per_class_table(const Methods& methods) {
 
 std::vector<ResultTable> evaluation_tables(const Methods& methods) {
   std::vector<ResultTable> tables;
-  tables.push_back(method_table("table-1", "Table 1: 2D (projected GT; percentages)",
+  tables.push_back(method_table("table-1", "Table 1: 2D (the GT cloud projected, or label images; percentages)",
                                 "Cov. GT: pixels with a valid GT label; Cov.: valid GT pixels with a prediction above "
                                 "the threshold; scores over those.",
                                 methods, columns_2d("2d")));
@@ -159,14 +159,17 @@ std::vector<ResultTable> evaluation_tables(const Methods& methods) {
         "The held-out views of Table 1, each class's map LangSplat's relevancy against its canonical phrases "
         "(object, things, stuff, texture) instead of the cosine, then the same normalisation, argmax and threshold.",
         methods, columns_2d("2d_relevancy")));
-  tables.push_back(method_table(
-      "table-2", "Table 2: 3D (nearest Gaussian centre)",
-      "Cov.: GT points with a Gaussian centre within the radius (%); Dist.: mean match distance (scene units); best "
-      "labelling: the mIoU when every Gaussian holds the majority class of the GT points matched to it (the "
-      "labelling with the highest accuracy these Gaussians allow; a reference, not compared).",
-      methods, columns_3d("3d")));
-  tables.push_back(method_table("table-2b", "Table 2b: 3D over the GT points visible in some view", "", methods,
-                                columns_3d("3d_visible")));
+  // No 3D tables without a labelled cloud (label images alone).
+  if (std::any_of(methods.begin(), methods.end(), [](const auto& m) { return m.second.contains("3d"); })) {
+    tables.push_back(method_table(
+        "table-2", "Table 2: 3D (nearest Gaussian centre)",
+        "Cov.: GT points with a Gaussian centre within the radius (%); Dist.: mean match distance (scene units); "
+        "best labelling: the mIoU when every Gaussian holds the majority class of the GT points matched to it (the "
+        "labelling with the highest accuracy these Gaussians allow; a reference, not compared).",
+        methods, columns_3d("3d")));
+    tables.push_back(method_table("table-2b", "Table 2b: 3D over the GT points visible in some view", "", methods,
+                                  columns_3d("3d_visible")));
+  }
   tables.push_back(per_class_table(methods));
   return tables;
 }

@@ -9,9 +9,11 @@
 
 #include <cmath>
 #include <filesystem>
+#include <opencv2/imgcodecs.hpp>
 #include <set>
 
 #include "cli_runner.h"
+#include "error_of.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "eval/evaluation.h"
@@ -445,4 +447,58 @@ TEST(Evaluation, CliWritesJsonAndMarkdownForTwoModels) {
                                        " --out " + out.string());
   EXPECT_EQ(no_labels.status, 1);
   EXPECT_NE(no_labels.err.find("nowhere"), std::string::npos) << no_labels.err;
+}
+
+// 2D ground truth as label images (one per photo): synth's exact labels (taxonomy id + 1) in place of the
+// cloud's projection. The scored GT pixels are those of the PNGs, counted here with OpenCV; the same
+// images with other codes through a class map score the same; no cloud, no 3D.
+TEST(Evaluation, LabelImagesAreThe2dGroundTruth) {
+  Fixture& f = fixture();
+  const fs::path labels = f.dir / "scene" / "gt" / "labels";
+  EvaluationOptions o = options();
+  o.gt_points.clear();
+  o.gt_images = labels.string();
+  const nlohmann::json r = evaluate_model(f.scene, make_model(), *f.provider, f.taxonomy, o);
+  EXPECT_FALSE(r.contains("3d"));
+  std::set<int> evaluated;
+  for (const auto& name : r["classes"]) evaluated.insert(f.taxonomy.find(name.get<std::string>()));
+  int64_t labelled = 0;
+  const fs::path coded = f.dir / "coded_labels";
+  fs::create_directories(coded);
+  for (const SceneView& v : f.scene.views) {
+    const cv::Mat m = cv::imread((labels / v.name).string(), cv::IMREAD_UNCHANGED);
+    ASSERT_FALSE(m.empty()) << v.name;
+    cv::Mat m16;
+    m.convertTo(m16, CV_16U);
+    cv::Mat codes(m16.size(), CV_16U);
+    for (int y = 0; y < m16.rows; ++y)
+      for (int x = 0; x < m16.cols; ++x) {
+        const int value = m16.at<uint16_t>(y, x);
+        labelled += value > 0 && evaluated.count(value - 1);
+        codes.at<uint16_t>(y, x) = uint16_t(value ? 10 * value + 5 : 0);
+      }
+    cv::imwrite((coded / v.name).string(), codes);
+  }
+  EXPECT_EQ(r["2d"]["valid_gt_pixels"].get<int64_t>(), labelled);
+  EXPECT_GT(r["2d"]["wiou"].get<double>(), 0.9);  // the correct field against exact labels
+  nlohmann::json map = {{"classes", {{"0", nullptr}}}};
+  for (size_t k = 0; k < f.taxonomy.classes.size(); ++k)
+    map["classes"][std::to_string(10 * (k + 1) + 5)] = f.taxonomy.classes[k].name;
+  const fs::path map_file = f.dir / "codes_map.json";
+  write_text_atomic(map_file, map.dump());
+  EvaluationOptions mapped = o;
+  mapped.gt_images = coded.string();
+  mapped.class_map = map_file.string();
+  const nlohmann::json m = evaluate_model(f.scene, make_model(), *f.provider, f.taxonomy, mapped);
+  EXPECT_EQ(m["2d"].dump(), r["2d"].dump());
+  // A mask of another size than its photo names the file.
+  const SceneView& first = f.scene.views.front();
+  const fs::path odd = f.dir / "odd_labels";
+  fs::create_directories(odd);
+  cv::imwrite((odd / first.name).string(), cv::Mat(7, 9, CV_16U, cv::Scalar(1)));
+  EvaluationOptions bad = o;
+  bad.gt_images = odd.string();
+  const std::string message = test::error_of([&] { evaluate_model(f.scene, make_model(), *f.provider, f.taxonomy, bad); });
+  EXPECT_NE(message.find((odd / first.name).string()), std::string::npos) << message;
+  EXPECT_NE(message.find("label image of 9x7"), std::string::npos) << message;
 }

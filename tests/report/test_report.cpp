@@ -113,7 +113,12 @@ TEST(ReportTables, BestValuesBoldReferenceRowsNeverCompared) {
   const std::vector<ResultTable> tables = evaluation_tables({{"A", a}, {"B", b}, {"labels", ref}});
   std::set<std::string> ids;
   for (const ResultTable& t : tables) ids.insert(t.id);
-  EXPECT_EQ(ids, (std::set<std::string>{"table-1", "table-2", "table-2b", "table-3"})) << "no 2d_covered: no Table 1b";
+  EXPECT_EQ(ids, (std::set<std::string>{"table-1", "table-3"})) << "no 2d_covered: no Table 1b; no 3d: no Table 2";
+  json with_3d = a;
+  with_3d["3d"] = {{"miou", 0.4}};
+  std::set<std::string> ids_3d;
+  for (const ResultTable& t : evaluation_tables({{"A", with_3d}, {"labels", ref}})) ids_3d.insert(t.id);
+  EXPECT_EQ(ids_3d, (std::set<std::string>{"table-1", "table-2", "table-2b", "table-3"}));
   const ResultTable& t1 = tables[0];
   ASSERT_EQ(t1.rows.size(), 3u);
   EXPECT_EQ(t1.header[3], "mIoU");
