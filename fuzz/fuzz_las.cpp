@@ -48,7 +48,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     }
     if (parsed != streamed) std::abort();
     if (parsed && (a.field.size() != a.xyz.size() || b.field.size() != a.field.size() ||
-                   std::memcmp(a.field.data(), b.field.data(), a.field.size() * sizeof(double)) != 0))
+                   (!a.field.empty() &&
+                    std::memcmp(a.field.data(), b.field.data(), a.field.size() * sizeof(double)) != 0)))
       std::abort();
   }
   if (parsed != streamed || a.xyz.size() != b.xyz.size() || a.rgb != b.rgb || a.classification != b.classification)

@@ -39,7 +39,8 @@ uint32_t extra_size(int type, int options) {
 
 // The Extra Bytes VLR (user "LASF_Spec", record 4: 192-byte descriptors, LAS 1.4 R15 table 24) among the
 // VLRs in `region` (the bytes before the points); the fields follow the format's own bytes in order.
-// Fields of other or unknown types only advance the offset; a VLR chain that leaves the region ends it.
+// Unnamed fields and fields of other types only advance the offset; a VLR chain that leaves the region
+// ends it.
 void parse_extra_bytes(std::string_view region, uint16_t header_size, LasHeader& h, const std::string& name) {
   const uint32_t vlr_count = get<uint32_t>(region.data() + 100);
   size_t at = header_size;
@@ -59,9 +60,10 @@ void parse_extra_bytes(std::string_view region, uint16_t header_size, LasHeader&
         const uint32_t size = extra_size(type, options);
         if (type > 30 || size == 0)
           fail(name, "LAS Extra Bytes field " + std::to_string(d) + " has the unknown data type " + std::to_string(type));
-        if (type >= 1 && type <= 10) {
+        const std::string field_name(e + 4, strnlen(e + 4, 32));
+        if (type >= 1 && type <= 10 && !field_name.empty()) {  // an unnamed field cannot be asked for
           LasExtraField f;
-          f.name.assign(e + 4, strnlen(e + 4, 32));
+          f.name = field_name;
           f.data_type = type;
           f.offset = offset;
           if (options & 8) f.scale = get<double>(e + 112);
