@@ -1,10 +1,7 @@
 #include "eval/labelled_points.h"
 
-#include <algorithm>
-#include <cctype>
 #include <climits>
 #include <cstring>
-#include <filesystem>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -12,23 +9,14 @@
 #include "scene/las.h"
 
 namespace cls {
-namespace {
 
-bool is_las(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext == ".las" || ext == ".laz";
-}
-
-}  // namespace
-
-std::string default_label_field(const std::string& path) { return is_las(path) ? "classification" : "class"; }
+std::string default_label_field(const std::string& path) { return is_las_path(path) ? "classification" : "class"; }
 
 LabelledPoints read_labelled_points(const std::string& path, const std::string& field_arg, const ClassMap* map) {
   const std::string field = field_arg.empty() ? default_label_field(path) : field_arg;
   LabelledPoints out;
   std::vector<double> values;
-  if (is_las(path)) {
+  if (is_las_path(path)) {
     if (!map)
       fail(path, "a LAS ground truth needs a class map (--class-map FILE) from its " + field +
                      " values to the taxonomy's classes (data/class-maps/ has ZAHA's)");

@@ -8,6 +8,7 @@
 
 #include "core/endian.h"
 #include "core/error.h"
+#include "core/strings.h"
 
 namespace cls {
 namespace {
@@ -215,6 +216,11 @@ LasPoints parse_las(std::string_view bytes, const std::string& name, uint64_t st
     decode_point(bytes.data() + h.point_offset + i * h.record_length, h, extra, out, rgb16, name);
   finish_colours(out, rgb16);
   return out;
+}
+
+bool is_las_path(const std::string& path) {
+  const std::string ext = ascii_lower(std::filesystem::path(path).extension().string());
+  return ext == ".las" || ext == ".laz";
 }
 
 LasHeader read_las_header(const std::string& path) {

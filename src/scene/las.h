@@ -49,6 +49,8 @@ struct LasPoints {
 // point format, LAZ, or a coordinate that is not finite is a cls::Error. `field` names an extra-bytes
 // field to read into LasPoints::field ("" none); a file without it is a cls::Error listing those it has.
 LasPoints parse_las(std::string_view bytes, const std::string& name, uint64_t stride = 1, const std::string& field = "");
+// Whether `path` names a LAS or LAZ file, by its extension (any case).
+bool is_las_path(const std::string& path);
 // Reads the header and its VLRs only, then the points as parse_las does.
 LasHeader read_las_header(const std::string& path);
 LasPoints read_las(const std::string& path, uint64_t stride = 1, const std::string& field = "");

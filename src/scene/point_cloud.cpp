@@ -55,7 +55,7 @@ PointCloud read_las_cloud(const std::string& path, uint64_t max_points) {
 PointCloud read_point_cloud(const std::string& path, uint64_t max_points) {
   const std::string ext = ascii_lower(std::filesystem::path(path).extension().string());
   if (ext == ".ply") return read_ply_cloud(path, max_points);
-  if (ext == ".las" || ext == ".laz") return read_las_cloud(path, max_points);
+  if (is_las_path(path)) return read_las_cloud(path, max_points);
   fail(path, "point cloud format '" + ext + "' is not read (LAS or PLY)");
 }
 
