@@ -23,7 +23,7 @@ using torch::autograd::variable_list;
 template <class T>
 SplatInputs<T> make_inputs(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
                            const at::Tensor& opacities, const at::Tensor& values, int sh_degree,
-                           const at::Tensor& background) {
+                           const at::Tensor& background, const at::Tensor& index, int channels) {
   SplatInputs<T> in;
   in.n = static_cast<int>(means.size(0));
   in.means = means.data_ptr<T>();
@@ -36,7 +36,8 @@ SplatInputs<T> make_inputs(const at::Tensor& means, const at::Tensor& scales, co
     in.channels = 3;
   } else {
     in.features = values.data_ptr<T>();
-    in.channels = static_cast<int>(values.size(1));
+    in.channels = channels;
+    if (index.numel() > 0) in.feature_index = index.data_ptr<int32_t>(), in.nnz = static_cast<int>(values.size(1));
   }
   in.background = background.defined() ? background.data_ptr<T>() : nullptr;
   return in;
@@ -83,13 +84,14 @@ CudaSplatArgs cuda_args(const SplatCamera<float>& cam, const at::Tensor& means, 
 
 class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
  public:
-  // values: SH N x (degree+1)^2 x 3 when sh_degree >= 0, else features N x C. All contiguous, one dtype.
+  // values: SH N x (degree+1)^2 x 3 when sh_degree >= 0, else features N x C, or with a non-empty `index`
+  // (int32 N x K, CPU only) sparse features N x K at those channels of C. All contiguous, one dtype.
   static variable_list forward(AutogradContext* ctx, at::Tensor means, at::Tensor scales, at::Tensor quats,
-                               at::Tensor opacities, at::Tensor values, at::Tensor means2d, int64_t sh_degree,
-                               const RasterizeSettings* settings) {
+                               at::Tensor opacities, at::Tensor values, at::Tensor means2d, at::Tensor index,
+                               int64_t sh_degree, int64_t channels, const RasterizeSettings* settings) {
     (void)means2d;
     const auto& cam = settings->camera;
-    const int C = sh_degree >= 0 ? 3 : static_cast<int>(values.size(1));
+    const int C = static_cast<int>(channels);
     const auto opts = means.options();
     at::Tensor image = torch::empty({cam.height, cam.width, C}, opts);
     at::Tensor alpha = torch::empty({cam.height, cam.width}, opts);
@@ -117,14 +119,15 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
       // The forward state is plain C++; a byte tensor whose deleter frees it carries it to backward.
       holder = torch::from_blob(state, {1}, [](void* p) { delete static_cast<SplatForwardState<T>*>(p); },
                                 torch::TensorOptions().dtype(torch::kUInt8));
-      const SplatInputs<T> in = make_inputs<T>(means, scales, quats, opacities, values, int(sh_degree), bg);
+      const SplatInputs<T> in = make_inputs<T>(means, scales, quats, opacities, values, int(sh_degree), bg, index, C);
       rasterize_forward_cpu(make_splat_camera<T>(cam, settings->pose), in, image.data_ptr<T>(),
                             alpha.data_ptr<T>(), depth.data_ptr<T>(), *state);
       int32_t* r = radii.data_ptr<int32_t>();
       for (int i = 0; i < in.n; ++i) r[i] = state->proj[i].visible ? state->proj[i].radius : 0;
     });
     }
-    ctx->save_for_backward({means, scales, quats, opacities, values});
+    ctx->save_for_backward({means, scales, quats, opacities, values, index});
+    ctx->saved_data["channels"] = channels;
     ctx->saved_data["state"] = holder;
     ctx->saved_data["sh_degree"] = sh_degree;
     ctx->saved_data["background"] = bg;
@@ -136,7 +139,9 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
 
   static variable_list backward(AutogradContext* ctx, variable_list grad_out) {
     const auto saved = ctx->get_saved_variables();
-    const at::Tensor &means = saved[0], &scales = saved[1], &quats = saved[2], &opacities = saved[3], &values = saved[4];
+    const at::Tensor &means = saved[0], &scales = saved[1], &quats = saved[2], &opacities = saved[3], &values = saved[4],
+                     &index = saved[5];
+    const int channels = static_cast<int>(ctx->saved_data["channels"].toInt());
     const int sh_degree = static_cast<int>(ctx->saved_data["sh_degree"].toInt());
     const at::Tensor bg = ctx->saved_data["background"].toTensor();
     at::Tensor abs_grad = ctx->saved_data["abs_grad"].toTensor();
@@ -176,7 +181,7 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
     AT_DISPATCH_FLOATING_TYPES(means.scalar_type(), "rasterize_backward", [&] {
       using T = scalar_t;
       const auto& state = *static_cast<const SplatForwardState<T>*>(state_ptr);
-      const SplatInputs<T> in = make_inputs<T>(means, scales, quats, opacities, values, sh_degree, bg);
+      const SplatInputs<T> in = make_inputs<T>(means, scales, quats, opacities, values, sh_degree, bg, index, channels);
       SplatGradients<T> g;
       fill(g, T{});
       auto ptr = [](const at::Tensor& t) -> const T* { return t.defined() ? t.data_ptr<T>() : nullptr; };
@@ -185,7 +190,7 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
     }
     if (abs_grad.defined()) abs_grad.add_(d_abs.to(abs_grad.scalar_type()));
     if (!has_means2d) d_mean2d = at::Tensor();
-    return {d_means, d_scales, d_quats, d_opac, d_values, d_mean2d, at::Tensor(), at::Tensor()};
+    return {d_means, d_scales, d_quats, d_opac, d_values, d_mean2d, at::Tensor(), at::Tensor(), at::Tensor(), at::Tensor()};
   }
 };
 
@@ -215,18 +220,21 @@ void check_inputs(const at::Tensor& means, const at::Tensor& scales, const at::T
     throw Error("rasterize: camera needs a positive size and focal lengths");
 }
 
+// index: int32 N x K for sparse features (values N x K at channels of C), undefined otherwise.
 RasterizeOutput run(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
                     const at::Tensor& opacities, const at::Tensor& values, int sh_degree, const at::Tensor& means2d,
-                    const RasterizeSettings& s) {
-  const int C = sh_degree >= 0 ? 3 : static_cast<int>(values.size(1));
+                    const RasterizeSettings& s, const at::Tensor& index = {}, int channels = 0) {
+  const int C = sh_degree >= 0 ? 3 : index.defined() ? channels : static_cast<int>(values.size(1));
   if (s.background.defined() && s.background.numel() != C)
     throw Error("rasterize: background must have " + std::to_string(C) + " values");
   if (s.mean2d_abs_grad.defined() && s.mean2d_abs_grad.sizes() != at::IntArrayRef({means.size(0), 2}))
     throw Error("rasterize: mean2d_abs_grad must be N x 2");
   // An undefined means2d still needs a tensor slot in apply(); a zero-size one gets no gradient.
   const at::Tensor m2d = means2d.defined() ? means2d : torch::zeros({0}, means.options());
+  const at::Tensor idx = index.defined() ? index.contiguous() : torch::zeros({0}, means.options().dtype(torch::kInt32));
   auto out = RasterizeFunction::apply(means.contiguous(), scales.contiguous(), quats.contiguous(),
-                                      opacities.contiguous(), values.contiguous(), m2d, int64_t(sh_degree), &s);
+                                      opacities.contiguous(), values.contiguous(), m2d, idx, int64_t(sh_degree),
+                                      int64_t(C), &s);
   return {out[0], out[1], out[2], out[3]};
 }
 
@@ -253,6 +261,34 @@ RasterizeOutput rasterize_features(const at::Tensor& means, const at::Tensor& sc
     throw Error("rasterize_features: features must be N x C, got " + c10::str(features.sizes()));
   if (features.scalar_type() != means.scalar_type()) throw Error("rasterize_features: features must have the means' dtype");
   return run(means, scales, quats, opacities, features, -1, means2d, settings);
+}
+
+}  // namespace cls
+
+namespace cls {
+
+RasterizeOutput rasterize_sparse_features(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
+                                          const at::Tensor& opacities, const at::Tensor& weights,
+                                          const at::Tensor& indices, int channels, const at::Tensor& means2d,
+                                          const RasterizeSettings& settings) {
+  check_inputs(means, scales, quats, opacities, settings);
+  if (weights.dim() != 2 || weights.size(0) != means.size(0) || weights.size(1) < 1 || indices.sizes() != weights.sizes())
+    throw Error("rasterize_sparse_features: weights and indices must both be N x K, got " + c10::str(weights.sizes()) +
+                " and " + c10::str(indices.sizes()));
+  if (weights.scalar_type() != means.scalar_type())
+    throw Error("rasterize_sparse_features: weights must have the means' dtype");
+  if (indices.scalar_type() != torch::kInt32 || indices.device() != means.device())
+    throw Error("rasterize_sparse_features: indices must be int32 on the means' device");
+  if (channels < 1) throw Error("rasterize_sparse_features: channels must be positive");
+  if (indices.numel() > 0 && (indices.min().item<int32_t>() < 0 || indices.max().item<int32_t>() >= channels))
+    throw Error("rasterize_sparse_features: an index lies outside [0, " + std::to_string(channels) + ")");
+  if (means.is_cuda()) {
+    // No sparse CUDA kernel yet: the weights scattered into N x C dense features (the same image).
+    const at::Tensor dense = torch::zeros({means.size(0), channels}, weights.options())
+                                 .scatter_add(1, indices.to(torch::kLong), weights);
+    return rasterize_features(means, scales, quats, opacities, dense, means2d, settings);
+  }
+  return run(means, scales, quats, opacities, weights, -1, means2d, settings, indices, channels);
 }
 
 }  // namespace cls

@@ -152,6 +152,12 @@ void gather_tile(const SplatForwardState<T>& st, const TileGaussian<T>* gaussian
   for (int k = begin; k < end; ++k) out[k - begin] = gaussians[st.ids[k]];
 }
 
+// Values per Gaussian: the channels, or a sparse Gaussian's weights.
+template <class T>
+int value_count(const SplatInputs<T>& in) {
+  return in.feature_index ? in.nnz : in.use_sh() ? 3 : in.channels;
+}
+
 // What every tile of a pass reads.
 template <class T>
 struct TileInputs {
@@ -161,6 +167,8 @@ struct TileInputs {
   const T* values;
   int C;
   const T* bg;
+  const int32_t* index;  // sparse values: their channels (SplatInputs::feature_index), else null
+  int nv;                // values per Gaussian: C, or the sparse values' count
 };
 
 // What every tile of a forward pass writes.
@@ -277,9 +285,12 @@ template <class T, int kC>
       const M stop = pass & (test_T < T(kTransmittanceMin));
       pass &= ~stop;
       const V w = pass ? a * Tr : V{};
-      const T* v = values + static_cast<size_t>(g.id) * nc;
+      const T* v = values + static_cast<size_t>(g.id) * j.nv;
       if (kC > 0) {
         for (int c = 0; c < nc; ++c) acc[c] += pass ? w * v[c] : V{};
+      } else if (j.index) {  // sparse: w = 0 in the lanes that do not pass
+        const int32_t* idx = j.index + static_cast<size_t>(g.id) * j.nv;
+        for (int k = 0; k < j.nv; ++k) acc[idx[k]] += w * v[k];
       } else {  // (a NaN value reaches the sub-tile's other lanes here: NaN features are an error upstream)
         batch_w[batched] = w, batch_v[batched++] = v;
         if (batched == kBatch) add_weighted_values(acc, batch_w, batch_v, batched, nc), batched = 0;
@@ -358,7 +369,8 @@ template <class T, int kC>
   static_assert(9 + kC <= kLanes, "buf's fixed-channel entries are summed as one vector of lanes");
   const int nc = kC > 0 ? kC : j.C;
   const int S = 9 + kC;
-  const int VS = kC > 0 ? 0 : (nc + kLanes - 1) / kLanes;  // value_buf rows per entry
+  const int nv = j.nv;
+  const int VS = kC > 0 ? 0 : (nv + kLanes - 1) / kLanes;  // value_buf rows per entry
   const int tx = tile % cam.tiles_x(), ty = tile / cam.tiles_x();
   const int x0 = tx * kTileSize, y0 = ty * kTileSize;
   const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
@@ -421,13 +433,16 @@ template <class T, int kC>
       touched[k] = 1;
       V q[kLanes] = {};  // this entry's gradients per lane in buf's order (a few channels included)
       if (geometry) {
-        const T* v = values + static_cast<size_t>(g.id) * nc;
+        const T* v = values + static_cast<size_t>(g.id) * nv;
         // dC/dalpha_i . dL/dC = T_i (v_i - rec_i) . dpix, where rec_i = sum over later contributors j of
         // v_j alpha_j prod_{i<l<j} (1 - alpha_l). rec is linear in the values, so only its dot product
         // with dpix is carried: rec_dot_i = a_{i+1} (v_{i+1} . dpix) + (1 - a_{i+1}) rec_dot_{i+1}.
         V v_dot = V{};
         if (kC > 0) {
           for (int c = 0; c < nc; ++c) v_dot += v[c] * dpix[c];
+        } else if (j.index) {
+          const int32_t* idx = j.index + static_cast<size_t>(g.id) * nv;
+          for (int c = 0; c < nv; ++c) v_dot += v[c] * dpix[idx[c]];
         } else {  // four partial sums: one would wait on the previous multiply-add every channel
           V part[4] = {};
           int c = 0;
@@ -455,7 +470,19 @@ template <class T, int kC>
         const V sums = lane_sums(q);
         for (int i = 0; i < 9 + kC; ++i) e[i] += sums[i];
       }
-      if (kC == 0) add_lane_rows(w, pass, dL_dimage, pixel, nc, values_of(k));
+      if (kC == 0 && j.index) {  // sparse: each value's channel summed over the lanes (w = 0 where not passing)
+        const int32_t* idx = j.index + static_cast<size_t>(g.id) * nv;
+        T* sums = values_of(k);
+        for (int c0 = 0; c0 < nv; c0 += kLanes) {
+          V r[kLanes] = {};
+          const int n = std::min(kLanes, nv - c0);
+          for (int c = 0; c < n; ++c) r[c] = w * dpix[idx[c0 + c]];
+          const V total = lane_sums(r);
+          for (int c = 0; c < n; ++c) sums[c0 + c] += total[c];
+        }
+      } else if (kC == 0) {
+        add_lane_rows(w, pass, dL_dimage, pixel, nc, values_of(k));
+      }
     }
   }
   for (int k = 0; k < L; ++k) {
@@ -467,10 +494,10 @@ template <class T, int kC>
       T* gg = j.geom_grad + static_cast<size_t>(id) * 9;
       for (int c = 0; c < 9; ++c) gg[c] += e[c];
     }
-    T* vg = j.value_grad + static_cast<size_t>(id) * nc;
+    T* vg = j.value_grad + static_cast<size_t>(id) * nv;
     const T* ev = kC > 0 ? e + 9 : values_of(k);
 #pragma omp simd
-    for (int c = 0; c < nc; ++c) vg[c] += ev[c];
+    for (int c = 0; c < nv; ++c) vg[c] += ev[c];
     j.locks.unlock(id);
   }
 }
@@ -696,9 +723,9 @@ void rasterize_forward_cpu(const SplatCamera<T>& cam, const SplatInputs<T>& in, 
   st.n_contrib.resize(n_pix);
   const T* values = sh ? st.colors.data() : in.features;
   const std::vector<TileGaussian<T>> gaussians = tile_gaussians(st, in.opacities);
-  const ForwardTileJob<T> job{{cam, st, gaussians.data(), values, C, in.background}, image, alpha, depth,
-                              st.final_T.data(), st.n_contrib.data()};
-  const ForwardTileFn<T> forward_tile_fn = tile_kernels<T>(C).first;
+  const ForwardTileJob<T> job{{cam, st, gaussians.data(), values, C, in.background, in.feature_index, value_count(in)},
+                              image, alpha, depth, st.final_T.data(), st.n_contrib.data()};
+  const ForwardTileFn<T> forward_tile_fn = tile_kernels<T>(in.feature_index ? 0 : C).first;
   run_tiles(cam, forward_tile_fn, job);
 }
 
@@ -725,15 +752,15 @@ void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>
   std::vector<T> color_grad;
   T* value_grad = grads.features;
   if (sh || !value_grad) {
-    color_grad.assign(static_cast<size_t>(N) * C, T(0));
+    color_grad.assign(static_cast<size_t>(N) * value_count(in), T(0));
     value_grad = color_grad.data();
   }
   const T* values = sh ? st.colors.data() : in.features;
   StripedLocks locks;
   const std::vector<TileGaussian<T>> gaussians = tile_gaussians(st, in.opacities);
-  const BackwardTileJob<T> job{{cam, st, gaussians.data(), values, C, in.background}, dL_dimage, dL_dalpha, dL_ddepth,
-                               geometry ? geom.data() : nullptr, value_grad, locks};
-  const BackwardTileFn<T> backward_tile_fn = tile_kernels<T>(C).second;
+  const BackwardTileJob<T> job{{cam, st, gaussians.data(), values, C, in.background, in.feature_index, value_count(in)},
+                               dL_dimage, dL_dalpha, dL_ddepth, geometry ? geom.data() : nullptr, value_grad, locks};
+  const BackwardTileFn<T> backward_tile_fn = tile_kernels<T>(in.feature_index ? 0 : C).second;
   run_tiles(cam, backward_tile_fn, job);
   // per Gaussian: screen-space gradients -> 3D parameters (preprocess backward)
   const Vec3<T> campos = cam.center();

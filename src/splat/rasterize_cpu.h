@@ -25,6 +25,10 @@ struct SplatInputs {
   int sh_degree = -1;
   const T* features = nullptr;  // with channels = C
   int channels = 3;
+  // Sparse features: `features` holds N x nnz weights and feature_index their channels in [0, C) (a
+  // Gaussian's weights at other channels are zero), so blending costs nnz per Gaussian and pixel, not C.
+  const int32_t* feature_index = nullptr;
+  int nnz = 0;
   const T* background = nullptr;  // C values, or null for zero
   bool use_sh() const { return sh != nullptr; }
 };
@@ -59,7 +63,7 @@ struct SplatGradients {
   T* quats = nullptr;
   T* opacities = nullptr;
   T* sh = nullptr;
-  T* features = nullptr;
+  T* features = nullptr;  // N x C, or N x nnz for sparse features
   T* mean2d = nullptr;
   T* mean2d_abs = nullptr;
 };

@@ -142,6 +142,80 @@ TEST(SplatAutograd, ValueGradientsAloneEqualTheFullBackward) {
   }
 }
 
+// Sparse features: K weights per Gaussian at K of C channels. The reference is the dense path on the
+// weights scattered into N x C (repeated channels add), itself checked against finite differences above:
+// the image, alpha and depth, and every gradient (the weights' as the dense gradient at their channels),
+// in float64 and float32 and every CPU build, with and without geometry gradients.
+struct SparseCase {
+  torch::Tensor weights, indices, dense;
+};
+SparseCase sparse_case(const TorchScene& t, int K, int C, unsigned seed) {
+  torch::manual_seed(seed);
+  SparseCase c;
+  const int64_t n = t.means.size(0);
+  c.weights = torch::randn({n, K}, torch::kFloat64).to(t.means.scalar_type());
+  c.indices = torch::randint(0, C, {n, K}, torch::kInt32);
+  c.indices[0][1] = c.indices[0][0];  // a repeated channel
+  c.dense = torch::zeros({n, C}, c.weights.options()).scatter_add(1, c.indices.to(torch::kLong), c.weights);
+  return c;
+}
+
+TEST(SplatAutograd, SparseFeaturesEqualTheirDenseScatter) {
+  constexpr int K = 3, C = 20;
+  for (CpuKernels k : available_cpu_kernels())
+  for (torch::Dtype dtype : {torch::kFloat64, torch::kFloat32})
+  for (bool geometry : {false, true}) {
+    test::ScopedCpuKernels use(k);
+    TorchScene t = torch_scene(false, C, 41, dtype);
+    t.settings.background = torch::linspace(0.1, 0.5, C, t.means.options());
+    SparseCase sc = sparse_case(t, K, C, 42);
+    t.w_image = torch::randn({t.settings.camera.height, t.settings.camera.width, C}, torch::kFloat64).to(dtype);
+    const double tol = dtype == torch::kFloat64 ? 1e-12 : 1e-5;
+    auto run = [&](bool sparse, torch::Tensor& values, std::vector<torch::Tensor>& grads) {
+      std::vector<torch::Tensor*> geo = {&t.means, &t.scales, &t.quats, &t.opacities};
+      for (auto* p : geo) *p = p->detach().requires_grad_(geometry);
+      values = values.detach().requires_grad_(true);
+      const RasterizeOutput o =
+          sparse ? rasterize_sparse_features(t.means, t.scales, t.quats, t.opacities, values, sc.indices, C, {}, t.settings)
+                 : rasterize_features(t.means, t.scales, t.quats, t.opacities, values, {}, t.settings);
+      ((o.image * t.w_image).sum() + (o.alpha * t.w_alpha).sum() + (o.depth * t.w_depth).sum()).backward();
+      grads.clear();
+      for (auto* p : geo) grads.push_back(geometry ? p->grad().clone() : torch::Tensor());
+      grads.push_back(values.grad().clone());
+      return o;
+    };
+    std::vector<torch::Tensor> gs, gd;
+    const RasterizeOutput os = run(true, sc.weights, gs);
+    const RasterizeOutput od = run(false, sc.dense, gd);
+    const std::string what = std::string(cpu_kernels_name(k)) + (dtype == torch::kFloat64 ? " double" : " float") +
+                             (geometry ? " with geometry" : "");
+    ASSERT_GT(od.alpha.max().item<double>(), 0.1) << "the scene must cover pixels";
+    EXPECT_LT((os.image - od.image).abs().max().item<double>(), tol) << what;
+    EXPECT_LT((os.alpha - od.alpha).abs().max().item<double>(), tol) << what;
+    EXPECT_LT((os.depth - od.depth).abs().max().item<double>(), tol) << what;
+    const torch::Tensor expected = gd[4].gather(1, sc.indices.to(torch::kLong));
+    ASSERT_GT(expected.abs().max().item<double>(), 0.0);
+    EXPECT_LT((gs[4] - expected).abs().max().item<double>(), tol * expected.abs().max().item<double>()) << what;
+    if (geometry)
+      for (int p = 0; p < 4; ++p)
+        EXPECT_LT((gs[p] - gd[p]).abs().max().item<double>(), tol * std::max(1.0, gd[p].abs().max().item<double>()))
+            << what << " geometry parameter " << p;
+  }
+}
+
+TEST(SplatAutograd, SparseFeaturesRejectBadIndices) {
+  TorchScene t = torch_scene(false, 4, 43, torch::kFloat32);
+  SparseCase sc = sparse_case(t, 2, 4, 44);
+  auto call = [&](const torch::Tensor& w, const torch::Tensor& i, int C) {
+    return rasterize_sparse_features(t.means, t.scales, t.quats, t.opacities, w, i, C, {}, t.settings);
+  };
+  EXPECT_NO_THROW(call(sc.weights, sc.indices, 4));
+  EXPECT_THROW(call(sc.weights, sc.indices, 3), Error) << "an index past the channels";
+  EXPECT_THROW(call(sc.weights, sc.indices - 1 - sc.indices.max(), 4), Error) << "a negative index";
+  EXPECT_THROW(call(sc.weights, sc.indices.to(torch::kLong), 4), Error) << "int64 indices";
+  EXPECT_THROW(call(sc.weights.slice(1, 0, 1), sc.indices, 4), Error) << "weights and indices of different shapes";
+}
+
 TEST(SplatAutograd, GradientsReachTheRawModelParameters) {
   GaussianModel g = make_gaussians(2, 1, 0);
   g.means = torch::tensor({0.0f, 0.0f, 4.0f, 0.3f, 0.1f, 5.0f}).reshape({2, 3});
