@@ -53,6 +53,7 @@ struct LanguageModelFiles {
   std::filesystem::path geometry() const { return dir / "point_cloud.ply"; }
   std::filesystem::path latents() const { return dir / "latents.safetensors"; }
   std::filesystem::path autoencoder() const { return dir / "autoencoder.safetensors"; }
+  std::filesystem::path sparse() const { return dir / "sparse.safetensors"; }  // a sparse field's codes and codebooks
   std::filesystem::path city_objects() const { return dir / "city_objects.json"; }
   std::filesystem::path queries() const { return dir / "query"; }  // `query`'s output unless --out says otherwise
 };

@@ -36,8 +36,6 @@ namespace fs = std::filesystem;
 namespace cls {
 namespace {
 
-constexpr int64_t kDecodeChunk = 1 << 16;
-
 // The evaluated classes (taxonomy ids, ascending): the named ones, or every class in the GT.
 // `labels`: every GT label (cloud points, image pixels), taxonomy ids, negative = none.
 std::vector<int> evaluated_classes(const Taxonomy& taxonomy, const std::vector<int32_t>& labels,
@@ -93,7 +91,7 @@ int answering_level(int fallback, bool langsplat_rule, const std::vector<int>& l
 std::vector<int> available_levels(const LanguageModel& model) {
   std::vector<int> levels;
   for (int l = 1; l <= 3; ++l)
-    if (model.latents[size_t(l - 1)].defined()) levels.push_back(l);
+    if (model.has_level(l)) levels.push_back(l);
   if (levels.empty()) throw Error("evaluate: the language model has no latents");
   return levels;
 }
@@ -120,19 +118,6 @@ at::Tensor minmax_normalise(const at::Tensor& map) {
   const double range = (hi - lo).item<double>();
   if (!(range > 1e-12)) return torch::zeros_like(map);
   return (map - lo) / range;
-}
-
-// Cosine of every Gaussian's decoded latent at `level` with the prototypes: N x K.
-at::Tensor gaussian_cosines(const LanguageModel& model, int level, const at::Tensor& prototypes) {
-  const at::Tensor& z = model.latents[size_t(level - 1)];
-  const int64_t N = z.size(0);
-  const DecodedCosines cosines(linear_head_decoder(model.autoencoder), prototypes);
-  at::Tensor out = torch::empty({N, prototypes.size(0)}, torch::kFloat32);
-  for (int64_t b = 0; b < N; b += kDecodeChunk) {
-    const int64_t e = std::min(N, b + kDecodeChunk);
-    out.slice(0, b, e).copy_(cosines(z.slice(0, b, e)));
-  }
-  return out;
 }
 
 }  // namespace
@@ -373,7 +358,7 @@ nlohmann::json evaluate_model(const Scene& scene, const LanguageModel& model, Fe
   std::vector<int> class_level(K);
   for (int k = 0; k < K; ++k) {
     class_level[k] = fallback_level(taxonomy.classes[size_t(ec.ids[k])]);
-    if (!langsplat_rule && !model.latents[size_t(class_level[k] - 1)].defined())
+    if (!langsplat_rule && !model.has_level(class_level[k]))
       throw Error("evaluate: class '" + taxonomy.classes[size_t(ec.ids[k])].name + "' is read at level " +
                   std::to_string(class_level[k]) + ", which the language model does not have");
   }

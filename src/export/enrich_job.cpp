@@ -299,14 +299,14 @@ json run_enrich(const EnrichOptions& o) {
   std::vector<std::vector<double>> class_means(city.taxonomy.classes.size());
   for (int l = 0; l < 3; ++l) {
     if (level_classes[l].empty()) continue;
-    const at::Tensor latents = model.autoencoder.encode(class_prototypes(*provider, city.taxonomy, level_classes[l]));
+    const at::Tensor latents = model.dense_autoencoder("enrich").encode(class_prototypes(*provider, city.taxonomy, level_classes[l]));
     for (size_t k = 0; k < level_classes[l].size(); ++k)
       class_means[level_classes[l][k]] = mean_scores(score_levels(model.latents, latents[static_cast<int64_t>(k)]).scores, objects, gaussian_object, seen);
   }
   std::vector<std::vector<double>> query_means;
   const std::vector<std::string> slugs = unique_slugs(o.queries);
   if (!o.queries.empty()) {
-    const at::Tensor latents = model.autoencoder.encode(provider->text_features(o.queries).to(torch::kFloat32));
+    const at::Tensor latents = model.dense_autoencoder("enrich").encode(provider->text_features(o.queries).to(torch::kFloat32));
     for (size_t q = 0; q < o.queries.size(); ++q)
       query_means.push_back(mean_scores(score_levels(model.latents, latents[static_cast<int64_t>(q)]).scores, objects, gaussian_object, seen));
   }

@@ -72,7 +72,7 @@ std::vector<SplatScores> query_scores(LanguageModel& model, const fs::path& mode
   const int fixed = parse_query_level(o.level, "--level");
   const std::string model_json = LanguageModelFiles{model_dir}.model_json().string();
   const auto provider = model_provider(model, model_json, model_taxonomy(model.info, model_json, ""));
-  const at::Tensor latents = model.autoencoder.encode(provider->text_features(o.queries).to(torch::kFloat32));
+  const at::Tensor latents = model.dense_autoencoder("export").encode(provider->text_features(o.queries).to(torch::kFloat32));
   const std::vector<std::string> slugs = unique_slugs(o.queries);
   std::vector<SplatScores> out;
   for (size_t k = 0; k < o.queries.size(); ++k) {

@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "core/atomic_file.h"
@@ -24,13 +26,86 @@ const char* const kLevelNames[3] = {"level1", "level2", "level3"};
 
 }  // namespace
 
-void save_language_model(const std::string& dir, const LanguageModel& model) {
+const Autoencoder& LanguageModel::dense_autoencoder(const std::string& command) const {
+  if (!autoencoder)
+    throw UsageError(command + ": the model's language field is sparse (model.json \"field\"), which " + command +
+                     " does not take yet: train it with --field dense for this");
+  return *autoencoder;
+}
+
+int64_t LanguageModel::feature_dim() const {
+  return is_sparse() ? sparse[0].codebook.size(1) : dense_autoencoder("language model").config().input_dim;
+}
+
+namespace {
+
+std::string sparse_name(int level, const char* part) { return std::string(kLevelNames[level]) + "." + part; }
+
+void save_sparse(const LanguageModelFiles& files, const LanguageModel& model) {
+  const std::string path = files.sparse().string();
   const int64_t n = model.gaussians.size();
-  const int latent = model.autoencoder.config().latent_dim();
-  const LanguageModelFiles files{dir};
-  const std::string latents_path = files.latents().string();
   std::vector<SafetensorsEntry> entries;
   for (int l = 0; l < 3; ++l) {
+    const SparseLevel& s = model.sparse[l];
+    s.validate(path + " (" + kLevelNames[l] + ")", n, model.sparse[0].codebook.size(1));
+    for (const auto& [part, t] : {std::pair{"indices", s.indices}, std::pair{"weights", s.weights},
+                                  std::pair{"codebook", s.codebook}}) {
+      const at::Tensor data = t.detach().cpu().contiguous();
+      entries.push_back({sparse_name(l, part), data.scalar_type(), data.sizes().vec(), data});
+    }
+  }
+  write_safetensors(path, entries, {{"format", "citylangsplat-sparse-field"}});
+}
+
+void load_sparse(const LanguageModelFiles& files, LanguageModel& model) {
+  const std::string path = files.sparse().string();
+  if (!fs::exists(path)) fail(path, "missing (model.json says the field is sparse)");
+  const WeightFile file = read_safetensors(path);
+  for (int l = 0; l < 3; ++l) {
+    SparseLevel& s = model.sparse[l];
+    for (const auto& [part, t, dtype] : {std::tuple{"indices", &s.indices, at::kInt}, std::tuple{"weights", &s.weights, at::kFloat},
+                                         std::tuple{"codebook", &s.codebook, at::kFloat}}) {
+      if (!file.contains(sparse_name(l, part))) fail(path, "no tensor '" + sparse_name(l, part) + "'");
+      if (file.info(sparse_name(l, part)).dtype != dtype)
+        fail(path, "tensor '" + sparse_name(l, part) + "' must be " + safetensors_dtype_name(dtype));
+      *t = file.get(sparse_name(l, part), dtype).clone();
+    }
+    s.validate(path + " (" + kLevelNames[l] + ")", model.gaussians.size(), model.sparse[0].codebook.size(1));
+  }
+}
+
+void load_dense(const LanguageModelFiles& files, LanguageModel& model) {
+  const std::string ae_path = files.autoencoder().string();
+  if (!fs::exists(ae_path)) fail(ae_path, "missing");
+  model.autoencoder = Autoencoder::load(ae_path);
+
+  const std::string latents_path = files.latents().string();
+  if (!fs::exists(latents_path)) fail(latents_path, "missing");
+  const WeightFile file = read_safetensors(latents_path);
+  const int64_t n = model.gaussians.size();
+  const int latent = model.autoencoder->config().latent_dim();
+  for (int l = 0; l < 3; ++l) {
+    if (!file.contains(kLevelNames[l])) fail(latents_path, std::string("no tensor '") + kLevelNames[l] + "'");
+    const TensorInfo& ti = file.info(kLevelNames[l]);
+    if (ti.shape != std::vector<int64_t>{n, int64_t(latent)})
+      fail(latents_path, std::string("tensor '") + kLevelNames[l] + "' has shape " + shape_string(ti.shape) +
+                             ", expected [" + std::to_string(n) + ", " + std::to_string(latent) +
+                             "] (Gaussians of point_cloud.ply x the autoencoder's latent)");
+    // A copy: the file's mapping is not kept alive by the model.
+    model.latents[l] = file.get(kLevelNames[l], at::kFloat).clone();
+  }
+}
+
+}  // namespace
+
+void save_language_model(const std::string& dir, const LanguageModel& model) {
+  const int64_t n = model.gaussians.size();
+  const LanguageModelFiles files{dir};
+  const bool sparse = model.is_sparse();
+  const int latent = sparse ? 0 : model.dense_autoencoder("save").config().latent_dim();
+  const std::string latents_path = files.latents().string();
+  std::vector<SafetensorsEntry> entries;
+  for (int l = 0; l < 3 && !sparse; ++l) {
     const at::Tensor& t = model.latents[l];
     if (!t.defined() || t.dim() != 2 || t.size(0) != n || t.size(1) != latent)
       fail(latents_path, std::string("latents of ") + kLevelNames[l] + " must be " + std::to_string(n) + " x " +
@@ -43,13 +118,23 @@ void save_language_model(const std::string& dir, const LanguageModel& model) {
   GaussianModel geometry = model.gaussians;
   geometry.features = at::Tensor();  // the latents live in latents.safetensors
   write_gaussians_ply(files.geometry().string(), geometry);
-  write_safetensors(latents_path, entries, {{"format", "citylangsplat-latents"}});
-  model.autoencoder.save(files.autoencoder().string());
+  if (sparse) {
+    save_sparse(files, model);
+  } else {
+    write_safetensors(latents_path, entries, {{"format", "citylangsplat-latents"}});
+    model.autoencoder->save(files.autoencoder().string());
+  }
   if (!model.objects.objects.empty()) write_city_objects(files.city_objects().string(), model.objects);
   nlohmann::json info = model.info.is_object() ? model.info : nlohmann::json::object();
   info["levels"] = {1, 2, 3};
   info["gaussians"] = n;
-  info["latent_dim"] = latent;
+  info["field"] = model.field();
+  if (sparse) {
+    info["codebook_size"] = model.sparse[0].codebook.size(0);
+    info["top_k"] = model.sparse[0].weights.size(1);
+  } else {
+    info["latent_dim"] = latent;
+  }
   write_text_atomic(files.model_json(), info.dump(2) + "\n");
 }
 
@@ -69,25 +154,14 @@ LanguageModel load_language_model(const std::string& dir) {
   if (!fs::exists(ply_path)) fail(ply_path, "missing");
   GaussianModel gaussians = read_gaussians_ply(ply_path);
   gaussians.features = at::Tensor();
-  const std::string ae_path = files.autoencoder().string();
-  if (!fs::exists(ae_path)) fail(ae_path, "missing");
-  LanguageModel model{std::move(gaussians), {}, Autoencoder::load(ae_path), std::move(info), {}};
-
-  const std::string latents_path = files.latents().string();
-  if (!fs::exists(latents_path)) fail(latents_path, "missing");
-  const WeightFile file = read_safetensors(latents_path);
+  const std::string field = info.value("field", "dense");
+  if (field != "dense" && field != "sparse") fail(json_path, "\"field\" must be \"dense\" or \"sparse\", got \"" + field + "\"");
+  LanguageModel model{std::move(gaussians), {}, std::nullopt, std::move(info), {}, {}};
+  if (field == "sparse")
+    load_sparse(files, model);
+  else
+    load_dense(files, model);
   const int64_t n = model.gaussians.size();
-  const int latent = model.autoencoder.config().latent_dim();
-  for (int l = 0; l < 3; ++l) {
-    if (!file.contains(kLevelNames[l])) fail(latents_path, std::string("no tensor '") + kLevelNames[l] + "'");
-    const TensorInfo& ti = file.info(kLevelNames[l]);
-    if (ti.shape != std::vector<int64_t>{n, int64_t(latent)})
-      fail(latents_path, std::string("tensor '") + kLevelNames[l] + "' has shape " + shape_string(ti.shape) +
-                             ", expected [" + std::to_string(n) + ", " + std::to_string(latent) +
-                             "] (Gaussians of point_cloud.ply x the autoencoder's latent)");
-    // A copy: the file's mapping is not kept alive by the model.
-    model.latents[l] = file.get(kLevelNames[l], at::kFloat).clone();
-  }
   if (model.info.contains("gaussians") && model.info["gaussians"] != n)
     fail(json_path, "records " + model.info["gaussians"].dump() + " Gaussians but point_cloud.ply has " +
                         std::to_string(n));

@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <set>
 #include <filesystem>
 #include <random>
@@ -39,6 +40,7 @@
 #include "language/language_loss.h"
 #include "language/language_model.h"
 #include "language/provenance.h"
+#include "language/sparse_field.h"
 #include "scene/view_selection.h"
 #include "splat/compute_device.h"
 #include "splat/adam.h"
@@ -79,15 +81,36 @@ at::Tensor compact_seg_maps(std::vector<int32_t>& sam_seg, std::vector<int32_t>&
   return fits ? maps.to(at::kShort) : maps;
 }
 
-at::Tensor encode_rows(const Autoencoder& ae, const at::Tensor& features, at::Device device) {
-  if (!features.defined() || features.size(0) == 0) return at::zeros({0, ae.config().latent_dim()}, at::kFloat).to(device);
-  return ae.encode(features.to(at::kFloat)).detach().to(at::kCPU).contiguous().to(device);
+// The targets in the space the field is trained in: the autoencoder's latents (dense), or the features
+// themselves (sparse: no autoencoder). `dim`: the features' size, for an empty table.
+at::Tensor target_rows(const Autoencoder* ae, const at::Tensor& features, int64_t dim, at::Device device) {
+  if (!features.defined() || features.size(0) == 0)
+    return at::zeros({0, ae ? int64_t(ae->config().latent_dim()) : dim}, at::kFloat).to(device);
+  if (!ae) return features.to(at::kFloat).contiguous().to(device);
+  return ae->encode(features.to(at::kFloat)).detach().to(at::kCPU).contiguous().to(device);
+}
+
+// The features' size for the sparse field (no autoencoder to say it): the provider's recorded "dim", else
+// the first view's SAM table.
+int64_t provider_dim(const nlohmann::json& provider, const std::string& features_dir) {
+  if (provider.is_object() && provider.contains("dim") && provider["dim"].is_number_integer()) return provider["dim"].get<int64_t>();
+  for (const auto& entry : fs::directory_iterator(features_dir)) {
+    const std::string name = entry.path().filename().string();
+    if (name.size() > 6 && name.compare(name.size() - 6, 6, "_f.npy") == 0) {
+      const std::string stem = name.substr(0, name.size() - 6);
+      if (!view_features_complete(features_dir, stem)) continue;
+      const ViewFeatures f = read_view_features(features_dir, stem);
+      if (f.sam_features.defined() && f.sam_features.dim() == 2) return f.sam_features.size(1);
+    }
+  }
+  fail(features_dir, "no view's features say their size (run `citylangsplat features`)");
 }
 
 bool held_out_all(const Scene& scene, int test_every) { return split_views(scene, test_every).train.empty(); }
 
-std::vector<ViewTargets> load_targets(const Scene& scene, const LanguageTrainOptions& o, const Autoencoder& ae,
-                                      at::Device device) {
+// ae: null for the sparse field; `dim`: the features' size.
+std::vector<ViewTargets> load_targets(const Scene& scene, const LanguageTrainOptions& o, const Autoencoder* ae,
+                                      int64_t dim, at::Device device) {
   std::vector<ViewTargets> views;
   std::set<const SceneView*> held_out;
   for (const SceneView* v : split_views(scene, o.test_every).test) held_out.insert(v);
@@ -107,19 +130,18 @@ std::vector<ViewTargets> load_targets(const Scene& scene, const LanguageTrainOpt
     if (f.height != sv.camera.height || f.width != sv.camera.width)
       fail(what, cat("features are ", f.width, " x ", f.height, " but the scene loads view ", sv.name, " at ",
                      sv.camera.width, " x ", sv.camera.height, " (match --resolution to the features stage)"));
-    if (f.sam_features.defined() && f.sam_features.size(0) > 0 && f.sam_features.size(1) != ae.config().input_dim)
-      fail(what, cat("SAM features have ", f.sam_features.size(1), " channels, the autoencoder takes ",
-                     ae.config().input_dim));
-    if (f.gml_features.defined() && f.gml_features.size(0) > 0 && f.gml_features.size(1) != ae.config().input_dim)
-      fail(what, cat("CityGML features have ", f.gml_features.size(1), " channels, the autoencoder takes ",
-                     ae.config().input_dim));
+    const std::string taker = ae ? "the autoencoder takes " : "the provider gives ";
+    if (f.sam_features.defined() && f.sam_features.size(0) > 0 && f.sam_features.size(1) != dim)
+      fail(what, cat("SAM features have ", f.sam_features.size(1), " channels, ", taker, dim));
+    if (f.gml_features.defined() && f.gml_features.size(0) > 0 && f.gml_features.size(1) != dim)
+      fail(what, cat("CityGML features have ", f.gml_features.size(1), " channels, ", taker, dim));
     ViewTargets t;
     t.view = i;
     t.stem = stem;
     t.height = f.height;
     t.width = f.width;
-    t.sam_latents = encode_rows(ae, f.sam_features, device);
-    t.gml_latents = encode_rows(ae, f.gml_features, device);
+    t.sam_latents = target_rows(ae, f.sam_features, dim, device);
+    t.gml_latents = target_rows(ae, f.gml_features, dim, device);
     const size_t hw = size_t(t.height) * t.width;
     at::Tensor m = at::zeros({t.height, t.width}, at::kByte);
     uint8_t* mp = m.data_ptr<uint8_t>();
@@ -149,6 +171,33 @@ std::vector<int> epoch_order(uint64_t seed, int level, int64_t epoch, int n) {
 }
 
 std::string adam_name(int level) { return "latents_l" + std::to_string(level); }
+std::string codebook_name(int level) { return "codebook_l" + std::to_string(level); }
+
+// The sparse field's first codebook of a level: codebook_size target rows (SAM and CityGML, every view)
+// drawn at random without replacement, so every basis starts as a feature the level is trained towards;
+// with fewer rows than bases, the rest are drawn again with a little noise.
+at::Tensor initial_codebook(const std::vector<ViewTargets>& views, int size, uint64_t seed, int level) {
+  std::vector<at::Tensor> rows;
+  for (const ViewTargets& v : views) rows.push_back(v.sam_latents.cpu()), rows.push_back(v.gml_latents.cpu());
+  const at::Tensor all = at::cat(rows, 0);
+  if (all.size(0) == 0) throw Error("language training: no target features to start the sparse field's codebook from");
+  std::mt19937_64 rng(seed * 0x9E3779B97F4A7C15ull + uint64_t(level));
+  std::vector<int64_t> pick(all.size(0));
+  for (size_t i = 0; i < pick.size(); ++i) pick[i] = int64_t(i);
+  for (size_t i = pick.size() - 1; i > 0; --i) std::swap(pick[i], pick[rng() % (i + 1)]);
+  pick.resize(std::min<size_t>(pick.size(), size_t(size)));
+  while (pick.size() < size_t(size)) pick.push_back(int64_t(rng() % uint64_t(all.size(0))));
+  at::Tensor book = all.index_select(0, at::tensor(pick, at::kLong)).clone();
+  const int64_t repeats = size - std::min<int64_t>(size, all.size(0));
+  if (repeats > 0) {
+    at::Tensor noise = at::empty({repeats, book.size(1)}, at::kFloat);
+    float* np = noise.data_ptr<float>();
+    std::normal_distribution<float> normal(0.f, 0.01f);
+    for (int64_t i = 0; i < noise.numel(); ++i) np[i] = normal(rng);
+    book.slice(0, size - repeats).add_(noise);
+  }
+  return book;
+}
 
 // What a Gaussian splats of its latent: the latent, or LangSplat's latent / (|latent| + 1e-9).
 at::Tensor splatted(const at::Tensor& latents, const LanguageTrainOptions& o) {
@@ -159,7 +208,7 @@ at::Tensor splatted(const at::Tensor& latents, const LanguageTrainOptions& o) {
 nlohmann::json run_config(const LanguageTrainOptions& o, int64_t n, int latent, size_t views) {
   // The baseline's objective has no lambdas: record the weights it uses, so that --lambda-* do not
   // keep its checkpoint from resuming.
-  return {{"seed", o.seed},
+  nlohmann::json c = {{"seed", o.seed},
           {"baseline", o.baseline},
           {"normalize_latents", o.normalize_latents},
           {"lambda_sam", o.baseline ? 1.0 : o.lambda_sam},
@@ -169,6 +218,8 @@ nlohmann::json run_config(const LanguageTrainOptions& o, int64_t n, int latent, 
           {"latent_dim", latent},
           {"views", views},
           {"iterations", o.iterations}};
+  if (o.field == "sparse") c["field"] = o.field, c["codebook_size"] = o.codebook_size, c["top_k"] = o.top_k;
+  return c;
 }
 
 struct TrainState {
@@ -177,13 +228,15 @@ struct TrainState {
   int64_t total = 0;      // iterations done over all levels
   double ema_loss = 0;
   std::array<double, 3> final_loss{0, 0, 0};
-  std::array<at::Tensor, 3> latents;  // finished levels and the current one
+  std::array<at::Tensor, 3> latents;    // finished levels and the current one (sparse: the N x L logits)
+  std::array<at::Tensor, 3> codebooks;  // sparse: L x D per level
 };
 
 void save_checkpoint(const std::string& path, const TrainState& s, const Adam& adam, const nlohmann::json& config) {
   Checkpoint c;
   for (int l = 0; l < kLevels; ++l)
-    if (s.latents[l].defined()) c.tensors["latents.level" + std::to_string(l + 1)] = s.latents[l].detach().cpu().contiguous();
+    for (const auto& [name, t] : {std::pair{"latents", &s.latents[l]}, std::pair{"codebook", &s.codebooks[l]}})
+      if (t->defined()) c.tensors[std::string(name) + ".level" + std::to_string(l + 1)] = t->detach().cpu().contiguous();
   for (const auto& [name, t] : adam.state_tensors()) c.tensors[name] = t.detach().cpu().contiguous();
   c.info = {{"kind", "language"},
             {"level", s.level},
@@ -230,9 +283,9 @@ const OptionList<LanguageTrainOptions>& language_train_options() {
         .add("features", &O::features_dir, "features stage output directory (per-view *_s.npy / *_f.npy / *_gml_*.npy)",
              R::Location)
         .required()
-        .add("autoencoder", &O::autoencoder_path, "the shared autoencoder (`autoencoder` output, .safetensors)",
+        .add("autoencoder", &O::autoencoder_path,
+             "the shared autoencoder (`autoencoder` output, .safetensors); the dense field's, the sparse field takes none",
              R::Location)
-        .required()
         .add("out", &O::out_dir, "output model directory (model.json, point_cloud.ply, latents, autoencoder, checkpoints/)",
              R::Location)
         .required()
@@ -243,6 +296,11 @@ const OptionList<LanguageTrainOptions>& language_train_options() {
         .add("normalize-latents", &O::normalize_latents,
              "LangSplat's splatting: each Gaussian's latent divided by its norm before it is splatted (default: raw "
              "latents; docs/language.md measures both)")
+        .add("field", &O::field,
+             "dense (a latent per Gaussian and level, decoded by the autoencoder) or sparse (top-K weights over a "
+             "codebook of CLIP-space bases per level, no decoder; docs/language.md)")
+        .add("codebook-size", &O::codebook_size, "sparse field: bases per level (L)")
+        .add("top-k", &O::top_k, "sparse field: weights per Gaussian and level (K)")
         .add("checkpoint-every", &O::checkpoint_every, "iterations between checkpoints (0 = only on interrupt)",
              R::Control)
         .add("resume", &O::resume, "continue from OUT/checkpoints/language.safetensors if present", R::Control)
@@ -273,8 +331,17 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
   const at::Tensor quats = geometry.quats.detach().to(device, at::kFloat).contiguous();
   const at::Tensor opacities = geometry.opacities().detach().to(device, at::kFloat).contiguous();
 
-  Autoencoder autoencoder = Autoencoder::load(o.autoencoder_path);
-  const int latent = autoencoder.config().latent_dim();
+  const bool sparse = o.field == "sparse";
+  if (o.field != "dense" && !sparse) throw UsageError("--field must be dense or sparse, got '" + o.field + "'");
+  if (sparse && (o.codebook_size < 1 || o.top_k < 1 || o.top_k > o.codebook_size))
+    throw UsageError(cat("--top-k must lie in [1, --codebook-size] and --codebook-size be positive, got ", o.top_k, " and ",
+                         o.codebook_size));
+  if (sparse && o.normalize_latents)
+    throw UsageError("--normalize-latents is LangSplat's splatting of dense latents; the sparse field splats softmax weights");
+  if (!sparse && o.autoencoder_path.empty()) throw UsageError("--autoencoder is needed for the dense field");
+  std::optional<Autoencoder> autoencoder;
+  if (!sparse) autoencoder = Autoencoder::load(o.autoencoder_path);
+  const int latent = sparse ? o.codebook_size : autoencoder->config().latent_dim();
 
   nlohmann::json provider = nullptr, taxonomy = nullptr;
   fs::path labels_dir;  // for the city-object provenance
@@ -293,7 +360,9 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
     log_warn(cat("language training: ", features_json.string(), " missing; the provider is not recorded"));
   }
 
-  const std::vector<ViewTargets> views = load_targets(scene, o, autoencoder, device);
+  const std::vector<ViewTargets> views =
+      load_targets(scene, o, autoencoder ? &*autoencoder : nullptr, sparse ? provider_dim(provider, o.features_dir)
+                                                                             : autoencoder->config().input_dim, device);
   const int nviews = int(views.size());
   const nlohmann::json config = run_config(o, n, latent, views.size());
   const std::string checkpoint_path = (RunLayout::checkpoints(o.out_dir) / "language.safetensors").string();
@@ -320,6 +389,11 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
       if (it->second.dim() != 2 || it->second.size(0) != n || it->second.size(1) != latent)
         fail(checkpoint_path, "tensor 'latents.level" + std::to_string(l + 1) + "' has the wrong shape");
       s.latents[l] = it->second.to(device, at::kFloat).clone();
+      if (!sparse) continue;
+      const auto book = resume_from.tensors.find("codebook.level" + std::to_string(l + 1));
+      if (book == resume_from.tensors.end() || book->second.dim() != 2 || book->second.size(0) != latent)
+        fail(checkpoint_path, "no codebook of " + std::to_string(latent) + " bases for level " + std::to_string(l + 1));
+      s.codebooks[l] = book->second.to(device, at::kFloat).clone();
     }
     if (s.level < 1 || s.level > kLevels || !s.latents[s.level - 1].defined())
       fail(checkpoint_path, "inconsistent level / latents");
@@ -349,10 +423,26 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
       s.ema_loss = 0;
     }
     at::Tensor& latents = s.latents[level - 1];
+    at::Tensor& codebook = s.codebooks[level - 1];
+    if (!latents.defined() && sparse) {
+      // Logits near zero with a seeded jitter: every Gaussian starts near the mean of K bases, which ones
+      // decided by the noise (all-equal logits would give every Gaussian the same K).
+      at::Tensor jitter = at::empty({n, int64_t(latent)}, at::kFloat);
+      std::mt19937_64 rng(o.seed * 0x100000001B3ull + uint64_t(level));
+      std::normal_distribution<float> normal(0.f, 0.01f);
+      float* jp = jitter.data_ptr<float>();
+      for (int64_t i = 0; i < jitter.numel(); ++i) jp[i] = normal(rng);
+      latents = jitter.to(device);
+      codebook = initial_codebook(views, o.codebook_size, o.seed, level).to(device);
+    }
     if (!latents.defined()) latents = at::zeros({n, int64_t(latent)}, at::TensorOptions(device).dtype(at::kFloat));
     latents = latents.detach().requires_grad_(true);
     adam = Adam(0.9, 0.999, 1e-15);
     adam.add(adam_name(level), latents, o.lr);
+    if (sparse) {
+      codebook = codebook.detach().requires_grad_(true);
+      adam.add(codebook_name(level), codebook, o.lr);
+    }
     if (restored) {
       std::map<std::string, at::Tensor> tensors;
       for (const auto& [name, t] : resume_from.tensors)
@@ -375,8 +465,16 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
       RasterizeSettings settings;
       settings.camera = sv.camera;
       settings.pose = sv.pose;
-      const at::Tensor rendered =
-          rasterize_features(means, scales, quats, opacities, splatted(adam.group(adam_name(level)).param, o), at::Tensor(), settings).image;
+      at::Tensor rendered;
+      if (sparse) {  // the rendered weights times the codebook: the features the targets are compared with
+        const SparseWeights w = top_k_softmax(adam.group(adam_name(level)).param, o.top_k);
+        const at::Tensor map =
+            rasterize_sparse_features(means, scales, quats, opacities, w.weights, w.indices, latent, at::Tensor(), settings).image;
+        rendered = at::matmul(map, adam.group(codebook_name(level)).param);
+      } else {
+        rendered = rasterize_features(means, scales, quats, opacities, splatted(adam.group(adam_name(level)).param, o),
+                                      at::Tensor(), settings).image;
+      }
       const LanguageLoss loss = language_loss_from_seg(rendered, {v.sam_map(level), v.sam_latents},
                                                        {v.gml_map(level), v.gml_latents}, v.coverage, weights);
       loss.total.backward();
@@ -406,6 +504,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
                         " (SAM ", loss.sam.item<double>(), ", SAM-GML ", loss.sam_gml.item<double>(), ", CityGML ",
                         loss.citygml.item<double>(), ")"));
       latents = adam.group(adam_name(level)).param;
+      if (sparse) codebook = adam.group(codebook_name(level)).param;
 
       const bool stop = interrupt_requested() || (o.stop_after > 0 && s.total >= o.stop_after);
       if (stop || (o.checkpoint_every > 0 && s.total % o.checkpoint_every == 0))
@@ -423,6 +522,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
     progress.finish();
     s.final_loss[level - 1] = s.ema_loss;
     latents = latents.detach();
+    if (sparse) codebook = codebook.detach();
     log_info(cat("language level ", level, ": ", o.iterations, " iterations, loss ", s.ema_loss));
   }
   for (int l = 0; l < kLevels; ++l) report.final_loss[l] = s.final_loss[l];
@@ -436,15 +536,21 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
                          {"provider", provider},
                          {"taxonomy", taxonomy},
                          {"geometry_source", fs::absolute(o.geometry_ply).string()},
-                         {"autoencoder_source", fs::absolute(o.autoencoder_path).string()},
+                         {"autoencoder_source", sparse ? nlohmann::json(nullptr) : nlohmann::json(fs::absolute(o.autoencoder_path).string())},
                          {"views", nviews},
                          {"seed", o.seed},
                          {"test_every", o.test_every},
                          {"normalize_latents", o.normalize_latents},
                          {"final_loss", s.final_loss}};
   GaussianModel frozen = geometry;
-  LanguageModel model{std::move(frozen), {}, std::move(autoencoder), std::move(info), {}};
-  for (int l = 0; l < kLevels; ++l) model.latents[l] = splatted(s.latents[l].detach(), o).cpu().contiguous();
+  LanguageModel model{std::move(frozen), {}, std::move(autoencoder), std::move(info), {}, {}};
+  for (int l = 0; l < kLevels; ++l)
+    if (sparse) {
+      const SparseWeights w = top_k_softmax(s.latents[l].detach(), o.top_k);
+      model.sparse[l] = {w.indices.cpu(), w.weights.cpu(), s.codebooks[l].detach().cpu().contiguous()};
+    } else {
+      model.latents[l] = splatted(s.latents[l].detach(), o).cpu().contiguous();
+    }
   attach_city_objects(model, scene, labels_dir);
   save_language_model(o.out_dir, model);
   // A final checkpoint at the end, so a `--resume` of a finished run only rewrites the model.

@@ -24,6 +24,13 @@ struct LanguageTrainOptions {
   // LangSplat's splatting: each Gaussian's latent divided by its norm (+1e-9) before it is splatted; the
   // saved model holds the normalised latents, so every consumer splats and decodes what training did.
   bool normalize_latents = false;
+  // The field: "dense" (a latent per Gaussian and level, decoded by the autoencoder) or "sparse"
+  // (sparse_field.h: top_k softmax weights over codebook_size bases in CLIP space, per level; no
+  // autoencoder). The sparse field's loss compares the rendered features with the CLIP targets themselves,
+  // the space both are defined in (the autoencoder is not needed to train or read it).
+  std::string field = "dense";
+  int codebook_size = 64;
+  int top_k = 4;
   int checkpoint_every = 1000;
   bool resume = false;
   uint64_t seed = 1;

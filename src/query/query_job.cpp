@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <optional>
 
 #include "citymodel/taxonomy.h"
 #include "core/atomic_file.h"
@@ -155,18 +156,29 @@ json run_query(LanguageModel& model, FeatureProvider& provider, const std::vecto
   check_provider_fits(model, provider, LanguageModelFiles{o.model_dir}.model_json().string());
   // Rendering, decoding and scoring run on `device`; the model's CPU tensors stay for writing PLYs.
   const c10::Device device = parse_device(o.device);
-  model.autoencoder.to(device);
+  const bool sparse = model.is_sparse();
+  if (!sparse) model.autoencoder->to(device);
   GaussianModel geometry_on_device = model.gaussians;
   for (at::Tensor* t : {&geometry_on_device.means, &geometry_on_device.log_scales, &geometry_on_device.quats,
                         &geometry_on_device.opacity_logits})
     *t = t->to(device);
   std::array<at::Tensor, 3> latents_on_device;
-  for (int l = 0; l < 3; ++l) latents_on_device[l] = model.latents[l].to(device);
+  std::array<SparseLevel, 3> sparse_on_device;
+  for (int l = 0; l < 3; ++l)
+    if (sparse)
+      sparse_on_device[l] = {model.sparse[l].indices.to(device), model.sparse[l].weights.to(device), model.sparse[l].codebook.to(device)};
+    else
+      latents_on_device[l] = model.latents[l].to(device);
   const fs::path out = o.out_dir.empty() ? LanguageModelFiles{o.model_dir}.queries() : fs::path(o.out_dir);
   fs::create_directories(out);
 
   const at::Tensor text_features = provider.text_features(texts).to(device, torch::kFloat32);  // K x D
-  const at::Tensor query_latents = model.autoencoder.encode(text_features);                // K x L
+  // Dense: the texts' latents, compared with each Gaussian's (paper 3.3). Sparse: the cosines of each
+  // Gaussian's feature with the texts, per level (N x K).
+  const at::Tensor query_latents = sparse ? at::Tensor() : model.autoencoder->encode(text_features);  // K x L
+  std::array<at::Tensor, 3> feature_cosines;
+  if (sparse)
+    for (int l = 0; l < 3; ++l) feature_cosines[l] = gaussian_cosines(model, l + 1, text_features);
   const std::vector<std::string> slugs = unique_slugs(texts);
   const int64_t K = static_cast<int64_t>(texts.size());
 
@@ -176,7 +188,10 @@ json run_query(LanguageModel& model, FeatureProvider& provider, const std::vecto
   std::vector<int> level_of(K);
   std::vector<at::Tensor> score_of(K);
   for (int64_t k = 0; k < K; ++k) {
-    const LevelScores levels = score_levels(latents_on_device, query_latents[k]);
+    const LevelScores levels =
+        sparse ? level_scores({feature_cosines[0].select(1, k).contiguous(), feature_cosines[1].select(1, k).contiguous(),
+                               feature_cosines[2].select(1, k).contiguous()})
+               : score_levels(latents_on_device, query_latents[k]);
     json level_max = json::object();
     for (int l = 1; l <= 3; ++l) level_max[std::to_string(l)] = levels.max[l - 1];
     level_of[k] = fixed_level ? fixed_level : levels.best;
@@ -212,7 +227,8 @@ json run_query(LanguageModel& model, FeatureProvider& provider, const std::vecto
   json views_done = json::array();
   if (!views.empty()) {
     const at::Tensor canonical = provider.text_features(canonical_phrases()).to(device, torch::kFloat32);
-    const LinearHeadDecoder decoder = linear_head_decoder(model.autoencoder);
+    const std::optional<LinearHeadDecoder> decoder =
+        sparse ? std::nullopt : std::optional(linear_head_decoder(*model.autoencoder));
     std::map<int, std::vector<int64_t>> texts_of_level;
     for (int64_t k = 0; k < K; ++k) texts_of_level[level_of[k]].push_back(k);
 
@@ -225,8 +241,12 @@ json run_query(LanguageModel& model, FeatureProvider& provider, const std::vecto
       const std::string stem = view_stem(view->name);
       for (const auto& [level, ks] : texts_of_level) {
         const at::Tensor idx = torch::tensor(ks, torch::kInt64).to(device);
-        const RelevanceMaps m = relevance_maps(geometry_on_device, latents_on_device[level - 1], decoder, view->camera,
-                                               view->pose, text_features.index_select(0, idx), canonical);
+        const at::Tensor level_texts = text_features.index_select(0, idx);
+        const RelevanceMaps m =
+            sparse ? relevance_maps(geometry_on_device, sparse_on_device[level - 1], view->camera, view->pose, level_texts,
+                                    canonical)
+                   : relevance_maps(geometry_on_device, latents_on_device[level - 1], *decoder, view->camera, view->pose,
+                                    level_texts, canonical);
         for (size_t j = 0; j < ks.size(); ++j) {
           const int64_t k = ks[j];
           json& files = queries[k]["maps"];

@@ -203,18 +203,41 @@ DecodedView render_decoded(const GaussianModel& gaussians, const at::Tensor& lat
   return {features.reshape({H, W, features.size(1)}), r.alpha.to(torch::kFloat32)};
 }
 
-RelevanceMaps relevance_maps(const GaussianModel& gaussians, const at::Tensor& latents, const LinearHeadDecoder& decoder,
-                             const PinholeCamera& camera, const Pose& pose, const at::Tensor& queries,
-                             const at::Tensor& canonical, int64_t chunk_pixels) {
+RenderedLatents render_sparse(const GaussianModel& gaussians, const SparseLevel& level, const PinholeCamera& camera,
+                              const Pose& pose) {
+  if (!level.defined() || level.size() != gaussians.size())
+    throw Error("render_sparse: the sparse level must have one row per Gaussian (" + std::to_string(gaussians.size()) + ")");
+  at::NoGradGuard no_grad;
+  const at::Tensor means = gaussians.means.contiguous();
+  RasterizeSettings settings;
+  settings.camera = camera;
+  settings.pose = pose;
+  const RasterizeOutput out = rasterize_sparse_features(
+      means, gaussians.scales().contiguous(), gaussians.quats.contiguous(), gaussians.opacities().contiguous(),
+      level.weights.to(means.device(), means.scalar_type()).contiguous(), level.indices.to(means.device()).contiguous(),
+      static_cast<int>(level.codebook.size(0)), at::Tensor(), settings);
+  return {out.image, out.alpha};
+}
+
+LinearHeadDecoder codebook_decoder(const at::Tensor& codebook) {
+  return {[](const at::Tensor& w) { return w; }, factor_linear_head(codebook.t().contiguous(), at::Tensor())};
+}
+
+namespace {
+
+void check_queries(const at::Tensor& queries, const at::Tensor& canonical) {
   if (!queries.defined() || queries.dim() != 2 || !canonical.defined() || canonical.dim() != 2 ||
       canonical.size(0) == 0 || canonical.size(1) != queries.size(1))
     throw Error("relevance_maps: queries K x D and canonical M x D (M > 0) expected, got " + shape_of(queries) +
                 " and " + shape_of(canonical));
-  const DecodedCosines cosines(decoder, torch::cat({queries, canonical}, 0));
-  const RenderedLatents r = render_latents(gaussians, latents, camera, pose);
+}
+
+// The maps of the queries (the first K directions of `cosines`) from rendered latents.
+RelevanceMaps maps_of_rendered(const RenderedLatents& r, const DecodedCosines& cosines, int64_t K,
+                               const at::Tensor& canonical, int64_t chunk_pixels) {
   at::NoGradGuard no_grad;
   const int64_t H = r.latents.size(0), W = r.latents.size(1), L = r.latents.size(2);
-  const int64_t K = queries.size(0), P = K + canonical.size(0);
+  const int64_t P = K + canonical.size(0);
   const at::Tensor flat = r.latents.reshape({H * W, L});
   at::Tensor cos = torch::empty({H * W, P}, flat.options().dtype(torch::kFloat32));
   decode_covered(flat, r.alpha, std::cref(cosines), chunk_pixels, [&](const at::Tensor& rows, const at::Tensor& c) {
@@ -228,6 +251,27 @@ RelevanceMaps relevance_maps(const GaussianModel& gaussians, const at::Tensor& l
   out.relevancy = K > 0 ? torch::stack(relevancy, 0).reshape({K, H, W}) : torch::empty({0, H, W}, cos.options());
   out.alpha = r.alpha.to(torch::kFloat32);
   return out;
+}
+
+}  // namespace
+
+RelevanceMaps relevance_maps(const GaussianModel& gaussians, const at::Tensor& latents, const LinearHeadDecoder& decoder,
+                             const PinholeCamera& camera, const Pose& pose, const at::Tensor& queries,
+                             const at::Tensor& canonical, int64_t chunk_pixels) {
+  check_queries(queries, canonical);
+  const DecodedCosines cosines(decoder, torch::cat({queries, canonical}, 0));
+  return maps_of_rendered(render_latents(gaussians, latents, camera, pose), cosines, queries.size(0), canonical,
+                          chunk_pixels);
+}
+
+RelevanceMaps relevance_maps(const GaussianModel& gaussians, const SparseLevel& level, const PinholeCamera& camera,
+                             const Pose& pose, const at::Tensor& queries, const at::Tensor& canonical,
+                             int64_t chunk_pixels) {
+  check_queries(queries, canonical);
+  const DecodedCosines cosines(codebook_decoder(level.codebook.to(gaussians.means.device())),
+                               torch::cat({queries, canonical}, 0));
+  return maps_of_rendered(render_sparse(gaussians, level, camera, pose), cosines, queries.size(0), canonical,
+                          chunk_pixels);
 }
 
 }  // namespace cls

@@ -126,6 +126,22 @@ struct RelevanceMaps {
 RelevanceMaps relevance_maps(const GaussianModel& gaussians, const at::Tensor& latents, const LinearHeadDecoder& decoder,
                              const PinholeCamera& camera, const Pose& pose, const at::Tensor& queries,
                              const at::Tensor& canonical, int64_t chunk_pixels = 0);
+
+// ---- the sparse field (language/sparse_field.h) ------------------------------------------------
+// Its weights splatted (K per Gaussian) into an L-channel map (rasterize_sparse_features), no gradients.
+RenderedLatents render_sparse(const GaussianModel& gaussians, const SparseLevel& level, const PinholeCamera& camera,
+                              const Pose& pose);
+// The codebook (L x D) as a decoder of rendered weights: no hidden layer, the last layer the codebook's
+// transpose without bias, so DecodedCosines costs L x L per pixel (|B^T w| through B^T's QR factors).
+LinearHeadDecoder codebook_decoder(const at::Tensor& codebook);
+// relevance_maps of a sparse level: the rendered weights' cosines with the queries, never forming D-d features.
+RelevanceMaps relevance_maps(const GaussianModel& gaussians, const SparseLevel& level, const PinholeCamera& camera,
+                             const Pose& pose, const at::Tensor& queries, const at::Tensor& canonical,
+                             int64_t chunk_pixels = 0);
+
+// Cosine of every Gaussian's feature at a level (1..3) of either field with each direction: directions P x D ->
+// N x P float32 (CPU). Dense: the decoded latent (DecodedCosines); sparse: sparse_cosines.
+at::Tensor gaussian_cosines(const LanguageModel& model, int level, const at::Tensor& directions);
 // The same for a language model's level (1..3) and a scene view.
 RelevanceMaps relevance_maps(const LanguageModel& model, int level, const SceneView& view, const at::Tensor& queries,
                              const at::Tensor& canonical);

@@ -65,17 +65,23 @@ std::unique_ptr<FeatureProvider> model_provider(const LanguageModel& model, cons
 }
 
 void check_provider_fits(const LanguageModel& model, const FeatureProvider& provider, const std::string& model_json) {
-  const int D = model.autoencoder.config().input_dim;
+  const int64_t D = model.feature_dim();
   if (provider.dim() != D)
     fail(model_json, "provider '" + provider.name() + "' gives " + std::to_string(provider.dim()) +
-                         "-d features, the autoencoder expects " + std::to_string(D));
+                         "-d features, the model's field answers in " + std::to_string(D) + "-d features");
 }
 
 LevelScores score_levels(const std::array<at::Tensor, 3>& latents, const at::Tensor& query_latent) {
+  std::array<at::Tensor, 3> scores;
+  for (int l = 0; l < 3; ++l) scores[l] = gaussian_scores(latents[l], query_latent).cpu();
+  return level_scores(scores);
+}
+
+LevelScores level_scores(const std::array<at::Tensor, 3>& scores) {
   LevelScores s;
   double best_max = -2;
   for (int l = 1; l <= 3; ++l) {
-    s.scores[l - 1] = gaussian_scores(latents[l - 1], query_latent).cpu();
+    s.scores[l - 1] = scores[l - 1];
     s.max[l - 1] = s.scores[l - 1].numel() ? s.scores[l - 1].max().item<double>() : -1.0;
     if (s.max[l - 1] > best_max) best_max = s.max[l - 1], s.best = l;  // ties keep the lower level
   }

@@ -43,5 +43,7 @@ struct LevelScores {
   int best = 1;
 };
 LevelScores score_levels(const std::array<at::Tensor, 3>& latents, const at::Tensor& query_latent);
+// The same from each level's scores (N, CPU): a sparse field's feature cosines (gaussian_cosines).
+LevelScores level_scores(const std::array<at::Tensor, 3>& scores);
 
 }  // namespace cls

@@ -153,7 +153,7 @@ Queries prepare_queries(const LanguageModel& model, const std::string& model_dir
   const auto provider = model_provider(model, model_json, model_taxonomy(model.info, model_json, taxonomy_path));
   q.features = provider->text_features(texts).to(torch::kFloat32);
   q.canonical = provider->text_features(canonical_phrases()).to(torch::kFloat32);
-  const at::Tensor latents = model.autoencoder.encode(q.features);
+  const at::Tensor latents = model.dense_autoencoder("render").encode(q.features);
   for (size_t k = 0; k < texts.size(); ++k) q.level.push_back(score_levels(model.latents, latents[int64_t(k)]).best);
   return q;
 }
@@ -412,7 +412,7 @@ json render_views(const RenderModel& model, const Scene& scene, const RenderOpti
     Progress progress("render " + o.path, poses.size(), "frames");
     // One factorisation of the decoder's last layer for every frame.
     const std::optional<LinearHeadDecoder> decoder =
-        overlay_video ? std::optional(linear_head_decoder(model.language->autoencoder)) : std::nullopt;
+        overlay_video ? std::optional(linear_head_decoder(model.language->dense_autoencoder("render"))) : std::nullopt;
     for (size_t k = 0; k < poses.size(); ++k) {
       const cv::Mat frame = tensor_to_image(render_rgb(g, camera, poses[k], background).image);
       write_image(out / "path" / "rgb" / frame_name(int(k)), frame);

@@ -98,6 +98,7 @@ json merge_tiles(const fs::path& tiles_dir, const fs::path& out_dir) {
       if (t == 0) objects_json = objects;
       if (objects != objects_json)
         fail(LanguageModelFiles{dirs[t]}.city_objects().string(), "another city-object table than tile " + plan.tiles[0].name + "'s");
+      m.dense_autoencoder("merge");  // the tiles' latents are merged; a sparse field's codebooks would not be
       const int64_t n = m.gaussians.size();
       const at::Tensor index = in_cell(m.gaussians.means, plan.tiles[t].cell).nonzero().select(1, 0);
       naive_in_other += n - index.size(0);  // the cells cover the plane: the rest lies in other cells
@@ -114,7 +115,7 @@ json merge_tiles(const fs::path& tiles_dir, const fs::path& out_dir) {
                          {at::cat(latents[0], 0), at::cat(latents[1], 0), at::cat(latents[2], 0)},
                          std::move(first->autoencoder),
                          first->info,
-                         std::move(first->objects)};
+                         std::move(first->objects), {}};
     merged.info["scene"] = plan.scene.string();  // the district: what evaluate, render and view show
     merged.info["merged_from"] = {{"tiles_dir", fs::absolute(tiles_dir).string()}, {"tiles", plan.tiles.size()}};
     save_language_model(RunLayout(out_dir).language(method).string(), merged);

@@ -134,7 +134,7 @@ ViewerModel::ViewerModel(const fs::path& model_dir, const std::string& scene_dir
 
   // The canonical phrases' latents, normalised, and every Gaussian's highest cosine with them per level.
   const at::Tensor canonical =
-      normalised_rows(model_.autoencoder.encode(provider_->text_features(canonical_phrases()).to(at::kFloat)));
+      normalised_rows(model_.dense_autoencoder("view").encode(provider_->text_features(canonical_phrases()).to(at::kFloat)));
   for (int l = 0; l < 3; ++l) {
     normalised_[l] = normalised_rows(model_.latents[l]);
     canonical_max_[l] = std::get<0>(normalised_[l].matmul(canonical.t()).max(1)).contiguous();
@@ -217,7 +217,7 @@ std::string ViewerModel::image_path(size_t index) const {
 at::Tensor ViewerModel::text_latent(const std::string& text) {
   const auto it = text_cache_.find(text);
   if (it != text_cache_.end()) return it->second;
-  const at::Tensor q = normalised_rows(model_.autoencoder.encode(provider_->text_features({text}).to(at::kFloat)))[0];
+  const at::Tensor q = normalised_rows(model_.dense_autoencoder("view").encode(provider_->text_features({text}).to(at::kFloat)))[0];
   if (text_cache_.size() > 1000) text_cache_.clear();  // bounded: a long session types many texts
   return text_cache_[text] = q;
 }

@@ -105,7 +105,7 @@ LanguageModel make_model(int swap_a = -2, int swap_b = -2) {
   const int64_t n = int64_t(keep.size());
   LanguageModel m{make_gaussians(n, 0), {}, Autoencoder::load(f.autoencoder.string()),
                   {{"method", "hand-built"}, {"provider", provider_spec()}}};
-  const at::Tensor codes = m.autoencoder.encode(f.class_table);  // (1 + C) x 16
+  const at::Tensor codes = m.autoencoder->encode(f.class_table);  // (1 + C) x 16
   std::vector<int64_t> row1(n), row3(n);
   const int building = f.taxonomy.find("building");
   float* means = m.gaussians.means.data_ptr<float>();

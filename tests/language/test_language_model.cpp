@@ -55,7 +55,7 @@ TEST(LanguageModel, SaveLoadRoundTrip) {
   EXPECT_EQ(r.info["gaussians"], 5);
   EXPECT_EQ(r.info["latent_dim"], 4);
   const at::Tensor f = at::randn({3, 8});
-  EXPECT_TRUE(at::allclose(r.autoencoder.encode(f), m.autoencoder.encode(f)));
+  EXPECT_TRUE(at::allclose(r.autoencoder->encode(f), m.autoencoder->encode(f)));
 }
 
 TEST(LanguageModel, MissingOrInconsistentPartsNameTheFile) {

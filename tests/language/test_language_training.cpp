@@ -147,14 +147,20 @@ std::pair<double, double> target_error(const TinyScene& t, const LanguageModel& 
   double err = 0, base = 0, count = 0;
   for (int v = 0; v < 3; ++v) {
     const ViewFeatures f = view_features(v, t.sam_f, t.gml_f);
-    const at::Tensor table = m.autoencoder.encode(gml ? t.gml_f : t.sam_f);
+    // the space the field answers in: the autoencoder's latents, or the features themselves (sparse)
+    const at::Tensor table = m.is_sparse() ? (gml ? t.gml_f : t.sam_f) : m.autoencoder->encode(gml ? t.gml_f : t.sam_f);
     const LatentTarget target =
         gml ? gather_latent_target(f.gml_seg.data() + (level - 1) * kH * kW, kH, kW, table)
             : gather_latent_target(f.sam_seg.data() + level * kH * kW, kH, kW, table);
     RasterizeSettings s;
     s.camera = t.scene.views[v].camera;
     s.pose = t.scene.views[v].pose;
-    const at::Tensor img = rasterize_features(means, scales, quats, opac, m.latents[level - 1], {}, s).image;
+    const SparseLevel& sl = m.sparse[size_t(level - 1)];
+    const at::Tensor img =
+        m.is_sparse()
+            ? at::matmul(rasterize_sparse_features(means, scales, quats, opac, sl.weights, sl.indices,
+                                                   int(sl.codebook.size(0)), {}, s).image, sl.codebook)
+            : rasterize_features(means, scales, quats, opac, m.latents[level - 1], {}, s).image;
     // Pixels next to the segment boundary (x = 0) blend both sides: leave them out.
     at::Tensor w = target.valid.clone();
     for (int x = 0; x < kW; ++x)
@@ -186,6 +192,54 @@ TEST(LanguageTraining, RenderedLatentsApproachTheTargets) {
   const GaussianModel in = read_gaussians_ply(t.options.geometry_ply);
   EXPECT_TRUE(at::equal(m.gaussians.means, in.means));
   EXPECT_TRUE(at::equal(m.gaussians.opacity_logits, in.opacity_logits));
+}
+
+// The sparse field (issue 36): K softmax weights over a codebook per level, no autoencoder; its rendered
+// features (weights times codebook) approach the targets in feature space, and a resumed run equals an
+// uninterrupted one (the logits, the codebook and both Adam states are checkpointed).
+TEST(LanguageTraining, SparseFieldLearnsTheTargetsInFeatureSpace) {
+  TinyScene t;
+  t.options.field = "sparse";
+  t.options.codebook_size = 8;
+  t.options.top_k = 2;
+  t.options.autoencoder_path.clear();  // the sparse field needs none
+  train_language(t.scene, t.options);
+  const LanguageModel m = load_language_model(t.options.out_dir);
+  ASSERT_TRUE(m.is_sparse());
+  EXPECT_EQ(m.info["field"], "sparse");
+  EXPECT_EQ(m.info["top_k"], 2);
+  EXPECT_FALSE(fs::exists(fs::path(t.options.out_dir) / "autoencoder.safetensors"));
+  for (int level = 1; level <= 3; ++level) {
+    const SparseLevel& sl = m.sparse[size_t(level - 1)];
+    EXPECT_EQ(sl.codebook.sizes(), at::IntArrayRef({8, kDim}));
+    EXPECT_EQ(sl.weights.sizes(), at::IntArrayRef({m.gaussians.size(), 2}));
+    EXPECT_LT((sl.weights.sum(1) - 1).abs().max().item<double>(), 1e-5) << "softmax weights sum to 1";
+    const auto [sam_err, sam_base] = target_error(t, m, level, false);
+    const auto [gml_err, gml_base] = target_error(t, m, level, true);
+    EXPECT_LT(sam_err, 0.1 * sam_base) << "level " << level << " SAM half";
+    EXPECT_LT(gml_err, 0.1 * gml_base) << "level " << level << " CityGML half";
+  }
+
+  t.options.iterations = 10;
+  t.options.out_dir = (t.dir.path / "sparse_full").string();
+  train_language(t.scene, t.options);
+  t.options.out_dir = (t.dir.path / "sparse_resumed").string();
+  t.options.stop_after = 14;
+  t.options.checkpoint_every = 3;
+  EXPECT_TRUE(train_language(t.scene, t.options).interrupted);
+  t.options.stop_after = 0;
+  t.options.resume = true;
+  train_language(t.scene, t.options);
+  const LanguageModel full = load_language_model((t.dir.path / "sparse_full").string());
+  const LanguageModel resumed = load_language_model(t.options.out_dir);
+  for (int l = 0; l < 3; ++l) {
+    EXPECT_TRUE(at::equal(full.sparse[l].indices, resumed.sparse[l].indices)) << "level " << l + 1;
+    EXPECT_TRUE(at::equal(full.sparse[l].weights, resumed.sparse[l].weights)) << "level " << l + 1;
+    EXPECT_TRUE(at::equal(full.sparse[l].codebook, resumed.sparse[l].codebook)) << "level " << l + 1;
+  }
+  t.options.resume = false;
+  t.options.top_k = 9;
+  EXPECT_THROW(train_language(t.scene, t.options), UsageError) << "K above the codebook";
 }
 
 TEST(LanguageTraining, BaselineIgnoresCityGmlTargets) {

@@ -90,7 +90,7 @@ Fixture& fixture() {
 // Independent scores: the provider's text feature, the model's encoder, then cos per Gaussian in double.
 std::vector<double> independent_scores(const LanguageModel& m, const std::string& text, int level) {
   const auto provider = make_feature_provider(fixture().provider_spec, fixture().taxonomy);
-  const at::Tensor q = m.autoencoder.encode(provider->text_features({text})).to(torch::kFloat64)[0];
+  const at::Tensor q = m.autoencoder->encode(provider->text_features({text})).to(torch::kFloat64)[0];
   const at::Tensor g = m.latents[level - 1].to(torch::kFloat64);
   std::vector<double> s(kN);
   for (int i = 0; i < kN; ++i) {

@@ -156,7 +156,7 @@ TEST(RenderDecoded, LanguageModelLevelMatchesReferenceThenAutoencoderPerPixel) {
     for (int x = 0; x < W; x += 2) {
       const size_t p = size_t(y) * W + x;
       std::vector<float> z(ref.image.begin() + p * L, ref.image.begin() + (p + 1) * L);
-      const at::Tensor f = m.autoencoder.decode(torch::tensor(z).reshape({1, L}))[0];  // one pixel at a time
+      const at::Tensor f = m.autoencoder->decode(torch::tensor(z).reshape({1, L}))[0];  // one pixel at a time
       max_diff = std::max(max_diff, (f - v.features[y][x]).abs().max().item<double>());
     }
   EXPECT_LT(max_diff, 1e-4);
@@ -280,6 +280,58 @@ TEST(RelevanceMaps, EqualMapsOfTheWholeDecodedField) {
   EXPECT_THROW(relevance_maps(t.g, t.latents, decoder, t.camera, t.pose, queries, torch::zeros({0, D})), Error);
   EXPECT_THROW(relevance_maps(t.g, t.latents, decoder, t.camera, t.pose, torch::zeros({1, D + 1}), canonical), Error);
   EXPECT_THROW(render_latents(t.g, t.latents.slice(0, 1), t.camera, t.pose), Error);
+}
+
+// The sparse field against its reference, the dense decode (weights scattered, times the codebook): the
+// per-Gaussian cosines, and the relevance maps of the sparse splatting through the codebook's factors.
+SparseLevel random_sparse_level(int64_t n, int K, int L, int D, unsigned seed) {
+  torch::manual_seed(seed);
+  SparseLevel s;
+  s.indices = torch::randint(0, L, {n, K}, torch::kInt32);
+  s.weights = torch::rand({n, K});
+  s.weights[0].zero_();  // a Gaussian with no feature: cosine 0
+  s.codebook = torch::randn({L, D});
+  return s;
+}
+
+TEST(SparseField, CosinesEqualThoseOfTheDecodedFeatures) {
+  const SparseLevel s = random_sparse_level(50, 3, 7, 9, 4);
+  const at::Tensor dirs = torch::randn({4, 9});
+  dirs[3].zero_();
+  const at::Tensor f = sparse_features(s).to(torch::kFloat64), d = dirs.to(torch::kFloat64);
+  // the reference in double: <f, d> / (|f| |d|), 0 where either is zero
+  const at::Tensor fn = f.norm(2, {1}, true), dn = d.norm(2, {1}, true);
+  const at::Tensor expected = torch::where(fn * dn.t() > 0, f.matmul(d.t()) / (fn * dn.t()), torch::zeros({50, 4}, torch::kFloat64));
+  const at::Tensor got = sparse_cosines(s, dirs);
+  ASSERT_EQ(got.sizes(), at::IntArrayRef({50, 4}));
+  EXPECT_LT((got.to(torch::kFloat64) - expected).abs().max().item<double>(), 1e-5);
+  EXPECT_GT(expected.abs().max().item<double>(), 0.5);
+  EXPECT_THROW(sparse_cosines(s, torch::randn({2, 8})), Error);
+}
+
+TEST(SparseField, RelevanceMapsEqualMapsOfTheDecodedField) {
+  const int W = 31 + 20, H = 23, L = 6, K = 2, D = 10;
+  test::LatentScene t = test::latent_scene(60, 31, H, L, 12);
+  t.camera.width = W;  // wider than the scene: uncovered pixels too
+  const SparseLevel s = random_sparse_level(60, K, L, D, 5);
+  const at::Tensor queries = torch::randn({3, D}), canonical = torch::randn({4, D});
+  const RelevanceMaps m = relevance_maps(t.g, s, t.camera, t.pose, queries, canonical, 77);
+  const at::Tensor dense = torch::zeros({60, L}).scatter_add(1, s.indices.to(torch::kLong), s.weights);
+  const DecodedView v = render_decoded(t.g, dense, [&](const at::Tensor& w) { return w.matmul(s.codebook); }, t.camera, t.pose);
+  ASSERT_EQ(m.cosine.sizes(), at::IntArrayRef({3, H, W}));
+  EXPECT_LT((m.cosine - cosine_maps(v.features, queries)).abs().max().item<float>(), 1e-5);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_LT((m.relevancy[k] - langsplat_relevancy(v.features, queries[k], canonical)).abs().max().item<float>(), 1e-5);
+  EXPECT_TRUE(torch::allclose(m.alpha, v.alpha));
+  EXPECT_GT((m.alpha == 0).sum().item<int64_t>(), 0);
+  // Through a LanguageModel: the same maps, and gaussian_cosines as sparse_cosines.
+  LanguageModel model{t.g, {}, std::nullopt, {}, {}, {s, s, s}};
+  SceneView view;
+  view.camera = t.camera;
+  view.pose = t.pose;
+  EXPECT_TRUE(torch::equal(relevance_maps(model, 2, view, queries, canonical).cosine, m.cosine));
+  EXPECT_TRUE(torch::equal(gaussian_cosines(model, 3, queries), sparse_cosines(s, queries)));
+  EXPECT_THROW(model.dense_autoencoder("export"), UsageError);
 }
 
 }  // namespace

@@ -224,7 +224,7 @@ TEST(ViewerServer, AnswersEqualThoseOfQuery) {
   const auto provider = make_feature_provider(m.info["provider"], Taxonomy::builtin());
   std::vector<std::string> texts{"roof"};
   for (const std::string& c : canonical_phrases()) texts.push_back(c);
-  const at::Tensor latents = m.autoencoder.encode(provider->text_features(texts));
+  const at::Tensor latents = m.autoencoder->encode(provider->text_features(texts));
   const at::Tensor cos = torch::stack({gaussian_scores(m.latents[1], latents[0]), gaussian_scores(m.latents[1], latents[1]),
                                        gaussian_scores(m.latents[1], latents[2]), gaussian_scores(m.latents[1], latents[3]),
                                        gaussian_scores(m.latents[1], latents[4])}, 1);

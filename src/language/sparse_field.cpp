@@ -1,0 +1,72 @@
+#include "language/sparse_field.h"
+
+#include <ATen/ATen.h>
+
+#include <cmath>
+#include <string>
+
+#include "core/error.h"
+#include "core/log.h"
+
+namespace cls {
+
+void SparseLevel::validate(const std::string& what, int64_t n, int64_t d) const {
+  if (!codebook.defined() || codebook.dim() != 2 || codebook.size(0) < 1 || codebook.size(1) != d)
+    fail(what, cat("the codebook must be L x ", d, ", got ", codebook.defined() ? c10::str(codebook.sizes()) : "none"));
+  if (!weights.defined() || weights.dim() != 2 || weights.size(0) != n || weights.size(1) < 1 ||
+      !indices.defined() || indices.sizes() != weights.sizes())
+    fail(what, cat("weights and indices must both be ", n, " x K (one row per Gaussian)"));
+  if (indices.scalar_type() != at::kInt || weights.scalar_type() != at::kFloat || codebook.scalar_type() != at::kFloat)
+    fail(what, "indices must be int32, weights and codebook float32");
+  if (indices.numel() > 0 && (indices.min().item<int32_t>() < 0 || indices.max().item<int32_t>() >= codebook.size(0)))
+    fail(what, cat("an index lies outside the codebook's ", codebook.size(0), " bases"));
+  if (!at::isfinite(weights).all().item<bool>() || !at::isfinite(codebook).all().item<bool>())
+    fail(what, "weights or codebook hold a NaN or infinity");
+}
+
+SparseWeights top_k_softmax(const at::Tensor& logits, int k) {
+  if (logits.dim() != 2 || k < 1 || k > logits.size(1))
+    throw Error(cat("top_k_softmax: K must lie in [1, ", logits.dim() == 2 ? logits.size(1) : 0, "], got ", k));
+  const auto [values, indices] = logits.topk(k, 1);
+  return {indices.to(at::kInt).contiguous(), at::softmax(values, 1).contiguous()};
+}
+
+at::Tensor sparse_cosines(const SparseLevel& level, const at::Tensor& directions) {
+  const at::Tensor book = level.codebook.to(at::kCPU, at::kFloat);
+  const at::Tensor dirs = directions.to(at::kCPU, at::kFloat);
+  if (dirs.dim() != 2 || dirs.size(1) != book.size(1))
+    throw Error(cat("sparse_cosines: directions must be P x ", book.size(1), ", got ", c10::str(dirs.sizes())));
+  const at::Tensor unit = dirs / dirs.norm(2, {1}, true).clamp_min(1e-30);
+  const at::Tensor proj = at::matmul(book, unit.t()).contiguous();  // L x P: <b_j, q_p / |q_p|>
+  const at::Tensor gram = at::matmul(book, book.t()).contiguous();  // L x L
+  const at::Tensor idx = level.indices.to(at::kCPU).contiguous(), w = level.weights.to(at::kCPU, at::kFloat).contiguous();
+  const int64_t N = w.size(0), K = w.size(1), L = book.size(0), P = dirs.size(0);
+  at::Tensor out = at::zeros({N, P}, at::kFloat);
+  const int32_t* ip = idx.data_ptr<int32_t>();
+  const float *wp = w.data_ptr<float>(), *pp = proj.data_ptr<float>(), *gp = gram.data_ptr<float>();
+  float* op = out.data_ptr<float>();
+#pragma omp parallel for schedule(static)
+  for (int64_t i = 0; i < N; ++i) {
+    const int32_t* j = ip + i * K;
+    const float* wi = wp + i * K;
+    double norm2 = 0;  // |f_i|^2 = w^T G w over the K bases
+    for (int64_t a = 0; a < K; ++a)
+      for (int64_t b = 0; b < K; ++b) norm2 += double(wi[a]) * wi[b] * gp[int64_t(j[a]) * L + j[b]];
+    if (!(norm2 > 1e-30)) continue;
+    const float inv = float(1.0 / std::sqrt(norm2));
+    for (int64_t p = 0; p < P; ++p) {
+      float dot = 0;
+      for (int64_t a = 0; a < K; ++a) dot += wi[a] * pp[int64_t(j[a]) * P + p];
+      op[i * P + p] = dot * inv;
+    }
+  }
+  return out;
+}
+
+at::Tensor sparse_features(const SparseLevel& level) {
+  const at::Tensor dense = at::zeros({level.weights.size(0), level.codebook.size(0)}, level.weights.options())
+                               .scatter_add(1, level.indices.to(at::kLong), level.weights);
+  return at::matmul(dense, level.codebook);
+}
+
+}  // namespace cls

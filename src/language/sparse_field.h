@@ -1,0 +1,36 @@
+#pragma once
+// A sparse language field (issue 36, after LangSplatV2): per Gaussian and level K weights over a
+// codebook of L bases in the features' own space (CLIP's 512-d), so no decoder. A Gaussian's feature is
+// f_i = sum_k w_ik b_{j_ik}; a pixel's is the blend of those, i.e. its rendered L-vector of weights times
+// the codebook. Rendering splats K values per Gaussian (rasterize_sparse_features); a cosine with a
+// direction q needs only B q (L values) and the Gram matrix B B^T, never the D-d features.
+#include <ATen/core/Tensor.h>
+
+namespace cls {
+
+struct SparseLevel {
+  at::Tensor indices;   // N x K int32: the bases of each Gaussian's weights, in [0, L)
+  at::Tensor weights;   // N x K float32
+  at::Tensor codebook;  // L x D float32: the bases
+  bool defined() const { return codebook.defined(); }
+  int64_t size() const { return weights.size(0); }
+  // cls::Error naming `what` unless the shapes, dtypes and indices agree (n Gaussians, D-d bases).
+  void validate(const std::string& what, int64_t n, int64_t d) const;
+};
+
+// The top-K entries of each row of `logits` (N x L) and their softmax, LangSplatV2's sparse coefficients:
+// indices int32 N x K, weights N x K differentiable with respect to the logits (the others get no gradient).
+struct SparseWeights {
+  at::Tensor indices, weights;
+};
+SparseWeights top_k_softmax(const at::Tensor& logits, int k);
+
+// Cosine of every Gaussian's feature with each direction: directions P x D -> N x P float32 (0 where a
+// feature or a direction is zero). A pass over the Gaussians with K dot products and K^2 Gram entries
+// each: what per-Gaussian scores, selections and 3D labels cost.
+at::Tensor sparse_cosines(const SparseLevel& level, const at::Tensor& directions);
+
+// The reference: every Gaussian's D-d feature formed (weights scattered into N x L, times the codebook).
+at::Tensor sparse_features(const SparseLevel& level);
+
+}  // namespace cls
