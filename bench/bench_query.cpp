@@ -5,13 +5,19 @@
 // [text; 4 canonical phrases], relevancy (relevance_maps in src/query/relevance.h), as `query` makes them.
 // On CUDA (--device cuda) the model, latents and decoder live on the GPU and each timed map ends with a
 // device synchronisation.
+// --field sparse times the sparse field instead (language/sparse_field.h, issue 36): K random softmax-like
+// weights over a random L x 512 codebook per Gaussian, splatted sparsely, the cosines through the codebook's
+// factors. Both fields then time the per-Gaussian scores of one text at one level over all Gaussians (dense:
+// the latent cosine `query` takes, gaussian_scores; sparse: sparse_cosines, the feature cosine).
 // Usage: bench_query [--threads N] [--gaussians N] [--iters N] [--sizes 480x360,1920x1080] [--device cpu]
+//                    [--field dense|sparse] [--codebook-size 64] [--top-k 4]
 // Figures go to docs/benchmarks.md.
 #include <ATen/Parallel.h>
 #include <omp.h>
 #include <torch/cuda.h>
 #include <torch/torch.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -22,6 +28,7 @@
 #include "core/args.h"
 #include "core/error.h"
 #include "core/heap_reuse.h"
+#include "language/sparse_field.h"
 #include "query/relevance.h"
 #include "splat/compute_device.h"
 
@@ -61,15 +68,21 @@ int bench_main(int argc, char** argv) {
   Args args("bench_query", "relevance maps per second (render latents + decode + cosine/relevancy), CPU or CUDA", "");
   int threads = 2, gaussians = 200000, iters = 2;
   int64_t chunk = 0;
-  std::string sizes_text = "480x360,1920x1080", device_name = "cpu";
+  std::string sizes_text = "480x360,1920x1080", device_name = "cpu", field = "dense";
+  int codebook_size = 64, top_k = 4;
   args.bind("threads", threads, "threads (OpenMP rasterizer and LibTorch)")
       .bind("gaussians", gaussians, "number of Gaussians")
       .bind("iters", iters, "timed views per size (after one warm-up)")
       .bind("sizes", sizes_text, "view sizes WxH, comma-separated")
       .bind("chunk", chunk, "pixels decoded per decoder call (0: the device's, " + std::to_string(kDecodeChunkPixels) +
                                 " on the CPU, " + std::to_string(kDecodeChunkPixelsGpu) + " on a GPU)")
-      .bind("device", device_name, "cpu or cuda (needs a CUDA build)");
+      .bind("device", device_name, "cpu or cuda (needs a CUDA build)")
+      .bind("field", field, "dense (128-d latents and the autoencoder's decoder) or sparse (top-K over a codebook)")
+      .bind("codebook-size", codebook_size, "sparse: bases L")
+      .bind("top-k", top_k, "sparse: weights per Gaussian K");
   if (!args.parse(argc, argv)) return 0;
+  if (field != "dense" && field != "sparse") throw UsageError("--field must be dense or sparse");
+  const bool sparse = field == "sparse";
   omp_set_num_threads(threads);
   at::set_num_threads(threads);
   torch::NoGradGuard no_grad;
@@ -83,14 +96,26 @@ int bench_main(int argc, char** argv) {
   Autoencoder ae(AutoencoderConfig{}, 1);
   ae.to(device);
   const LinearHeadDecoder decoder = linear_head_decoder(ae);
+  SparseLevel level;
+  if (sparse) {
+    level.indices = torch::randint(0, codebook_size, {g.size(), top_k}, torch::kInt32).to(device);
+    level.weights = torch::softmax(torch::randn({g.size(), top_k}), 1).to(device);
+    level.codebook = torch::randn({codebook_size, 512}).to(device);
+  }
   const at::Tensor queries = torch::randn({1, 512}).to(device), canonical = torch::randn({4, 512}).to(device);
   const auto sync = [&] {
     if (device.is_cuda()) torch::cuda::synchronize();
   };
-  std::printf("%lld Gaussians, latent %d, decoder %d -> 256 -> 512, 1 text + 4 canonical phrases, %d threads, %s, "
-              "chunks of %lld pixels\n",
-              static_cast<long long>(g.size()), latent, latent, threads, device.str().c_str(),
-              static_cast<long long>(chunk > 0 ? chunk : decode_chunk_pixels(device)));
+  if (sparse)
+    std::printf("%lld Gaussians, sparse field: K %d of L %d bases (512-d), 1 text + 4 canonical phrases, %d threads, "
+                "%s, chunks of %lld pixels\n",
+                static_cast<long long>(g.size()), top_k, codebook_size, threads, device.str().c_str(),
+                static_cast<long long>(chunk > 0 ? chunk : decode_chunk_pixels(device)));
+  else
+    std::printf("%lld Gaussians, latent %d, decoder %d -> 256 -> 512, 1 text + 4 canonical phrases, %d threads, %s, "
+                "chunks of %lld pixels\n",
+                static_cast<long long>(g.size()), latent, latent, threads, device.str().c_str(),
+                static_cast<long long>(chunk > 0 ? chunk : decode_chunk_pixels(device)));
 
   std::stringstream sizes(sizes_text);
   for (std::string size; std::getline(sizes, size, ',');) {
@@ -101,12 +126,14 @@ int bench_main(int argc, char** argv) {
     double render_s = 0, total_s = 0, map_cpu = 0;
     for (int it = -1; it < iters; ++it) {
       const auto t0 = Clock::now();
-      const RenderedLatents r = render_latents(g, latents, cam, pose);  // timed alone for the split
+      const RenderedLatents r = sparse ? render_sparse(g, level, cam, pose)
+                                       : render_latents(g, latents, cam, pose);  // timed alone for the split
       sync();
       const double tr = bench::seconds_since(t0);
       const double c1 = bench::cpu_seconds();
       const auto t1 = Clock::now();
-      const RelevanceMaps m = relevance_maps(g, latents, decoder, cam, pose, queries, canonical, chunk);
+      const RelevanceMaps m = sparse ? relevance_maps(g, level, cam, pose, queries, canonical, chunk)
+                                     : relevance_maps(g, latents, decoder, cam, pose, queries, canonical, chunk);
       sync();
       const double tm = bench::seconds_since(t1);
       const double c2 = bench::cpu_seconds();
@@ -119,6 +146,18 @@ int bench_main(int argc, char** argv) {
                 W, H, 1e3 * total_s, 1e3 * render_s, 1e3 * (total_s - render_s), 1 / total_s, 1e3 * map_cpu,
                 threads / map_cpu, threads);
   }
+  // Per-Gaussian scores of one text at one level (what a selection, a 3D label or the viewer's answer costs).
+  const at::Tensor query_latent = sparse ? at::Tensor() : ae.encode(queries)[0];
+  double best = 1e30;
+  for (int it = 0; it < std::max(3, iters); ++it) {
+    const auto t0 = Clock::now();
+    const at::Tensor scores = sparse ? sparse_cosines(level, queries) : gaussian_scores(latents, query_latent);
+    sync();
+    best = std::min(best, bench::seconds_since(t0));
+    (void)scores;
+  }
+  std::printf("per-Gaussian scores, one text, one level, %lld Gaussians: %.1f ms (best of %d)\n",
+              static_cast<long long>(g.size()), 1e3 * best, std::max(3, iters));
   return 0;
 }
 

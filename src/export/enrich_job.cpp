@@ -299,16 +299,15 @@ json run_enrich(const EnrichOptions& o) {
   std::vector<std::vector<double>> class_means(city.taxonomy.classes.size());
   for (int l = 0; l < 3; ++l) {
     if (level_classes[l].empty()) continue;
-    const at::Tensor latents = model.dense_autoencoder("enrich").encode(class_prototypes(*provider, city.taxonomy, level_classes[l]));
+    const std::vector<LevelScores> scores = text_level_scores(model, class_prototypes(*provider, city.taxonomy, level_classes[l]));
     for (size_t k = 0; k < level_classes[l].size(); ++k)
-      class_means[level_classes[l][k]] = mean_scores(score_levels(model.latents, latents[static_cast<int64_t>(k)]).scores, objects, gaussian_object, seen);
+      class_means[level_classes[l][k]] = mean_scores(scores[k].scores, objects, gaussian_object, seen);
   }
   std::vector<std::vector<double>> query_means;
   const std::vector<std::string> slugs = unique_slugs(o.queries);
   if (!o.queries.empty()) {
-    const at::Tensor latents = model.dense_autoencoder("enrich").encode(provider->text_features(o.queries).to(torch::kFloat32));
-    for (size_t q = 0; q < o.queries.size(); ++q)
-      query_means.push_back(mean_scores(score_levels(model.latents, latents[static_cast<int64_t>(q)]).scores, objects, gaussian_object, seen));
+    const std::vector<LevelScores> scores = text_level_scores(model, provider->text_features(o.queries));
+    for (size_t q = 0; q < o.queries.size(); ++q) query_means.push_back(mean_scores(scores[q].scores, objects, gaussian_object, seen));
   }
 
   const std::string frame_crs = read_city_frame(transform.string()).crs;

@@ -72,11 +72,11 @@ std::vector<SplatScores> query_scores(LanguageModel& model, const fs::path& mode
   const int fixed = parse_query_level(o.level, "--level");
   const std::string model_json = LanguageModelFiles{model_dir}.model_json().string();
   const auto provider = model_provider(model, model_json, model_taxonomy(model.info, model_json, ""));
-  const at::Tensor latents = model.dense_autoencoder("export").encode(provider->text_features(o.queries).to(torch::kFloat32));
+  const std::vector<LevelScores> scores = text_level_scores(model, provider->text_features(o.queries));
   const std::vector<std::string> slugs = unique_slugs(o.queries);
   std::vector<SplatScores> out;
   for (size_t k = 0; k < o.queries.size(); ++k) {
-    const LevelScores levels = score_levels(model.latents, latents[static_cast<int64_t>(k)]);
+    const LevelScores& levels = scores[k];
     SplatScores s;
     s.id = "score_" + slugs[k];
     s.text = o.queries[k];

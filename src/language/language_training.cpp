@@ -218,7 +218,8 @@ nlohmann::json run_config(const LanguageTrainOptions& o, int64_t n, int latent, 
           {"latent_dim", latent},
           {"views", views},
           {"iterations", o.iterations}};
-  if (o.field == "sparse") c["field"] = o.field, c["codebook_size"] = o.codebook_size, c["top_k"] = o.top_k;
+  if (o.field == "sparse")
+    c["field"] = o.field, c["codebook_size"] = o.codebook_size, c["top_k"] = o.top_k, c["codebook_lr"] = o.codebook_lr;
   return c;
 }
 
@@ -301,6 +302,7 @@ const OptionList<LanguageTrainOptions>& language_train_options() {
              "codebook of CLIP-space bases per level, no decoder; docs/language.md)")
         .add("codebook-size", &O::codebook_size, "sparse field: bases per level (L)")
         .add("top-k", &O::top_k, "sparse field: weights per Gaussian and level (K)")
+        .add("codebook-lr", &O::codebook_lr, "sparse field: Adam learning rate of the codebook (--lr: the weights' logits)")
         .add("checkpoint-every", &O::checkpoint_every, "iterations between checkpoints (0 = only on interrupt)",
              R::Control)
         .add("resume", &O::resume, "continue from OUT/checkpoints/language.safetensors if present", R::Control)
@@ -318,6 +320,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
   const auto start = std::chrono::steady_clock::now();
   if (o.iterations < 1) throw UsageError("--iterations must be at least 1");
   if (o.lr <= 0) throw UsageError("--lr must be positive");
+  if (o.codebook_lr < 0) throw UsageError("--codebook-lr must not be negative (0: the codebook stays as initialised)");
   const at::Device device = compute_device(o.device);
   install_interrupt_handlers();
 
@@ -441,7 +444,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
     adam.add(adam_name(level), latents, o.lr);
     if (sparse) {
       codebook = codebook.detach().requires_grad_(true);
-      adam.add(codebook_name(level), codebook, o.lr);
+      adam.add(codebook_name(level), codebook, o.codebook_lr);
     }
     if (restored) {
       std::map<std::string, at::Tensor> tensors;

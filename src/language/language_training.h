@@ -31,6 +31,7 @@ struct LanguageTrainOptions {
   std::string field = "dense";
   int codebook_size = 64;
   int top_k = 4;
+  double codebook_lr = 0.0025;  // Adam lr of the sparse field's codebook (`lr` is its logits')
   int checkpoint_every = 1000;
   bool resume = false;
   uint64_t seed = 1;

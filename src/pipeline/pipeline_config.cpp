@@ -42,6 +42,13 @@ void PipelineConfig::validate() const {
     throw UsageError("run: no city model: give --city, or a scene.json / --config with \"city_model\"");
   if (!rgb_model.empty() && !fs::exists(rgb_model)) fail(rgb_model, "--rgb-model: file not found");
   const bool original = std::find(baselines.begin(), baselines.end(), "langsplat-original") != baselines.end();
+  if (field != "dense" && field != "sparse") throw UsageError("run: --field must be dense or sparse");
+  if (field == "sparse" && original)
+    throw UsageError("run: --field sparse has no decoder, so LangSplat as published (its own 3-d autoencoder, the "
+                     "default baseline langsplat-original) cannot train in it: give --baseline langsplat (LangSplat's "
+                     "objective in the sparse field) or none");
+  if (field == "sparse" && (codebook_size < 1 || top_k < 1 || top_k > codebook_size))
+    throw UsageError("run: --top-k must lie in [1, --codebook-size]");
   if (!autoencoder.empty() && original)
     throw UsageError("run: the baseline langsplat-original (the default) trains its own autoencoder: with --autoencoder "
                      "give --baseline langsplat or none");
@@ -130,6 +137,12 @@ OptionList<PipelineConfig> make_pipeline_options() {
            "autoencoder epochs; " + schedule_help(&Schedule::autoencoder_epochs))
       .add("lambda-sam", &C::lambda_sam, "weight of the SAM term in covered pixels")
       .add("lambda-citygml", &C::lambda_citygml, "weight of the CityGML term")
+      .add("field", &C::field,
+           "the language field of every method: dense (a latent per Gaussian, decoded by the autoencoder) or sparse "
+           "(top-K weights over a codebook of CLIP-space bases, no decoder; docs/language.md)",
+           R::Setting, choice_codec({"dense", "sparse"}))
+      .add("codebook-size", &C::codebook_size, "sparse field: bases per level")
+      .add("top-k", &C::top_k, "sparse field: weights per Gaussian and level")
       .add("baseline", &C::baselines,
            "baselines beside CityLangSplat, comma-separated: langsplat-original (the paper's baseline: LangSplat "
            "as published, its 3-d autoencoder and settings, normalised splatting), langsplat (an ablation: "

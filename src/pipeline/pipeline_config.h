@@ -32,6 +32,9 @@ struct PipelineConfig {
   // 0: the feature provider's schedule (provider_registry.h).
   int rgb_iterations = 0, language_iterations = 0, autoencoder_epochs = 0;
   double lambda_sam = 1.0, lambda_citygml = 0.5;
+  // The language field of every method (language_training.h): dense, or sparse with its codebook size and K.
+  std::string field = "dense";
+  int codebook_size = 64, top_k = 4;
   // Trained beside CityLangSplat on identical inputs (kBaselines): LangSplat's objective on the shared
   // autoencoder, and LangSplat as published (its 3-d autoencoder and training settings, normalised
   // splatting: the paper's "original implementation with its default configuration").

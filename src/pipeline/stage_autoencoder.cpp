@@ -38,6 +38,7 @@ Stage autoencoder_stage(RunContext& run, const std::string& name, const std::fil
 std::vector<Stage> autoencoder_stages(RunContext& run) {
   run.fingerprints["features"] = features_fingerprint(run.layout.features());
   std::vector<Stage> stages;
+  if (run.config.field == "sparse") return stages;  // no field decodes latents: no autoencoder
   if (!run.config.autoencoder.empty()) {
     Stage shared;
     shared.name = "autoencoder";

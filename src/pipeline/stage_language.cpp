@@ -25,18 +25,25 @@ Stage language_stage(RunContext& run, const std::string& method) {
   o.lambda_citygml = run.config.lambda_citygml;
   o.baseline = method != "citylangsplat";
   o.normalize_latents = original;  // LangSplat's renderer splats each Gaussian's normalised feature
+  o.field = run.config.field;
+  o.codebook_size = run.config.codebook_size;
+  o.top_k = run.config.top_k;
+  const bool sparse = o.field == "sparse";
+  if (sparse) o.autoencoder_path.clear();  // the sparse field has none
   o.test_every = RgbTrainOptions{}.test_every;  // train-rgb's held-out views stay unseen: evaluate scores 2D on them
   nlohmann::json settings = language_train_options().settings_json(o);
   // The baseline's objective has no lambdas (LangSplat's L1 on every pixel): changing them keeps it.
   if (o.baseline) settings.erase("lambda_sam"), settings.erase("lambda_citygml");
+  // A dense field's settings as before the sparse field existed (its stages stay reused); a sparse field's
+  // own sizes only with it.
+  if (!sparse) settings.erase("field"), settings.erase("codebook_size"), settings.erase("top_k");
   Stage s;
   s.name = per_method("train-language", method);
   s.stamp = RunLayout::stamp_in(o.out_dir);
   s.outputs = {LanguageModelFiles{o.out_dir}.model_json(), LanguageModelFiles{o.out_dir}.city_objects()};
-  s.inputs = {{"upstream",
-               {{"geometry", run.fingerprint("geometry")},
-                {"autoencoder", file_fingerprint(o.autoencoder_path)},
-                {"features", run.fingerprint("features")}}},
+  nlohmann::json upstream = {{"geometry", run.fingerprint("geometry")}, {"features", run.fingerprint("features")}};
+  if (!sparse) upstream["autoencoder"] = file_fingerprint(o.autoencoder_path);
+  s.inputs = {{"upstream", upstream},
               {"objective", o.baseline ? "langsplat" : "citylangsplat"},
               {"settings", settings}};
   s.reused_fields = {{"dir", o.out_dir}};

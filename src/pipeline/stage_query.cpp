@@ -16,7 +16,8 @@ std::vector<Stage> query_stages(RunContext& run) {
   std::vector<Stage> stages;
   for (const std::string& method : run.methods()) {
     const std::filesystem::path model_dir = run.layout.language(method);
-    const std::string latents = file_fingerprint(LanguageModelFiles{model_dir}.latents());
+    const LanguageModelFiles files{model_dir};  // the file that holds the trained field
+    const std::string latents = file_fingerprint(run.config.field == "sparse" ? files.sparse() : files.latents());
     run.fingerprints[per_method("latents", method)] = latents;
     QueryOptions q;
     q.model_dir = model_dir.string();

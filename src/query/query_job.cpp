@@ -173,12 +173,10 @@ json run_query(LanguageModel& model, FeatureProvider& provider, const std::vecto
   fs::create_directories(out);
 
   const at::Tensor text_features = provider.text_features(texts).to(device, torch::kFloat32);  // K x D
-  // Dense: the texts' latents, compared with each Gaussian's (paper 3.3). Sparse: the cosines of each
-  // Gaussian's feature with the texts, per level (N x K).
+  // Dense: the texts' latents, compared with each Gaussian's on `device` (paper 3.3). Sparse: the cosines of
+  // each Gaussian's feature with the texts (text_level_scores).
   const at::Tensor query_latents = sparse ? at::Tensor() : model.autoencoder->encode(text_features);  // K x L
-  std::array<at::Tensor, 3> feature_cosines;
-  if (sparse)
-    for (int l = 0; l < 3; ++l) feature_cosines[l] = gaussian_cosines(model, l + 1, text_features);
+  const std::vector<LevelScores> sparse_scores = sparse ? text_level_scores(model, text_features) : std::vector<LevelScores>();
   const std::vector<std::string> slugs = unique_slugs(texts);
   const int64_t K = static_cast<int64_t>(texts.size());
 
@@ -188,10 +186,7 @@ json run_query(LanguageModel& model, FeatureProvider& provider, const std::vecto
   std::vector<int> level_of(K);
   std::vector<at::Tensor> score_of(K);
   for (int64_t k = 0; k < K; ++k) {
-    const LevelScores levels =
-        sparse ? level_scores({feature_cosines[0].select(1, k).contiguous(), feature_cosines[1].select(1, k).contiguous(),
-                               feature_cosines[2].select(1, k).contiguous()})
-               : score_levels(latents_on_device, query_latents[k]);
+    const LevelScores levels = sparse ? sparse_scores[size_t(k)] : score_levels(latents_on_device, query_latents[k]);
     json level_max = json::object();
     for (int l = 1; l <= 3; ++l) level_max[std::to_string(l)] = levels.max[l - 1];
     level_of[k] = fixed_level ? fixed_level : levels.best;

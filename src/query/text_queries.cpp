@@ -77,6 +77,25 @@ LevelScores score_levels(const std::array<at::Tensor, 3>& latents, const at::Ten
   return level_scores(scores);
 }
 
+std::vector<LevelScores> text_level_scores(const LanguageModel& model, const at::Tensor& text_features) {
+  at::NoGradGuard no_grad;
+  const at::Tensor features = text_features.to(at::kCPU, at::kFloat);
+  std::vector<LevelScores> out;
+  if (!model.is_sparse()) {
+    const at::Tensor latents = model.autoencoder->encode(features);
+    std::array<at::Tensor, 3> on_cpu;
+    for (int l = 0; l < 3; ++l) on_cpu[l] = model.latents[l].to(at::kCPU);
+    for (int64_t k = 0; k < features.size(0); ++k) out.push_back(score_levels(on_cpu, latents[k]));
+    return out;
+  }
+  std::array<at::Tensor, 3> cosines;  // N x P per level
+  for (int l = 0; l < 3; ++l) cosines[l] = gaussian_cosines(model, l + 1, features);
+  for (int64_t k = 0; k < features.size(0); ++k)
+    out.push_back(level_scores({cosines[0].select(1, k).contiguous(), cosines[1].select(1, k).contiguous(),
+                                cosines[2].select(1, k).contiguous()}));
+  return out;
+}
+
 LevelScores level_scores(const std::array<at::Tensor, 3>& scores) {
   LevelScores s;
   double best_max = -2;

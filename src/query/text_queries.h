@@ -43,7 +43,11 @@ struct LevelScores {
   int best = 1;
 };
 LevelScores score_levels(const std::array<at::Tensor, 3>& latents, const at::Tensor& query_latent);
-// The same from each level's scores (N, CPU): a sparse field's feature cosines (gaussian_cosines).
+// The same from each level's scores (N, CPU).
 LevelScores level_scores(const std::array<at::Tensor, 3>& scores);
+// The LevelScores of each text (features P x D) for either field, on the CPU: dense, the cosine of each
+// Gaussian's latent with the text's encoded latent (score_levels, paper 3.3); sparse, the cosine of its
+// feature with the text's feature (gaussian_cosines).
+std::vector<LevelScores> text_level_scores(const LanguageModel& model, const at::Tensor& text_features);
 
 }  // namespace cls

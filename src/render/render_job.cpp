@@ -153,8 +153,7 @@ Queries prepare_queries(const LanguageModel& model, const std::string& model_dir
   const auto provider = model_provider(model, model_json, model_taxonomy(model.info, model_json, taxonomy_path));
   q.features = provider->text_features(texts).to(torch::kFloat32);
   q.canonical = provider->text_features(canonical_phrases()).to(torch::kFloat32);
-  const at::Tensor latents = model.dense_autoencoder("render").encode(q.features);
-  for (size_t k = 0; k < texts.size(); ++k) q.level.push_back(score_levels(model.latents, latents[int64_t(k)]).best);
+  for (const LevelScores& s : text_level_scores(model, q.features)) q.level.push_back(s.best);
   return q;
 }
 
@@ -314,7 +313,9 @@ json render_views(const RenderModel& model, const Scene& scene, const RenderOpti
       }
       if (want.features) {
         for (int l = 1; l <= 3; ++l) {
-          const RenderedLatents r = render_latents(g, model.language->latents[l - 1], view->camera, view->pose);
+          const RenderedLatents r = model.language->is_sparse()  // a sparse field's PCA runs on its rendered weights
+                                        ? render_sparse(g, model.language->sparse[l - 1], view->camera, view->pose)
+                                        : render_latents(g, model.language->latents[l - 1], view->camera, view->pose);
           if (!pca[l - 1]) pca[l - 1] = fit_feature_pca(r.latents, r.alpha >= kCoveredAlpha);
           const std::string name = "features_level" + std::to_string(l);
           write_image(dir / (name + ".png"), tensor_to_image(apply_feature_pca(*pca[l - 1], r.latents)));
@@ -411,8 +412,9 @@ json render_views(const RenderModel& model, const Scene& scene, const RenderOpti
     }
     Progress progress("render " + o.path, poses.size(), "frames");
     // One factorisation of the decoder's last layer for every frame.
+    const bool sparse = model.language && model.language->is_sparse();
     const std::optional<LinearHeadDecoder> decoder =
-        overlay_video ? std::optional(linear_head_decoder(model.language->dense_autoencoder("render"))) : std::nullopt;
+        overlay_video && !sparse ? std::optional(linear_head_decoder(*model.language->autoencoder)) : std::nullopt;
     for (size_t k = 0; k < poses.size(); ++k) {
       const cv::Mat frame = tensor_to_image(render_rgb(g, camera, poses[k], background).image);
       write_image(out / "path" / "rgb" / frame_name(int(k)), frame);
@@ -420,8 +422,10 @@ json render_views(const RenderModel& model, const Scene& scene, const RenderOpti
       if (overlay_video) {
         const int level = queries->level[0];
         const RelevanceMaps m =
-            relevance_maps(g, model.language->latents[level - 1], *decoder, camera, poses[k],
-                           queries->features.slice(0, 0, 1), queries->canonical);
+            sparse ? relevance_maps(g, model.language->sparse[level - 1], camera, poses[k], queries->features.slice(0, 0, 1),
+                                    queries->canonical)
+                   : relevance_maps(g, model.language->latents[level - 1], *decoder, camera, poses[k],
+                                    queries->features.slice(0, 0, 1), queries->canonical);
         const cv::Mat o_frame = relevance_overlay(frame, m.relevancy[0]);
         write_image(out / "path" / overlay / frame_name(int(k)), o_frame);
         overlay_video->write(o_frame);

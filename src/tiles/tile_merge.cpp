@@ -76,7 +76,8 @@ json merge_tiles(const fs::path& tiles_dir, const fs::path& out_dir) {
              " has not finished training (citylangsplat tiles status)");
   const int64_t overlaps = overlapping_cells(plan);
   if (overlaps > 0) fail((tiles_dir / "tiles.json").string(), cat(overlaps, " pairs of tile cells overlap: not a partition"));
-  const std::string shared_hash = file_fnv1a64_hex(shared_autoencoder(tiles_dir));
+  const bool sparse = read_run_settings(tiles_dir).pipeline.field == "sparse";
+  const std::string shared_hash = sparse ? "" : file_fnv1a64_hex(shared_autoencoder(tiles_dir));
 
   json report = {{"tiles_dir", fs::absolute(tiles_dir).string()}, {"scene", plan.scene.string()}, {"methods", json::object()}};
   for (const char* method : {"citylangsplat", "langsplat"}) {
@@ -85,20 +86,26 @@ json merge_tiles(const fs::path& tiles_dir, const fs::path& out_dir) {
     if (!fs::exists(LanguageModelFiles{dirs.front()}.model_json())) continue;  // e.g. run-tiles --baseline none
     std::vector<GaussianModel> kept;
     std::array<std::vector<at::Tensor>, 3> latents;
+    // Sparse: the tiles' codebooks side by side (tile t's bases after those of the tiles before it), each
+    // Gaussian's indices moved by its tile's offset; splatting still costs K per Gaussian.
+    std::array<std::vector<at::Tensor>, 3> indices, weights, codebooks;
+    std::array<int64_t, 3> bases{};
     std::optional<LanguageModel> first;
     std::string objects_json;
     json per_tile = json::array();
     int64_t naive_in_other = 0, outside_own = 0;
     for (size_t t = 0; t < plan.tiles.size(); ++t) {
       LanguageModel m = load_language_model(dirs[t].string());
-      if (file_fnv1a64_hex(LanguageModelFiles{dirs[t]}.autoencoder()) != shared_hash)
+      if (m.is_sparse() != sparse)
+        fail(LanguageModelFiles{dirs[t]}.model_json().string(), cat("a ", m.field(), " language field, but run-tiles trained ",
+                                                                   sparse ? "sparse" : "dense", " fields"));
+      if (!sparse && file_fnv1a64_hex(LanguageModelFiles{dirs[t]}.autoencoder()) != shared_hash)
         fail(LanguageModelFiles{dirs[t]}.autoencoder().string(),
              "not the shared autoencoder " + shared_autoencoder(tiles_dir).string() + ": the latents cannot be merged");
       const std::string objects = m.objects.to_json().dump();
       if (t == 0) objects_json = objects;
       if (objects != objects_json)
         fail(LanguageModelFiles{dirs[t]}.city_objects().string(), "another city-object table than tile " + plan.tiles[0].name + "'s");
-      m.dense_autoencoder("merge");  // the tiles' latents are merged; a sparse field's codebooks would not be
       const int64_t n = m.gaussians.size();
       const at::Tensor index = in_cell(m.gaussians.means, plan.tiles[t].cell).nonzero().select(1, 0);
       naive_in_other += n - index.size(0);  // the cells cover the plane: the rest lies in other cells
@@ -106,16 +113,27 @@ json merge_tiles(const fs::path& tiles_dir, const fs::path& out_dir) {
       // Counted again on what is kept, as a check of this code (must be 0).
       outside_own += index.size(0) - in_cell(part.means, plan.tiles[t].cell).sum().item<int64_t>();
       part.extras.push_back({kTileProperty, at::full({index.size(0)}, static_cast<int>(t), at::kInt)});
-      for (int l = 0; l < 3; ++l) latents[l].push_back(m.latents[l].index_select(0, index));
+      for (int l = 0; l < 3; ++l) {
+        if (!sparse) {
+          latents[l].push_back(m.latents[l].index_select(0, index));
+          continue;
+        }
+        const SparseLevel& s = m.sparse[l];
+        indices[l].push_back(s.indices.index_select(0, index) + static_cast<int32_t>(bases[l]));
+        weights[l].push_back(s.weights.index_select(0, index));
+        codebooks[l].push_back(s.codebook);
+        bases[l] += s.codebook.size(0);
+      }
       kept.push_back(std::move(part));
       per_tile.push_back({{"tile", plan.tiles[t].name}, {"gaussians", n}, {"kept", index.size(0)}});
       if (t == 0) first.emplace(std::move(m));
     }
-    LanguageModel merged{concat(kept),
-                         {at::cat(latents[0], 0), at::cat(latents[1], 0), at::cat(latents[2], 0)},
-                         std::move(first->autoencoder),
-                         first->info,
-                         std::move(first->objects), {}};
+    LanguageModel merged{concat(kept), {}, std::move(first->autoencoder), first->info, std::move(first->objects), {}};
+    for (int l = 0; l < 3; ++l)
+      if (sparse)
+        merged.sparse[l] = {at::cat(indices[l], 0), at::cat(weights[l], 0), at::cat(codebooks[l], 0)};
+      else
+        merged.latents[l] = at::cat(latents[l], 0);
     merged.info["scene"] = plan.scene.string();  // the district: what evaluate, render and view show
     merged.info["merged_from"] = {{"tiles_dir", fs::absolute(tiles_dir).string()}, {"tiles", plan.tiles.size()}};
     save_language_model(RunLayout(out_dir).language(method).string(), merged);

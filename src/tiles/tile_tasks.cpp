@@ -125,7 +125,7 @@ PipelineConfig tile_pipeline_config(const fs::path& tiles_dir, const Tile& tile,
   c.scene_dir = tiles_dir / tile.name;
   c.out_dir = tile_run_dir(tiles_dir, tile);
   read_scene_config(SceneFiles{c.scene_dir}.config(), c);
-  c.autoencoder = shared_autoencoder(tiles_dir).string();
+  if (c.field != "sparse") c.autoencoder = shared_autoencoder(tiles_dir).string();  // the sparse field has none
   c.stop_after = phase == TilePhase::Features ? "features" : "none";
   return c;
 }
@@ -154,7 +154,10 @@ int run_tile_task(const fs::path& tiles_dir, TilePhase phase, int index) {
   const std::string fingerprint = tasks_fingerprint(tiles_dir);  // what this task runs under
   const auto start = std::chrono::steady_clock::now();
   if (phase == TilePhase::Autoencoder) {
-    run_shared_autoencoder(tiles_dir, plan, settings);  // throws on failure
+    if (settings.pipeline.field == "sparse")
+      log_info("tiles: the sparse language field decodes nothing: no shared autoencoder to train");
+    else
+      run_shared_autoencoder(tiles_dir, plan, settings);  // throws on failure
   } else {
     const Tile& tile = plan.tiles[index];
     log_info(cat("tiles: ", phase_name(phase), " of ", tile.name, " (", tile.images.size(), " images)"));

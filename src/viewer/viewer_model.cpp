@@ -132,10 +132,15 @@ ViewerModel::ViewerModel(const fs::path& model_dir, const std::string& scene_dir
   const Taxonomy taxonomy = model_taxonomy(model_.info, model_json, "");
   provider_ = model_provider(model_, model_json, taxonomy);
 
-  // The canonical phrases' latents, normalised, and every Gaussian's highest cosine with them per level.
-  const at::Tensor canonical =
-      normalised_rows(model_.dense_autoencoder("view").encode(provider_->text_features(canonical_phrases()).to(at::kFloat)));
+  // Every Gaussian's highest cosine with the canonical phrases per level: with the phrases' latents, normalised
+  // (dense), or their features (sparse).
+  const at::Tensor canonical_features = provider_->text_features(canonical_phrases()).to(at::kFloat);
+  const at::Tensor canonical = model_.is_sparse() ? at::Tensor() : normalised_rows(model_.autoencoder->encode(canonical_features));
   for (int l = 0; l < 3; ++l) {
+    if (model_.is_sparse()) {
+      canonical_max_[l] = std::get<0>(sparse_cosines(model_.sparse[l], canonical_features).max(1)).contiguous();
+      continue;
+    }
     normalised_[l] = normalised_rows(model_.latents[l]);
     canonical_max_[l] = std::get<0>(normalised_[l].matmul(canonical.t()).max(1)).contiguous();
   }
@@ -217,7 +222,8 @@ std::string ViewerModel::image_path(size_t index) const {
 at::Tensor ViewerModel::text_latent(const std::string& text) {
   const auto it = text_cache_.find(text);
   if (it != text_cache_.end()) return it->second;
-  const at::Tensor q = normalised_rows(model_.dense_autoencoder("view").encode(provider_->text_features({text}).to(at::kFloat)))[0];
+  const at::Tensor features = provider_->text_features({text}).to(at::kFloat);
+  const at::Tensor q = model_.is_sparse() ? features : normalised_rows(model_.autoencoder->encode(features))[0];
   if (text_cache_.size() > 1000) text_cache_.clear();  // bounded: a long session types many texts
   return text_cache_[text] = q;
 }
@@ -244,7 +250,8 @@ ViewerAnswer ViewerModel::answer(const ViewerQuery& query) {
     double best = -2;
     for (int l = 1; l <= 3; ++l) {
       if (fixed && l != fixed) continue;
-      cosine[l - 1] = normalised_[l - 1].mv(q);
+      cosine[l - 1] = model_.is_sparse() ? sparse_cosines(model_.sparse[l - 1], q).select(1, 0).contiguous()
+                                         : normalised_[l - 1].mv(q);
       const double m = cosine[l - 1].numel() ? cosine[l - 1].max().item<double>() : -1.0;
       level_max[std::to_string(l)] = m;
       if (!fixed && m > best) best = m, level = l;

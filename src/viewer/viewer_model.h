@@ -61,11 +61,11 @@ class ViewerModel {
   static constexpr size_t kMaxQueryChars = 200;
 
  private:
-  at::Tensor text_latent(const std::string& text);  // normalised, cached per text
+  at::Tensor text_latent(const std::string& text);  // dense: its latent, normalised; sparse: its feature (1 x D); cached
 
   LanguageModel model_;
   std::unique_ptr<FeatureProvider> provider_;
-  std::array<at::Tensor, 3> normalised_;     // per level N x L, rows of unit length (0 for zero latents)
+  std::array<at::Tensor, 3> normalised_;     // dense: per level N x L, rows of unit length (0 for zero latents)
   std::array<at::Tensor, 3> canonical_max_;  // per level N: the highest cosine with a canonical phrase
   at::Tensor means_;                         // N x 3 float32
   Scene scene_;

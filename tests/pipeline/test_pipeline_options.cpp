@@ -123,6 +123,27 @@ TEST(PipelineOptions, BaselinesAreKeptOnceInOneOrder) {
   EXPECT_THROW(parse("langsplat,other"), std::invalid_argument);
 }
 
+// The sparse field has no decoder: LangSplat as published (its own autoencoder) cannot train in it, the
+// LangSplat objective can; K must fit the codebook.
+TEST(PipelineOptions, TheSparseFieldTakesTheBaselinesThatNeedNoAutoencoder) {
+  PipelineConfig c;
+  c.city = "model.gml";
+  c.field = "sparse";
+  try {
+    c.validate();
+    ADD_FAILURE() << "the default baseline langsplat-original was accepted with --field sparse";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("--baseline langsplat"), std::string::npos) << e.what();
+  }
+  c.baselines = {"langsplat"};
+  EXPECT_NO_THROW(c.validate());
+  c.top_k = c.codebook_size + 1;
+  EXPECT_THROW(c.validate(), UsageError);
+  c.top_k = 4;
+  c.field = "other";
+  EXPECT_THROW(c.validate(), UsageError);
+}
+
 // The shared autoencoder must exist from the step that reads it on; a run stopping before it (tiles
 // stop after the features) does not need it yet.
 TEST(PipelineOptions, TheAutoencoderMustExistOnlyWhereTheRunReadsIt) {

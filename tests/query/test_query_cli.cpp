@@ -198,6 +198,38 @@ TEST(QueryCli, CosineMapEqualsDecodedFieldOfTheView) {
   EXPECT_EQ(json::parse(read_text_file(out / "query.json"))["queries"][0]["level"], 2);
 }
 
+// A sparse field (issue 36) through `query`: the scores are the cosines of each Gaussian's feature (weights
+// times codebook, formed here in double) with the text's; the map is the cosine map of the decoded field.
+TEST(QueryCli, SparseFieldScoresAndMapsAreThoseOfItsFeatures) {
+  Fixture& f = fixture();
+  const LanguageModel dense = load_language_model(f.model_dir.string());
+  LanguageModel m{dense.gaussians, {}, std::nullopt, dense.info, {}, {}};
+  torch::manual_seed(6);
+  for (int l = 0; l < 3; ++l)
+    m.sparse[l] = {torch::randint(0, 5, {kN, 3}, torch::kInt32), torch::softmax(torch::randn({kN, 3}), 1),
+                   torch::randn({5, kDim})};
+  const fs::path dir = f.root / "model_sparse", out = f.root / "out_sparse";
+  save_language_model(dir.string(), m);
+  const auto r = test::run_cli("-q query " + q(dir) + " wall --level 2 --views 0002 --out " + q(out));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto provider = make_feature_provider(f.provider_spec, f.taxonomy);
+  const at::Tensor text = provider->text_features({"wall"}).to(torch::kFloat64)[0];
+  const at::Tensor features = sparse_features(m.sparse[1]).to(torch::kFloat64);
+  const at::Tensor expected = features.matmul(text) / (features.norm(2, {1}) * text.norm());
+  const GaussianModel scored = read_gaussians_ply((out / "scores.ply").string());
+  const GaussianExtra* score = scored.extra("score_wall");
+  ASSERT_NE(score, nullptr);
+  EXPECT_LT((score->values.to(torch::kFloat64).reshape({-1}) - expected).abs().max().item<double>(), 1e-5);
+  const Scene scene = load_scene(f.scene_dir.string(), SceneOptions{1, 0, false});
+  const SceneView& view = scene.views[0].name == "0002.jpg" ? scene.views[0] : scene.views[1];
+  const at::Tensor map = cosine_maps(render_decoded(m, 2, view).features, provider->text_features({"wall"}))[0];
+  const NpyArray a = read_npy(out / "maps" / "wall" / "0002_cosine.npy");
+  const at::Tensor got = torch::tensor(a.to_float()).reshape({a.shape[0], a.shape[1]});
+  EXPECT_LT((got - map).abs().max().item<float>(), 1e-5);
+  EXPECT_GT(map.abs().max().item<float>(), 0.1f);
+  EXPECT_FALSE(fs::exists(dir / "autoencoder.safetensors"));
+}
+
 TEST(QueryCli, ThresholdSelectsScoresAtOrAbove) {
   Fixture& f = fixture();
   const fs::path out = f.root / "out_threshold";

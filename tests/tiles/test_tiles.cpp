@@ -16,6 +16,7 @@
 #include "core/subprocess.h"
 #include "language/language_model.h"
 #include "models/temp_dir.h"
+#include "query/relevance.h"
 #include "tiles/local_executor.h"
 #include "tiles/slurm_executor.h"
 #include "tiles/task_script.h"
@@ -460,6 +461,50 @@ TEST(TileMerge, KeepsEachTilesOwnCellAndRefusesWhatIsNotShared) {
   EXPECT_EQ(merged.info["scene"], "/data/district");
 
   write_tile_model(model1, {8, 10, 11}, 2);  // trained with another autoencoder
+  EXPECT_THROW(merge_tiles(dir.path, dir.path / "merged2"), Error);
+}
+
+// A tile's sparse language model: Gaussians at the given x positions, K = 2 weights over a tile's own
+// codebook of 3 random bases per level.
+LanguageModel write_sparse_tile_model(const fs::path& dir, const std::vector<float>& xs, uint64_t seed) {
+  const int64_t n = static_cast<int64_t>(xs.size());
+  LanguageModel m{make_gaussians(n, 0), {}, std::nullopt, {{"method", "citylangsplat"}}, {}, {}};
+  m.gaussians.means.select(1, 0).copy_(at::tensor(xs));
+  at::manual_seed(seed);
+  for (int l = 0; l < 3; ++l)
+    m.sparse[l] = {at::randint(0, 3, {n, 2}, at::kInt), at::rand({n, 2}), at::randn({3, 8})};
+  save_language_model(dir.string(), m);
+  return m;
+}
+
+// Sparse tiles merge with their codebooks side by side: every kept Gaussian answers a text as it did in its
+// tile (the same feature cosines), whichever tile's bases it uses.
+TEST(TileMerge, SparseTilesKeepEveryGaussiansFeature) {
+  TempDir dir;
+  const TilePlan plan = two_tile_plan();
+  write_tile_plan(dir.path / "tiles.json", plan);
+  RunTilesSettings settings;
+  settings.pipeline.field = "sparse";
+  write_run_settings(dir.path, settings);
+  const fs::path model0 = tile_run_dir(dir.path, plan.tiles[0]) / "language" / "citylangsplat";
+  const fs::path model1 = tile_run_dir(dir.path, plan.tiles[1]) / "language" / "citylangsplat";
+  const LanguageModel a = write_sparse_tile_model(model0, {1, 9.5, 10, 12}, 1);
+  const LanguageModel b = write_sparse_tile_model(model1, {8, 10, 11}, 2);
+  mark_finished(dir.path, TilePhase::Train, 0);
+  mark_finished(dir.path, TilePhase::Train, 1);
+  merge_tiles(dir.path, dir.path / "merged");
+  const LanguageModel merged = load_language_model((dir.path / "merged" / "language" / "citylangsplat").string());
+  ASSERT_TRUE(merged.is_sparse());
+  const at::Tensor texts = at::randn({5, 8});
+  for (int l = 1; l <= 3; ++l) {
+    EXPECT_EQ(merged.sparse[l - 1].codebook.size(0), 6) << "both tiles' bases";
+    const at::Tensor got = gaussian_cosines(merged, l, texts);
+    // kept: 1, 9.5 of tile 0 (rows 0, 1), 10, 11 of tile 1 (rows 1, 2)
+    const at::Tensor want = at::cat({gaussian_cosines(a, l, texts).slice(0, 0, 2), gaussian_cosines(b, l, texts).slice(0, 1, 3)});
+    EXPECT_LT((got - want).abs().max().item<float>(), 1e-6) << "level " << l;
+  }
+  // A dense tile among sparse ones is refused.
+  write_tile_model(model1, {8, 10, 11}, 2);
   EXPECT_THROW(merge_tiles(dir.path, dir.path / "merged2"), Error);
 }
 

@@ -235,6 +235,33 @@ TEST(ViewerServer, AnswersEqualThoseOfQuery) {
   for (int i = 0; i < kN; ++i) ASSERT_NEAR(rel[i], expected[i].item<float>(), 1e-5) << i;
 }
 
+// A sparse field in the viewer (issue 36): the answer's scores are its feature cosines (sparse_cosines, tested
+// against the decoded features), and relevancy LangSplat's softmax of them against the canonical phrases.
+TEST(ViewerModel, AnswersASparseFieldWithItsFeatureCosines) {
+  ServedModel& s = served();
+  const LanguageModel dense = load_language_model(s.model_dir.string());
+  LanguageModel m{dense.gaussians, {}, std::nullopt, dense.info, dense.objects, {}};
+  torch::manual_seed(12);
+  for (int l = 0; l < 3; ++l)
+    m.sparse[l] = {torch::randint(0, 6, {kN, 2}, torch::kInt32), torch::softmax(torch::randn({kN, 2}), 1),
+                   torch::randn({6, kDim})};
+  const fs::path dir = s.root / "sparse_model";
+  save_language_model(dir.string(), m);
+  ViewerModel viewer(dir, s.scene_dir.string());
+  ViewerQuery query;
+  query.text = "roof";
+  query.level = "3";
+  const at::Tensor cosine = viewer.answer(query).scores;
+  const auto provider = make_feature_provider(m.info["provider"], Taxonomy::builtin());
+  std::vector<std::string> texts{"roof"};
+  for (const std::string& c : canonical_phrases()) texts.push_back(c);
+  const at::Tensor cos = sparse_cosines(m.sparse[2], provider->text_features(texts));
+  EXPECT_LT((cosine - cos.select(1, 0)).abs().max().item<float>(), 1e-6);
+  query.mode = "relevancy";
+  const at::Tensor relevancy = viewer.answer(query).scores;
+  EXPECT_LT((relevancy - relevancy_from_cosines(cos.select(1, 0), cos.slice(1, 1))).abs().max().item<float>(), 1e-5);
+}
+
 TEST(ViewerServer, ServesTheModelTheGaussiansAndThePhotos) {
   ServedModel& s = served();
   const json model = json::parse(get("/api/model").body);
