@@ -173,30 +173,18 @@ std::vector<int> epoch_order(uint64_t seed, int level, int64_t epoch, int n) {
 std::string adam_name(int level) { return "latents_l" + std::to_string(level); }
 std::string codebook_name(int level) { return "codebook_l" + std::to_string(level); }
 
-// The sparse field's first codebook of a level: codebook_size target rows (SAM and CityGML, every view)
-// drawn at random without replacement, so every basis starts as a feature the level is trained towards;
-// with fewer rows than bases, the rest are drawn again with a little noise.
+// The sparse field's first codebook of a level: k-means (LangSplatV2's start) over the targets the level is
+// trained towards, the SAM segments and CityGML regions its seg maps name in every training view.
 at::Tensor initial_codebook(const std::vector<ViewTargets>& views, int size, uint64_t seed, int level) {
   std::vector<at::Tensor> rows;
-  for (const ViewTargets& v : views) rows.push_back(v.sam_latents.cpu()), rows.push_back(v.gml_latents.cpu());
-  const at::Tensor all = at::cat(rows, 0);
-  if (all.size(0) == 0) throw Error("language training: no target features to start the sparse field's codebook from");
-  std::mt19937_64 rng(seed * 0x9E3779B97F4A7C15ull + uint64_t(level));
-  std::vector<int64_t> pick(all.size(0));
-  for (size_t i = 0; i < pick.size(); ++i) pick[i] = int64_t(i);
-  for (size_t i = pick.size() - 1; i > 0; --i) std::swap(pick[i], pick[rng() % (i + 1)]);
-  pick.resize(std::min<size_t>(pick.size(), size_t(size)));
-  while (pick.size() < size_t(size)) pick.push_back(int64_t(rng() % uint64_t(all.size(0))));
-  at::Tensor book = all.index_select(0, at::tensor(pick, at::kLong)).clone();
-  const int64_t repeats = size - std::min<int64_t>(size, all.size(0));
-  if (repeats > 0) {
-    at::Tensor noise = at::empty({repeats, book.size(1)}, at::kFloat);
-    float* np = noise.data_ptr<float>();
-    std::normal_distribution<float> normal(0.f, 0.01f);
-    for (int64_t i = 0; i < noise.numel(); ++i) np[i] = normal(rng);
-    book.slice(0, size - repeats).add_(noise);
-  }
-  return book;
+  for (const ViewTargets& v : views)
+    for (const auto& [map, table] : {std::pair{v.sam_map(level), v.sam_latents}, std::pair{v.gml_map(level), v.gml_latents}}) {
+      const at::Tensor ids = std::get<0>(at::_unique(map.reshape({-1})));
+      const at::Tensor used = ids.masked_select(ids >= 0).to(at::kLong);
+      if (used.numel() > 0) rows.push_back(table.cpu().index_select(0, used));
+    }
+  if (rows.empty()) throw Error(cat("language training: no target features at level ", level, " to start the sparse field's codebook from"));
+  return kmeans_codebook(at::cat(rows, 0), size, seed * 0x9E3779B97F4A7C15ull + uint64_t(level));
 }
 
 // What a Gaussian splats of its latent: the latent, or LangSplat's latent / (|latent| + 1e-9).
@@ -219,7 +207,8 @@ nlohmann::json run_config(const LanguageTrainOptions& o, int64_t n, int latent, 
           {"views", views},
           {"iterations", o.iterations}};
   if (o.field == "sparse")
-    c["field"] = o.field, c["codebook_size"] = o.codebook_size, c["top_k"] = o.top_k, c["codebook_lr"] = o.codebook_lr;
+    c["field"] = o.field, c["codebook_size"] = o.codebook_size, c["top_k"] = o.top_k, c["codebook_lr"] = o.codebook_lr,
+    c["sparse_warmup"] = o.sparse_warmup;
   return c;
 }
 
@@ -302,6 +291,8 @@ const OptionList<LanguageTrainOptions>& language_train_options() {
              "codebook of CLIP-space bases per level, no decoder; docs/language.md)")
         .add("codebook-size", &O::codebook_size, "sparse field: bases per level (L)")
         .add("top-k", &O::top_k, "sparse field: weights per Gaussian and level (K)")
+        .add("sparse-warmup", &O::sparse_warmup,
+             "sparse field: share of each level's iterations that splat the softmax over all bases before the top K")
         .add("codebook-lr", &O::codebook_lr, "sparse field: Adam learning rate of the codebook (--lr: the weights' logits)")
         .add("checkpoint-every", &O::checkpoint_every, "iterations between checkpoints (0 = only on interrupt)",
              R::Control)
@@ -320,6 +311,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
   const auto start = std::chrono::steady_clock::now();
   if (o.iterations < 1) throw UsageError("--iterations must be at least 1");
   if (o.lr <= 0) throw UsageError("--lr must be positive");
+  if (!(o.sparse_warmup >= 0 && o.sparse_warmup <= 1)) throw UsageError("--sparse-warmup must lie in [0, 1]");
   if (o.codebook_lr < 0) throw UsageError("--codebook-lr must not be negative (0: the codebook stays as initialised)");
   const at::Device device = compute_device(o.device);
   install_interrupt_handlers();
@@ -470,9 +462,17 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
       settings.pose = sv.pose;
       at::Tensor rendered;
       if (sparse) {  // the rendered weights times the codebook: the features the targets are compared with
-        const SparseWeights w = top_k_softmax(adam.group(adam_name(level)).param, o.top_k);
+        const at::Tensor& logits = adam.group(adam_name(level)).param;
+        // The first iterations splat the softmax over all bases, so that every logit learns which bases fit
+        // before the top K are kept (from random logits a Gaussian's K would hold the right basis by chance).
         const at::Tensor map =
-            rasterize_sparse_features(means, scales, quats, opacities, w.weights, w.indices, latent, at::Tensor(), settings).image;
+            s.iteration < int64_t(o.sparse_warmup * o.iterations)
+                ? rasterize_features(means, scales, quats, opacities, at::softmax(logits, 1), at::Tensor(), settings).image
+                : [&] {
+                    const SparseWeights w = top_k_softmax(logits, o.top_k);
+                    return rasterize_sparse_features(means, scales, quats, opacities, w.weights, w.indices, latent,
+                                                     at::Tensor(), settings).image;
+                  }();
         rendered = at::matmul(map, adam.group(codebook_name(level)).param);
       } else {
         rendered = rasterize_features(means, scales, quats, opacities, splatted(adam.group(adam_name(level)).param, o),

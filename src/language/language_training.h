@@ -32,6 +32,7 @@ struct LanguageTrainOptions {
   int codebook_size = 64;
   int top_k = 4;
   double codebook_lr = 0.0025;  // Adam lr of the sparse field's codebook (`lr` is its logits')
+  double sparse_warmup = 0.0;   // share of a level's iterations splatting the softmax over all bases
   int checkpoint_every = 1000;
   bool resume = false;
   uint64_t seed = 1;

@@ -2,8 +2,12 @@
 
 #include <ATen/ATen.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <random>
 #include <string>
+#include <vector>
 
 #include "core/error.h"
 #include "core/log.h"
@@ -29,6 +33,55 @@ SparseWeights top_k_softmax(const at::Tensor& logits, int k) {
     throw Error(cat("top_k_softmax: K must lie in [1, ", logits.dim() == 2 ? logits.size(1) : 0, "], got ", k));
   const auto [values, indices] = logits.topk(k, 1);
   return {indices.to(at::kInt).contiguous(), at::softmax(values, 1).contiguous()};
+}
+
+at::Tensor kmeans_codebook(const at::Tensor& rows, int k, uint64_t seed, int iterations) {
+  if (rows.dim() != 2 || rows.size(0) == 0 || k < 1) throw Error("kmeans_codebook: rows must be M x D with M > 0, and k >= 1");
+  const at::Tensor x = rows.to(at::kCPU, at::kFloat).contiguous();
+  const int64_t M = x.size(0);
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  if (M <= k) {  // every row a basis, then jittered copies
+    std::vector<int64_t> pick(static_cast<size_t>(k));
+    for (int64_t i = 0; i < k; ++i) pick[size_t(i)] = i < M ? i : int64_t(rng() % uint64_t(M));
+    at::Tensor book = x.index_select(0, at::tensor(pick, at::kLong)).clone();
+    if (k > M) {
+      at::Tensor noise = at::empty({k - M, x.size(1)}, at::kFloat);
+      std::normal_distribution<float> normal(0.f, 1e-3f);
+      float* np = noise.data_ptr<float>();
+      for (int64_t i = 0; i < noise.numel(); ++i) np[i] = normal(rng);
+      book.slice(0, M).add_(noise);
+    }
+    return book;
+  }
+  // k-means++: each next centre drawn with probability proportional to the squared distance to the nearest one.
+  const at::Tensor sq = (x * x).sum(1);
+  std::vector<int64_t> chosen{int64_t(rng() % uint64_t(M))};
+  at::Tensor nearest = (sq - 2 * at::mv(x, x[chosen[0]]) + sq[chosen[0]]).clamp_min(0);
+  while (int64_t(chosen.size()) < k) {
+    const at::Tensor cumulative = nearest.to(at::kDouble).cumsum(0);
+    const double total = cumulative[M - 1].item<double>();
+    int64_t next = int64_t(rng() % uint64_t(M));
+    if (total > 0) {
+      const double u = uniform(rng) * total;
+      next = std::min<int64_t>(M - 1, at::searchsorted(cumulative, at::scalar_tensor(u, at::kDouble)).item<int64_t>());
+    }
+    chosen.push_back(next);
+    nearest = at::minimum(nearest, (sq - 2 * at::mv(x, x[next]) + sq[next]).clamp_min(0));
+  }
+  at::Tensor centres = x.index_select(0, at::tensor(chosen, at::kLong)).clone();
+  at::Tensor assignment;
+  for (int it = 0; it < iterations; ++it) {
+    const at::Tensor distance = sq.unsqueeze(1) - 2 * at::matmul(x, centres.t()) + (centres * centres).sum(1).unsqueeze(0);
+    const at::Tensor next = distance.argmin(1);
+    if (assignment.defined() && at::equal(next, assignment)) break;
+    assignment = next;
+    const at::Tensor sums = at::zeros_like(centres).index_add_(0, assignment, x);
+    const at::Tensor counts = at::zeros({k}, at::kFloat).index_add_(0, assignment, at::ones({M}, at::kFloat));
+    const at::Tensor filled = counts > 0;  // an emptied cluster keeps its centre
+    centres = at::where(filled.unsqueeze(1), sums / counts.clamp_min(1).unsqueeze(1), centres);
+  }
+  return centres;
 }
 
 at::Tensor sparse_cosines(const SparseLevel& level, const at::Tensor& directions) {

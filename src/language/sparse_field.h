@@ -6,6 +6,9 @@
 // direction q needs only B q (L values) and the Gram matrix B B^T, never the D-d features.
 #include <ATen/core/Tensor.h>
 
+#include <cstdint>
+#include <string>
+
 namespace cls {
 
 struct SparseLevel {
@@ -24,6 +27,11 @@ struct SparseWeights {
   at::Tensor indices, weights;
 };
 SparseWeights top_k_softmax(const at::Tensor& logits, int k);
+
+// A codebook of k bases for `rows` (M x D float32): k-means (k-means++ seeding from `seed`, then Lloyd
+// iterations until no assignment changes or `iterations` ran), as LangSplatV2 starts its codebook. With M <= k
+// the rows themselves, then copies of them with a 1e-3 jitter. Deterministic for a seed on one machine.
+at::Tensor kmeans_codebook(const at::Tensor& rows, int k, uint64_t seed, int iterations = 30);
 
 // Cosine of every Gaussian's feature with each direction: directions P x D -> N x P float32 (0 where a
 // feature or a direction is zero). A pass over the Gaussians with K dot products and K^2 Gram entries
