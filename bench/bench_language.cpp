@@ -32,6 +32,7 @@
 #include "core/strings.h"
 #include "language/autoencoder.h"
 #include "language/language_loss.h"
+#include "language/sparse_field.h"
 #include "query/relevance.h"
 #include "splat/compute_device.h"
 #include "splat/rasterize.h"
@@ -141,6 +142,37 @@ SegTargets make_seg_targets(int width, int height, int channels, at::Generator& 
 // L1 against a random latent map; the figures before the paper's loss was timed), "seg" (the paper's
 // loss from seg maps, as train-language computes it: language_loss_from_seg) and "dense" (the same loss
 // from gathered H x W x L targets, language_loss: the reference, and what the GPU ran before seg_loss_cuda).
+// The sparse field's iterations (issue 36): "sparse" (top-K softmax of N x L logits splatted sparsely, times an
+// L x 512 codebook, the paper's loss from seg maps against 512-d targets, backward into logits and codebook)
+// and "sparse-warmup" (its first iterations: the softmax over all L bases splatted densely).
+Timing bench_sparse_training(const SceneSpec& spec, int bases, int top_k, bool warmup, int repeats,
+                             const at::Device& device) {
+  const Scene s = make_scene(spec.gaussians, spec.width, spec.height, 42, device);
+  at::Generator gen = at::detail::createCPUGenerator(7);
+  const at::Tensor logits = at::rand({spec.gaussians, bases}, gen).to(device).requires_grad_(true);
+  const at::Tensor codebook = at::rand({bases, 512}, gen).to(device).requires_grad_(true);
+  const SegTargets seg = make_seg_targets(spec.width, spec.height, 512, gen, device);
+  const auto seg_map = [&](const std::vector<int32_t>& ids) {
+    return at::from_blob(const_cast<int32_t*>(ids.data()), {spec.height, spec.width}, at::kInt);
+  };
+  const LanguageLossWeights weights;
+  return time_it(repeats, device, [&] {
+    at::Tensor map;
+    if (warmup) {
+      map = rasterize_features(s.means, s.scales, s.quats, s.opacities, at::softmax(logits, 1), at::Tensor(), s.settings).image;
+    } else {
+      const SparseWeights w = top_k_softmax(logits, top_k);
+      map = rasterize_sparse_features(s.means, s.scales, s.quats, s.opacities, w.weights, w.indices, bases, at::Tensor(),
+                                      s.settings).image;
+    }
+    language_loss_from_seg(at::matmul(map, codebook), {seg_map(seg.sam), seg.sam_table}, {seg_map(seg.gml), seg.gml_table},
+                           seg.coverage, weights)
+        .total.backward();
+    logits.mutable_grad().zero_();
+    codebook.mutable_grad().zero_();
+  });
+}
+
 Timing bench_training(const SceneSpec& spec, int channels, const std::string& loss_kind, int repeats,
                       const at::Device& device) {
   const Scene s = make_scene(spec.gaussians, spec.width, spec.height, 42, device);
@@ -175,14 +207,17 @@ Timing bench_training(const SceneSpec& spec, int channels, const std::string& lo
 
 int bench_main(int argc, char** argv) {
   Args args("bench_language", "Language-field training ms/iteration and 1080p relevance-map FPS (CPU or CUDA)", "");
-  int threads = 2, channels = 128, chunk_pixels = 65536, repeats = 3;
+  int threads = 2, channels = 128, chunk_pixels = 65536, repeats = 3, bases = 64, top_k = 4;
   std::string train_scene_text = "200000@800x600,50000@480x360", query_scene_text = "200000@1920x1080";
   std::string device_name = "cpu";
   std::vector<std::string> losses = {"l1"}, precisions = {"highest"};
   args.bind("threads", threads, "OpenMP / ATen threads")
       .bind("channels", channels, "latent channels")
       .bind("train-scenes", train_scene_text, "training scenes, N@WxH comma-separated")
-      .bind("loss", losses, "training losses to time, comma-separated: l1, seg (train-language's), dense")
+      .bind("loss", losses, "training losses to time, comma-separated: l1, seg (train-language's), dense; sparse, "
+                            "sparse-warmup (the sparse field's iterations, 512-d targets)")
+      .bind("codebook-size", bases, "sparse: bases L")
+      .bind("top-k", top_k, "sparse: weights per Gaussian K")
       .bind("query-scene", query_scene_text, "the relevance-map scene, N@WxH (empty: none)")
       .bind("chunk", chunk_pixels, "pixels decoded per autoencoder call")
       .bind("matmul-precision", precisions, "float32 product precisions to time the decode with, comma-separated "
@@ -197,8 +232,8 @@ int bench_main(int argc, char** argv) {
   const std::vector<SceneSpec> train_scenes = parse_scenes(train_scene_text);
   const std::vector<SceneSpec> query_scenes = parse_scenes(query_scene_text);  // checked before the timing
   for (const std::string& l : losses)
-    if (l != "l1" && l != "seg" && l != "dense")
-      throw UsageError("bench_language: --loss takes l1, seg or dense, got '" + l + "'");
+    if (l != "l1" && l != "seg" && l != "dense" && l != "sparse" && l != "sparse-warmup")
+      throw UsageError("bench_language: --loss takes l1, seg, dense, sparse or sparse-warmup, got '" + l + "'");
   for (const std::string& p : precisions)
     if (p != "highest" && p != "high" && p != "medium")
       throw UsageError("bench_language: --matmul-precision takes highest, high or medium, got '" + p + "'");
@@ -207,7 +242,9 @@ int bench_main(int argc, char** argv) {
               threads, channels, repeats);
   for (const SceneSpec& spec : train_scenes)
     for (const std::string& loss : losses) {
-      const Timing t = bench_training(spec, channels, loss, repeats, device);
+      const Timing t = loss.rfind("sparse", 0) == 0
+                           ? bench_sparse_training(spec, bases, top_k, loss == "sparse-warmup", repeats, device)
+                           : bench_training(spec, channels, loss, repeats, device);
       std::printf("training  %7lld Gaussians %4dx%-4d  %9.1f ms/iteration (wall)  CPU %9.1f ms  CPU/threads %9.1f ms"
                   "  loss %s\n",
                   static_cast<long long>(spec.gaussians), spec.width, spec.height, t.wall_ms, t.cpu_ms,

@@ -207,7 +207,7 @@ nlohmann::json run_config(const LanguageTrainOptions& o, int64_t n, int latent, 
           {"views", views},
           {"iterations", o.iterations}};
   if (o.field == "sparse")
-    c["field"] = o.field, c["codebook_size"] = o.codebook_size, c["top_k"] = o.top_k, c["codebook_lr"] = o.codebook_lr,
+    c["field"] = o.field, c["codebook_size"] = o.codebook_size, c["top_k"] = o.top_k, c["codebook_lr"] = o.codebook_lr, c["logit_lr"] = o.logit_lr,
     c["sparse_warmup"] = o.sparse_warmup;
   return c;
 }
@@ -280,7 +280,7 @@ const OptionList<LanguageTrainOptions>& language_train_options() {
              R::Location)
         .required()
         .add("iterations", &O::iterations, "iterations per level")
-        .add("lr", &O::lr, "Adam learning rate of the latents (LangSplat's)")
+        .add("lr", &O::lr, "Adam learning rate of the dense field's latents (LangSplat's)")
         .add("lambda-sam", &O::lambda_sam, "weight of the SAM term inside CityGML coverage")
         .add("lambda-citygml", &O::lambda_citygml, "weight of the CityGML term inside coverage")
         .add("normalize-latents", &O::normalize_latents,
@@ -293,7 +293,8 @@ const OptionList<LanguageTrainOptions>& language_train_options() {
         .add("top-k", &O::top_k, "sparse field: weights per Gaussian and level (K)")
         .add("sparse-warmup", &O::sparse_warmup,
              "sparse field: share of each level's iterations that splat the softmax over all bases before the top K")
-        .add("codebook-lr", &O::codebook_lr, "sparse field: Adam learning rate of the codebook (--lr: the weights' logits)")
+        .add("logit-lr", &O::logit_lr, "sparse field: Adam learning rate of the weights' logits")
+        .add("codebook-lr", &O::codebook_lr, "sparse field: Adam learning rate of the codebook")
         .add("checkpoint-every", &O::checkpoint_every, "iterations between checkpoints (0 = only on interrupt)",
              R::Control)
         .add("resume", &O::resume, "continue from OUT/checkpoints/language.safetensors if present", R::Control)
@@ -312,6 +313,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
   if (o.iterations < 1) throw UsageError("--iterations must be at least 1");
   if (o.lr <= 0) throw UsageError("--lr must be positive");
   if (!(o.sparse_warmup >= 0 && o.sparse_warmup <= 1)) throw UsageError("--sparse-warmup must lie in [0, 1]");
+  if (!(o.logit_lr > 0)) throw UsageError("--logit-lr must be positive");
   if (o.codebook_lr < 0) throw UsageError("--codebook-lr must not be negative (0: the codebook stays as initialised)");
   const at::Device device = compute_device(o.device);
   install_interrupt_handlers();
@@ -433,7 +435,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
     if (!latents.defined()) latents = at::zeros({n, int64_t(latent)}, at::TensorOptions(device).dtype(at::kFloat));
     latents = latents.detach().requires_grad_(true);
     adam = Adam(0.9, 0.999, 1e-15);
-    adam.add(adam_name(level), latents, o.lr);
+    adam.add(adam_name(level), latents, sparse ? o.logit_lr : o.lr);
     if (sparse) {
       codebook = codebook.detach().requires_grad_(true);
       adam.add(codebook_name(level), codebook, o.codebook_lr);
@@ -545,6 +547,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
                          {"test_every", o.test_every},
                          {"normalize_latents", o.normalize_latents},
                          {"final_loss", s.final_loss}};
+  if (sparse) info["logit_lr"] = o.logit_lr, info["codebook_lr"] = o.codebook_lr, info["sparse_warmup"] = o.sparse_warmup;
   GaussianModel frozen = geometry;
   LanguageModel model{std::move(frozen), {}, std::move(autoencoder), std::move(info), {}, {}};
   for (int l = 0; l < kLevels; ++l)

@@ -31,8 +31,9 @@ struct LanguageTrainOptions {
   std::string field = "dense";
   int codebook_size = 64;
   int top_k = 4;
-  double codebook_lr = 0.0025;  // Adam lr of the sparse field's codebook (`lr` is its logits')
-  double sparse_warmup = 0.0;   // share of a level's iterations splatting the softmax over all bases
+  double logit_lr = 0.01;       // Adam lr of the sparse field's logits (`lr`: the dense field's latents)
+  double codebook_lr = 0.0025;  // Adam lr of the sparse field's codebook
+  double sparse_warmup = 0.3;   // share of a level's iterations splatting the softmax over all bases
   int checkpoint_every = 1000;
   bool resume = false;
   uint64_t seed = 1;
