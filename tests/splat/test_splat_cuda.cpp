@@ -136,6 +136,39 @@ TEST(SplatCuda, SsimKernelsMatchTheOps) {
   }
 }
 
+// The sparse features (K weights at K of C channels) on CUDA against the CPU's sparse tile kernels: the image
+// and the weights' gradient (the CUDA path scatters the weights and runs the dense kernel).
+TEST(SplatCuda, SparseFeaturesMatchCpu) {
+  if (!torch::cuda::is_available()) GTEST_SKIP() << "no CUDA device: the sparse features are not compared with the CPU path";
+  const auto s = test::random_scene(200, 53, 37, 1, false, 71, 0.9);
+  RasterizeSettings settings;
+  settings.camera = PinholeCamera{s.cam.fx, s.cam.fy, s.cam.cx, s.cam.cy, s.cam.width, s.cam.height};
+  settings.pose.R = s.cam.R;
+  settings.pose.t = s.cam.t;
+  auto t = [](const std::vector<double>& v, std::vector<int64_t> shape) {
+    return torch::tensor(v, torch::kFloat64).reshape(shape).to(torch::kFloat32);
+  };
+  const int64_t n = s.n;
+  constexpr int K = 4, C = 64;
+  torch::manual_seed(72);
+  const torch::Tensor weights = torch::rand({n, K}), indices = torch::randint(0, C, {n, K}, torch::kInt32);
+  const torch::Tensor w = torch::randn({s.cam.height, s.cam.width, C});
+  std::vector<torch::Tensor> images, grads;
+  for (const torch::Device dev : {torch::Device(torch::kCPU), torch::Device(torch::kCUDA)}) {
+    const torch::Tensor v = weights.to(dev).detach().requires_grad_(true);
+    const auto o = rasterize_sparse_features(t(s.means, {n, 3}).to(dev), t(s.scales, {n, 3}).to(dev),
+                                             t(s.quats, {n, 4}).to(dev), t(s.opacities, {n}).to(dev), v,
+                                             indices.to(dev), C, {}, settings);
+    (o.image * w.to(dev)).sum().backward();
+    images.push_back(o.image.cpu());
+    grads.push_back(v.grad().cpu());
+  }
+  EXPECT_LT((images[1] - images[0]).abs().max().item<float>(), 1e-5f);
+  const double scale = grads[0].abs().max().item<double>();
+  ASSERT_GT(scale, 0.0);
+  EXPECT_LT((grads[1] - grads[0]).abs().max().item<double>(), 1e-4 * scale);
+}
+
 TEST(SplatCuda, ForwardMatchesCpu) {
   if (!torch::cuda::is_available()) GTEST_SKIP() << "no CUDA device: the CUDA rasterizer is not compared with the CPU path";
   compare_cuda_cpu(test::random_scene(400, 70, 45, 3, true, 31, 0.98));
