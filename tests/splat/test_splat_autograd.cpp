@@ -203,6 +203,34 @@ TEST(SplatAutograd, SparseFeaturesEqualTheirDenseScatter) {
   }
 }
 
+// The sparse weights' gradient against central finite differences of the sparse path itself, in double.
+TEST(SplatAutograd, SparseWeightGradientsMatchFiniteDifferences) {
+  constexpr int K = 3, C = 7;
+  TorchScene t = torch_scene(false, C, 45, torch::kFloat64);
+  SparseCase sc = sparse_case(t, K, C, 46);
+  t.w_image = torch::randn({t.settings.camera.height, t.settings.camera.width, C}, torch::kFloat64);
+  auto loss = [&](const torch::Tensor& w) {
+    const RasterizeOutput o = rasterize_sparse_features(t.means, t.scales, t.quats, t.opacities, w, sc.indices, C, {}, t.settings);
+    return (o.image * t.w_image).sum();
+  };
+  const torch::Tensor w = sc.weights.clone().requires_grad_(true);
+  loss(w).backward();
+  const torch::Tensor g = w.grad().reshape({-1});
+  ASSERT_GT(g.abs().max().item<double>(), 1e-3);
+  torch::Tensor flat = sc.weights.view({-1});
+  const double h = 1e-6;
+  for (int64_t k = 0; k < flat.numel(); ++k) {
+    const double x0 = flat[k].item<double>();
+    flat[k] = x0 + h;
+    const double lp = loss(sc.weights).item<double>();
+    flat[k] = x0 - h;
+    const double lm = loss(sc.weights).item<double>();
+    flat[k] = x0;
+    const double fd = (lp - lm) / (2 * h), a = g[k].item<double>();
+    EXPECT_LT(std::abs(a - fd) / std::max({std::abs(a), std::abs(fd), 1e-3}), 1e-6) << "weight " << k;
+  }
+}
+
 TEST(SplatAutograd, SparseFeaturesRejectBadIndices) {
   TorchScene t = torch_scene(false, 4, 43, torch::kFloat32);
   SparseCase sc = sparse_case(t, 2, 4, 44);
