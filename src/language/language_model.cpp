@@ -28,8 +28,8 @@ const char* const kLevelNames[3] = {"level1", "level2", "level3"};
 
 const Autoencoder& LanguageModel::dense_autoencoder(const std::string& command) const {
   if (!autoencoder)
-    throw UsageError(command + ": the model's language field is sparse (model.json \"field\"), which " + command +
-                     " does not take yet: train it with --field dense for this");
+    throw UsageError(command + ": needs the dense field's autoencoder, but the model's language field is sparse "
+                     "(model.json \"field\")");
   return *autoencoder;
 }
 

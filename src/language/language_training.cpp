@@ -424,12 +424,8 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
     if (!latents.defined() && sparse) {
       // Logits near zero with a seeded jitter: every Gaussian starts near the mean of K bases, which ones
       // decided by the noise (all-equal logits would give every Gaussian the same K).
-      at::Tensor jitter = at::empty({n, int64_t(latent)}, at::kFloat);
       std::mt19937_64 rng(o.seed * 0x100000001B3ull + uint64_t(level));
-      std::normal_distribution<float> normal(0.f, 0.01f);
-      float* jp = jitter.data_ptr<float>();
-      for (int64_t i = 0; i < jitter.numel(); ++i) jp[i] = normal(rng);
-      latents = jitter.to(device);
+      latents = normal_noise(n, latent, 0.01f, rng).to(device);
       codebook = initial_codebook(views, o.codebook_size, o.seed, level).to(device);
     }
     if (!latents.defined()) latents = at::zeros({n, int64_t(latent)}, at::TensorOptions(device).dtype(at::kFloat));
@@ -467,14 +463,14 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
         const at::Tensor& logits = adam.group(adam_name(level)).param;
         // The first iterations splat the softmax over all bases, so that every logit learns which bases fit
         // before the top K are kept (from random logits a Gaussian's K would hold the right basis by chance).
-        const at::Tensor map =
-            s.iteration < int64_t(o.sparse_warmup * o.iterations)
-                ? rasterize_features(means, scales, quats, opacities, at::softmax(logits, 1), at::Tensor(), settings).image
-                : [&] {
-                    const SparseWeights w = top_k_softmax(logits, o.top_k);
-                    return rasterize_sparse_features(means, scales, quats, opacities, w.weights, w.indices, latent,
-                                                     at::Tensor(), settings).image;
-                  }();
+        at::Tensor map;
+        if (s.iteration < int64_t(o.sparse_warmup * o.iterations)) {
+          map = rasterize_features(means, scales, quats, opacities, at::softmax(logits, 1), at::Tensor(), settings).image;
+        } else {
+          const SparseWeights w = top_k_softmax(logits, o.top_k);
+          map = rasterize_sparse_features(means, scales, quats, opacities, w.weights, w.indices, latent, at::Tensor(),
+                                          settings).image;
+        }
         rendered = at::matmul(map, adam.group(codebook_name(level)).param);
       } else {
         rendered = rasterize_features(means, scales, quats, opacities, splatted(adam.group(adam_name(level)).param, o),

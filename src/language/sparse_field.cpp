@@ -46,11 +46,7 @@ at::Tensor kmeans_codebook(const at::Tensor& rows, int k, uint64_t seed, int ite
     for (int64_t i = 0; i < k; ++i) pick[size_t(i)] = i < M ? i : int64_t(rng() % uint64_t(M));
     at::Tensor book = x.index_select(0, at::tensor(pick, at::kLong)).clone();
     if (k > M) {
-      at::Tensor noise = at::empty({k - M, x.size(1)}, at::kFloat);
-      std::normal_distribution<float> normal(0.f, 1e-3f);
-      float* np = noise.data_ptr<float>();
-      for (int64_t i = 0; i < noise.numel(); ++i) np[i] = normal(rng);
-      book.slice(0, M).add_(noise);
+      book.slice(0, M).add_(normal_noise(k - M, x.size(1), 1e-3f, rng));
     }
     return book;
   }
@@ -116,10 +112,19 @@ at::Tensor sparse_cosines(const SparseLevel& level, const at::Tensor& directions
   return out;
 }
 
-at::Tensor sparse_features(const SparseLevel& level) {
-  const at::Tensor dense = at::zeros({level.weights.size(0), level.codebook.size(0)}, level.weights.options())
-                               .scatter_add(1, level.indices.to(at::kLong), level.weights);
-  return at::matmul(dense, level.codebook);
+at::Tensor scattered_weights(const SparseLevel& level) {
+  return at::zeros({level.weights.size(0), level.codebook.size(0)}, level.weights.options())
+      .scatter_add(1, level.indices.to(at::kLong), level.weights);
+}
+
+at::Tensor sparse_features(const SparseLevel& level) { return at::matmul(scattered_weights(level), level.codebook); }
+
+at::Tensor normal_noise(int64_t rows, int64_t cols, float sigma, std::mt19937_64& rng) {
+  at::Tensor noise = at::empty({rows, cols}, at::kFloat);
+  std::normal_distribution<float> normal(0.f, sigma);
+  float* p = noise.data_ptr<float>();
+  for (int64_t i = 0; i < noise.numel(); ++i) p[i] = normal(rng);
+  return noise;
 }
 
 }  // namespace cls

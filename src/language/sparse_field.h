@@ -7,6 +7,7 @@
 #include <ATen/core/Tensor.h>
 
 #include <cstdint>
+#include <random>
 #include <string>
 
 namespace cls {
@@ -38,7 +39,12 @@ at::Tensor kmeans_codebook(const at::Tensor& rows, int k, uint64_t seed, int ite
 // each: what per-Gaussian scores, selections and 3D labels cost.
 at::Tensor sparse_cosines(const SparseLevel& level, const at::Tensor& directions);
 
-// The reference: every Gaussian's D-d feature formed (weights scattered into N x L, times the codebook).
+// Every Gaussian's weights scattered into N x L (zero at the bases it does not use; repeats add).
+at::Tensor scattered_weights(const SparseLevel& level);
+// The reference: every Gaussian's D-d feature formed (scattered_weights times the codebook).
 at::Tensor sparse_features(const SparseLevel& level);
+
+// rows x cols float32 of N(0, sigma^2), drawn in order from `rng` (the seeded starts of training).
+at::Tensor normal_noise(int64_t rows, int64_t cols, float sigma, std::mt19937_64& rng);
 
 }  // namespace cls

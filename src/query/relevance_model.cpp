@@ -35,9 +35,7 @@ DecodedView render_decoded(const LanguageModel& model, int level, const SceneVie
   if (model.is_sparse()) {
     check_level(model, level);
     const SparseLevel& s = model.sparse[size_t(level - 1)];
-    const at::Tensor dense = torch::zeros({s.size(), s.codebook.size(0)}, s.weights.options())
-                                 .scatter_add(1, s.indices.to(torch::kLong), s.weights);
-    return render_decoded(model.gaussians, dense, [&s](const at::Tensor& w) { return torch::matmul(w, s.codebook); },
+    return render_decoded(model.gaussians, scattered_weights(s), [&s](const at::Tensor& w) { return torch::matmul(w, s.codebook); },
                           view.camera, view.pose);
   }
   const Autoencoder& ae = model.dense_autoencoder("render_decoded");

@@ -55,18 +55,27 @@ void compare_cuda_cpu(const test::RandomScene& s) {
 // Gradients through the autograd function on CUDA against the CPU function (float32 both). With
 // `geometry` false only the colours/features require a gradient (a language field on frozen
 // Gaussians), which takes the CUDA backward's path without the alpha gradient.
-void compare_gradients(bool use_sh, int channels, unsigned seed, bool geometry = true) {
-  const auto s = test::random_scene(200, 53, 37, channels, use_sh, seed, 0.9);
+// The scene's camera and pose as the autograd functions take them.
+RasterizeSettings settings_of(const test::RandomScene& s) {
   RasterizeSettings settings;
   settings.camera = PinholeCamera{s.cam.fx, s.cam.fy, s.cam.cx, s.cam.cy, s.cam.width, s.cam.height};
   settings.pose.R = s.cam.R;
   settings.pose.t = s.cam.t;
-  auto t = [](const std::vector<double>& v, std::vector<int64_t> shape) {
-    return torch::tensor(v, torch::kFloat64).reshape(shape).to(torch::kFloat32);
-  };
+  return settings;
+}
+
+// One of the scene's arrays as a float32 CPU tensor of `shape`.
+torch::Tensor float_tensor(const std::vector<double>& v, std::vector<int64_t> shape) {
+  return torch::tensor(v, torch::kFloat64).reshape(shape).to(torch::kFloat32);
+}
+
+void compare_gradients(bool use_sh, int channels, unsigned seed, bool geometry = true) {
+  const auto s = test::random_scene(200, 53, 37, channels, use_sh, seed, 0.9);
+  const RasterizeSettings settings = settings_of(s);
   const int64_t n = s.n;
-  std::vector<torch::Tensor> params = {t(s.means, {n, 3}), t(s.scales, {n, 3}), t(s.quats, {n, 4}), t(s.opacities, {n}),
-                                       use_sh ? t(s.sh, {n, 16, 3}) : t(s.features, {n, channels})};
+  std::vector<torch::Tensor> params = {float_tensor(s.means, {n, 3}), float_tensor(s.scales, {n, 3}),
+                                       float_tensor(s.quats, {n, 4}), float_tensor(s.opacities, {n}),
+                                       use_sh ? float_tensor(s.sh, {n, 16, 3}) : float_tensor(s.features, {n, channels})};
   torch::manual_seed(seed);
   const auto w = torch::randn({s.cam.height, s.cam.width, s.channels});
   const auto wa = torch::randn({s.cam.height, s.cam.width});
@@ -80,7 +89,7 @@ void compare_gradients(bool use_sh, int channels, unsigned seed, bool geometry =
       p.push_back(params[k].to(dev).detach().requires_grad_(geometry || k + 1 == params.size()));
     auto means2d = torch::zeros({n, 2}, torch::dtype(torch::kFloat32).device(dev)).requires_grad_(geometry);
     RasterizeSettings sd = settings;
-    sd.background = t(s.background, {int64_t(s.background.size())}).to(dev);
+    sd.background = float_tensor(s.background, {int64_t(s.background.size())}).to(dev);
     const auto o = use_sh ? rasterize_sh(p[0], p[1], p[2], p[3], p[4], 3, means2d, sd)
                           : rasterize_features(p[0], p[1], p[2], p[3], p[4], means2d, sd);
     ((o.image * w.to(dev)).sum() + (o.alpha * wa.to(dev)).sum() + (o.depth * wd.to(dev)).sum()).backward();
@@ -141,13 +150,7 @@ TEST(SplatCuda, SsimKernelsMatchTheOps) {
 TEST(SplatCuda, SparseFeaturesMatchCpu) {
   if (!torch::cuda::is_available()) GTEST_SKIP() << "no CUDA device: the sparse features are not compared with the CPU path";
   const auto s = test::random_scene(200, 53, 37, 1, false, 71, 0.9);
-  RasterizeSettings settings;
-  settings.camera = PinholeCamera{s.cam.fx, s.cam.fy, s.cam.cx, s.cam.cy, s.cam.width, s.cam.height};
-  settings.pose.R = s.cam.R;
-  settings.pose.t = s.cam.t;
-  auto t = [](const std::vector<double>& v, std::vector<int64_t> shape) {
-    return torch::tensor(v, torch::kFloat64).reshape(shape).to(torch::kFloat32);
-  };
+  const RasterizeSettings settings = settings_of(s);
   const int64_t n = s.n;
   constexpr int K = 4, C = 64;
   torch::manual_seed(72);
@@ -156,9 +159,9 @@ TEST(SplatCuda, SparseFeaturesMatchCpu) {
   std::vector<torch::Tensor> images, grads;
   for (const torch::Device dev : {torch::Device(torch::kCPU), torch::Device(torch::kCUDA)}) {
     const torch::Tensor v = weights.to(dev).detach().requires_grad_(true);
-    const auto o = rasterize_sparse_features(t(s.means, {n, 3}).to(dev), t(s.scales, {n, 3}).to(dev),
-                                             t(s.quats, {n, 4}).to(dev), t(s.opacities, {n}).to(dev), v,
-                                             indices.to(dev), C, {}, settings);
+    const auto o = rasterize_sparse_features(float_tensor(s.means, {n, 3}).to(dev), float_tensor(s.scales, {n, 3}).to(dev),
+                                             float_tensor(s.quats, {n, 4}).to(dev), float_tensor(s.opacities, {n}).to(dev),
+                                             v, indices.to(dev), C, {}, settings);
     (o.image * w.to(dev)).sum().backward();
     images.push_back(o.image.cpu());
     grads.push_back(v.grad().cpu());
