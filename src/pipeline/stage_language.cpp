@@ -34,9 +34,11 @@ Stage language_stage(RunContext& run, const std::string& method) {
   nlohmann::json settings = language_train_options().settings_json(o);
   // The baseline's objective has no lambdas (LangSplat's L1 on every pixel): changing them keeps it.
   if (o.baseline) settings.erase("lambda_sam"), settings.erase("lambda_citygml");
-  // A dense field's settings as before the sparse field existed (its stages stay reused); a sparse field's
-  // own sizes only with it.
-  if (!sparse) settings.erase("field"), settings.erase("codebook_size"), settings.erase("top_k");
+  // A dense field's settings as before the sparse field existed (its stages stay reused): the sparse field's
+  // own options only with it.
+  if (!sparse)
+    for (const char* key : {"field", "codebook_size", "top_k", "logit_lr", "codebook_lr", "sparse_warmup"})
+      settings.erase(key);
   Stage s;
   s.name = per_method("train-language", method);
   s.stamp = RunLayout::stamp_in(o.out_dir);
