@@ -5,7 +5,7 @@
 # Steps: splat_tests (the CUDA rasterizer against the CPU path), query_tests (relevance cosines on CUDA
 # against the CPU path), language_tests (the language loss's CUDA kernel against its reference),
 # models_tests (CLIP/SAM fixture parity on CUDA), bench_* (rasterizer, CLIP, language field, relevance
-# maps, SAM AMG on the GPU), run (`run --models clip-tiny` on the bundled example), query_gpu (after run:
+# maps, SAM AMG on the GPU; the sparse field's training iterations and maps too), run (`run --models clip-tiny` on the bundled example), query_gpu (after run:
 # `query --device cuda` on its model against run's CPU query, scripts/device/compare_query.py), train_rgb
 # (densification, the cap and resuming on the GPU), suite (every test program carried, 16 at a time, one
 # OpenMP thread each), profile_splat / profile_language (every kernel's duration under Nsight Compute: one
@@ -93,14 +93,16 @@ for s in "${steps[@]}"; do
       done ;;
     bench_language)
       step "$s" 180 "$B/bench/bench_language" --device cuda --threads 16 --repeats 10 \
-        --train-scenes 50000@480x360,200000@800x600,1000000@1600x1000 --loss l1,dense,seg \
+        --train-scenes 50000@480x360,200000@800x600,1000000@1600x1000 --loss l1,dense,seg,sparse,sparse-warmup \
         --query-scene 200000@1920x1080 --matmul-precision highest,high
       step bench_language_chunk256k 60 "$B/bench/bench_language" --device cuda --threads 16 --repeats 10 \
         --train-scenes '' --query-scene 200000@1920x1080 --chunk 262144 ;;
     bench_query)  # relevance_maps as `query` calls it, 1080p, per decode chunk (0: the device's default)
       for c in 8192 65536 0 1048576; do
         step "bench_query_chunk$c" 90 "$B/bench/bench_query" --device cuda --threads 16 --sizes 1920x1080 --iters 5 --chunk $c
-      done ;;
+      done
+      # the sparse field (issue 36): K = 4 of 64 bases through the sparse kernels
+      step bench_query_sparse 90 "$B/bench/bench_query" --device cuda --threads 16 --sizes 1920x1080 --iters 5 --field sparse ;;
     bench_amg) step "$s" 120 "$B/bench/bench_amg" --device cuda --masks '' --model vit_h --threads 16 ;;
     amg_fixture)
       step "$s" 90 "$B/bench/bench_amg" --device cuda --masks '' --fixture "$ROOT/tests/fixtures/sam" --threads 16 ;;

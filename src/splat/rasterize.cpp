@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "splat/rasterize_cpu.h"
+#include "splat/rasterize_cuda.h"
 
 #ifdef CLS_WITH_CUDA
 #include <c10/cuda/CUDACachingAllocator.h>
@@ -11,7 +12,6 @@
 #include <c10/cuda/CUDAStream.h>
 
 #include "splat/cuda_check.h"
-#include "splat/rasterize_cuda.h"
 #endif
 
 namespace cls {
@@ -63,7 +63,7 @@ void torch_cuda_free(void* p) { c10::cuda::CUDACachingAllocator::raw_delete(p); 
 
 CudaSplatArgs cuda_args(const SplatCamera<float>& cam, const at::Tensor& means, const at::Tensor& scales,
                         const at::Tensor& quats, const at::Tensor& opacities, const at::Tensor& values, int sh_degree,
-                        const at::Tensor& background) {
+                        const at::Tensor& background, const at::Tensor& index, int channels) {
   CudaSplatArgs a;
   a.cam = cam;
   a.n = static_cast<int>(means.size(0));
@@ -72,7 +72,8 @@ CudaSplatArgs cuda_args(const SplatCamera<float>& cam, const at::Tensor& means, 
   if (sh_degree >= 0) {
     a.sh = values.data_ptr<float>(), a.sh_degree = sh_degree, a.channels = 3;
   } else {
-    a.features = values.data_ptr<float>(), a.channels = static_cast<int>(values.size(1));
+    a.features = values.data_ptr<float>(), a.channels = channels;
+    if (index.numel() > 0) a.feature_index = index.data_ptr<int32_t>(), a.nnz = static_cast<int>(values.size(1));
   }
   a.background = background.defined() ? background.data_ptr<float>() : nullptr;
   a.allocator.alloc = torch_cuda_alloc;
@@ -85,7 +86,7 @@ CudaSplatArgs cuda_args(const SplatCamera<float>& cam, const at::Tensor& means, 
 class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
  public:
   // values: SH N x (degree+1)^2 x 3 when sh_degree >= 0, else features N x C, or with a non-empty `index`
-  // (int32 N x K, CPU only) sparse features N x K at those channels of C. All contiguous, one dtype.
+  // (int32 N x K) sparse features N x K at those channels of C. All contiguous, one dtype.
   static variable_list forward(AutogradContext* ctx, at::Tensor means, at::Tensor scales, at::Tensor quats,
                                at::Tensor opacities, at::Tensor values, at::Tensor means2d, at::Tensor index,
                                int64_t sh_degree, int64_t channels, const RasterizeSettings* settings) {
@@ -106,7 +107,7 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
       holder = torch::from_blob(saved, {1}, [](void* p) { delete static_cast<CudaSavedState*>(p); },
                                 torch::TensorOptions().dtype(torch::kUInt8));
       saved->cam = make_splat_camera<float>(cam, settings->pose);
-      CudaSplatArgs a = cuda_args(saved->cam, means, scales, quats, opacities, values, int(sh_degree), bg);
+      CudaSplatArgs a = cuda_args(saved->cam, means, scales, quats, opacities, values, int(sh_degree), bg, index, C);
       a.image = image.data_ptr<float>(), a.alpha = alpha.data_ptr<float>(), a.depth = depth.data_ptr<float>();
       void* stream = c10::cuda::getCurrentCUDAStream().stream();
       check_cuda(rasterize_forward_cuda(a, saved->state, stream), "rasterize: forward");
@@ -169,7 +170,8 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
 #ifdef CLS_WITH_CUDA
       const c10::cuda::CUDAGuard guard(means.device());
       const auto& saved_state = *static_cast<const CudaSavedState*>(state_ptr);
-      const CudaSplatArgs a = cuda_args(saved_state.cam, means, scales, quats, opacities, values, sh_degree, bg);
+      const CudaSplatArgs a =
+          cuda_args(saved_state.cam, means, scales, quats, opacities, values, sh_degree, bg, index, channels);
       CudaSplatGrads g;
       fill(g, float{});
       auto ptr = [](const at::Tensor& t) -> const float* { return t.defined() ? t.data_ptr<float>() : nullptr; };
@@ -282,8 +284,12 @@ RasterizeOutput rasterize_sparse_features(const at::Tensor& means, const at::Ten
   if (channels < 1) throw Error("rasterize_sparse_features: channels must be positive");
   if (indices.numel() > 0 && (indices.min().item<int32_t>() < 0 || indices.max().item<int32_t>() >= channels))
     throw Error("rasterize_sparse_features: an index lies outside [0, " + std::to_string(channels) + ")");
-  if (means.is_cuda()) {
-    // No sparse CUDA kernel yet: the weights scattered into N x C dense features (the same image).
+  // The sparse CUDA kernels take up to kCudaSparseMaxNnz weights and give their gradient alone; with more, or
+  // with geometry gradients, the weights scattered into N x C dense features (the same image and gradients).
+  const bool geometry_grad = means.requires_grad() || scales.requires_grad() || quats.requires_grad() ||
+                             opacities.requires_grad() || (means2d.defined() && means2d.requires_grad()) ||
+                             settings.mean2d_abs_grad.defined();
+  if (means.is_cuda() && (geometry_grad || weights.size(1) > kCudaSparseMaxNnz)) {
     const at::Tensor dense = torch::zeros({means.size(0), channels}, weights.options())
                                  .scatter_add(1, indices.to(torch::kLong), weights);
     return rasterize_features(means, scales, quats, opacities, dense, means2d, settings);

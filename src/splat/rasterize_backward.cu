@@ -1,7 +1,8 @@
 // CUDA backward rasterizer: per-tile blocks re-walk each pixel's list backwards from its last
 // contributor (the original 3DGS renderCUDA backward), with the per-pixel math of blend_pixel.h and
 // the per-Gaussian backward of project_gaussian.h / sh.h, shared with the CPU path. Gradients of a
-// Gaussian are summed over each warp's pixels before the atomic add.
+// Gaussian are summed over each warp's pixels before the atomic add. Sparse features get their weights'
+// gradient only: per Gaussian nnz products of w = alpha T with the image gradient at its channels.
 #include <cuda_runtime.h>
 
 #include "splat/blend_pixel.h"
@@ -21,12 +22,14 @@ struct BackwardArgs {
   const ProjectedGaussian<float>* proj;
   const float* opacities;
   const float* values;  // N x channels (SH colours or features)
+  const int32_t* index;  // sparse features: N x nnz channels of the weights, or null
+  int nnz;
   const float* background;
   const float* final_T;
   const int32_t* n_contrib;
   const float *dL_dimage, *dL_dalpha, *dL_ddepth;
   float* geom_grad;   // N x kGeomEntries, or null without geometry gradients
-  float* value_grad;  // N x channels
+  float* value_grad;  // N x channels, or N x nnz
 };
 
 constexpr unsigned kFullWarp = 0xffffffffu;
@@ -68,8 +71,10 @@ __device__ __forceinline__ float warp_transpose_sum(float (&v)[K], int lane) {
 // GEOMETRY: the alpha gradient and all that follows from it, which needs every channel in one pass
 // (channels beyond 128 are read from global memory). Without it (features on frozen geometry) only
 // w = alpha T is needed per pixel, and each blockIdx.z takes its own CMAX channels.
-template <int CMAX, bool GEOMETRY>
+// SPARSE (without GEOMETRY): CMAX is nnz rounded up to a power of two, the entries summed per Gaussian.
+template <int CMAX, bool GEOMETRY, bool SPARSE = false>
 __global__ void __launch_bounds__(kCudaBlock) render_backward_kernel(BackwardArgs r) {
+  static_assert(!(SPARSE && GEOMETRY), "sparse features take no geometry gradient");
   constexpr int kGroup = CMAX < 32 ? CMAX : 32;  // value-gradient entries reduced together
   // with few channels, the value gradients ride in the geometry's reduction (9 + 4 <= 16 entries)
   constexpr bool kJoint = GEOMETRY && CMAX <= 4;
@@ -86,6 +91,7 @@ __global__ void __launch_bounds__(kCudaBlock) render_backward_kernel(BackwardArg
   __shared__ float s_mean[kCudaBlock][2];
   __shared__ float s_conic[kCudaBlock][3];
   __shared__ float s_op[kCudaBlock], s_cut[kCudaBlock], s_depth[kCudaBlock];
+  __shared__ int32_t s_idx[SPARSE ? kCudaBlock * CMAX : 1];  // a batch's channels of the sparse weights
 
   const int C = r.channels;
   const int cz = GEOMETRY ? 0 : blockIdx.z * CMAX;  // the first channel in registers
@@ -93,7 +99,7 @@ __global__ void __launch_bounds__(kCudaBlock) render_backward_kernel(BackwardArg
   const float* dpix = has_image && inside ? r.dL_dimage + pix * C : nullptr;
   float dp[CMAX];  // this pixel's image gradient from channel cz, zero beyond C and outside the image
 #pragma unroll
-  for (int c = 0; c < CMAX; ++c) dp[c] = dpix && cz + c < C ? dpix[cz + c] : 0.f;
+  for (int c = 0; c < CMAX; ++c) dp[c] = !SPARSE && dpix && cz + c < C ? dpix[cz + c] : 0.f;
   const int last = inside ? r.n_contrib[pix] : 0;
   const float T_final = inside ? r.final_T[pix] : 0.f;
   const float dA = inside && r.dL_dalpha ? r.dL_dalpha[pix] : 0.f;
@@ -116,6 +122,8 @@ __global__ void __launch_bounds__(kCudaBlock) render_backward_kernel(BackwardArg
       s_op[tid] = r.opacities[id];
       s_cut[tid] = alpha_cutoff_power(s_op[tid]);
       s_depth[tid] = p.depth;
+      if constexpr (SPARSE)
+        for (int q = 0; q < r.nnz; ++q) s_idx[tid * CMAX + q] = r.index[static_cast<size_t>(id) * r.nnz + q];
     }
     __syncthreads();
     const int batch = min(kCudaBlock, total - start);
@@ -134,7 +142,7 @@ __global__ void __launch_bounds__(kCudaBlock) render_backward_kernel(BackwardArg
       if (!__any_sync(kFullWarp, contributes)) continue;
       const uint32_t id = s_id[j];
       const float* v = r.values + static_cast<size_t>(id) * C;
-      float* vg = r.value_grad + static_cast<size_t>(id) * C;
+      float* vg = r.value_grad + static_cast<size_t>(id) * (SPARSE ? r.nnz : C);
       float w = 0.f;
       if (contributes) {
         T = T / (1.f - a);
@@ -172,7 +180,15 @@ __global__ void __launch_bounds__(kCudaBlock) render_backward_kernel(BackwardArg
         if (lane < kGeomEntries) atomicAdd(r.geom_grad + static_cast<size_t>(id) * kGeomEntries + lane, sum);
         else if (kJoint && has_image && lane < kGeomEntries + C) atomicAdd(vg + (lane - kGeomEntries), sum);
       }
-      if constexpr (!kJoint) {
+      if constexpr (SPARSE) {
+        if (has_image) {
+          float t[CMAX];
+#pragma unroll
+          for (int q = 0; q < CMAX; ++q) t[q] = dpix && q < r.nnz ? w * dpix[s_idx[j * CMAX + q]] : 0.f;
+          const float sum = warp_transpose_sum<CMAX>(t, lane);
+          if (lane < r.nnz) atomicAdd(vg + lane, sum);
+        }
+      } else if constexpr (!kJoint) {
         if (has_image) {
 #pragma unroll
           for (int c0 = 0; c0 < CMAX; c0 += kGroup) {
@@ -198,10 +214,10 @@ __global__ void __launch_bounds__(kCudaBlock) render_backward_kernel(BackwardArg
   }
 }
 
-template <int CMAX, bool GEOMETRY>
+template <int CMAX, bool GEOMETRY, bool SPARSE = false>
 void launch_backward(const BackwardArgs& r, int tiles_y, cudaStream_t stream) {
-  const dim3 grid(r.tiles_x, tiles_y, GEOMETRY ? 1 : (r.channels + CMAX - 1) / CMAX), block(kTileSize, kTileSize);
-  render_backward_kernel<CMAX, GEOMETRY><<<grid, block, 0, stream>>>(r);
+  const dim3 grid(r.tiles_x, tiles_y, GEOMETRY || SPARSE ? 1 : (r.channels + CMAX - 1) / CMAX), block(kTileSize, kTileSize);
+  render_backward_kernel<CMAX, GEOMETRY, SPARSE><<<grid, block, 0, stream>>>(r);
 }
 
 // geom_grad is null when no geometry gradient is asked for (then only SH coefficients get one).
@@ -251,6 +267,8 @@ int rasterize_backward_cuda(const CudaSplatArgs& a, const CudaForwardState& s, c
   const CudaAllocator& al = a.allocator;
   const bool geometry = grads.means || grads.scales || grads.quats || grads.opacities || grads.mean2d ||
                         grads.mean2d_abs;
+  const bool sparse = !a.sh && a.feature_index;
+  if (sparse && (geometry || a.nnz < 1 || a.nnz > kCudaSparseMaxNnz)) return int(cudaErrorInvalidValue);
   float *geom = nullptr, *color_grad = nullptr;
   cudaError_t err = cudaSuccess;
   if (geometry) {
@@ -266,9 +284,15 @@ int rasterize_backward_cuda(const CudaSplatArgs& a, const CudaForwardState& s, c
   if (err == cudaSuccess && s.instances > 0 && (geometry || grads.sh || grads.features)) {
     const int tiles_x = a.cam.tiles_x(), tiles_y = a.cam.tiles_y();
     BackwardArgs r{a.cam.width, a.cam.height, tiles_x, C, s.ranges, s.ids, s.proj, a.opacities,
-                   a.sh ? s.colors : a.features, a.background, s.final_T, s.n_contrib, dL_dimage, dL_dalpha,
-                   dL_ddepth, geom, value_grad};
-    if (!geometry) {  // value gradients alone: up to 64 channels per block (128 in one was slower)
+                   a.sh ? s.colors : a.features, sparse ? a.feature_index : nullptr, sparse ? a.nnz : 0, a.background,
+                   s.final_T, s.n_contrib, dL_dimage, dL_dalpha, dL_ddepth, geom, value_grad};
+    if (sparse) {
+      if (r.nnz == 1) launch_backward<1, false, true>(r, tiles_y, stream);
+      else if (r.nnz == 2) launch_backward<2, false, true>(r, tiles_y, stream);
+      else if (r.nnz <= 4) launch_backward<4, false, true>(r, tiles_y, stream);
+      else if (r.nnz <= 8) launch_backward<8, false, true>(r, tiles_y, stream);
+      else launch_backward<16, false, true>(r, tiles_y, stream);
+    } else if (!geometry) {  // value gradients alone: up to 64 channels per block (128 in one was slower)
       if (C <= 4) launch_backward<4, false>(r, tiles_y, stream);
       else if (C <= 8) launch_backward<8, false>(r, tiles_y, stream);
       else if (C <= 16) launch_backward<16, false>(r, tiles_y, stream);

@@ -19,6 +19,8 @@ struct CudaAllocator {
   void (*free)(void* p) = nullptr;
 };
 
+constexpr int kCudaSparseMaxNnz = 16;
+
 // Every pointer is device memory, layouts as SplatInputs (rasterize_cpu.h); outputs H x W x C image,
 // H x W alpha and depth.
 struct CudaSplatArgs {
@@ -30,8 +32,12 @@ struct CudaSplatArgs {
   const float* opacities = nullptr;
   const float* sh = nullptr;  // N x (degree+1)^2 x 3, or null for features
   int sh_degree = -1;
-  const float* features = nullptr;  // N x channels
+  const float* features = nullptr;  // N x channels, or N x nnz with feature_index
   int channels = 3;
+  // Sparse features (as SplatInputs): nnz weights per Gaussian at the channels feature_index (N x nnz) gives,
+  // at most kCudaSparseMaxNnz; the backward then gives the weights' gradient only (no geometry).
+  const int32_t* feature_index = nullptr;
+  int nnz = 0;
   const float* background = nullptr;  // channels values or null
   float* image = nullptr;
   float* alpha = nullptr;

@@ -2,7 +2,9 @@
 // (tile, depth), tile ranges, per-tile blending with shared-memory batches). Channel count is
 // processed in compile-time chunks (CHUNK channels per block, gridDim.z chunks), so RGB runs one
 // chunk of 3 and 128 latent channels run two chunks of 64 (on an H100, 64 with the backward's 64 took
-// a language iteration at 200k Gaussians from 8.9 to 8.4 ms; docs/benchmarks.md).
+// a language iteration at 200k Gaussians from 8.9 to 8.4 ms; docs/benchmarks.md). Sparse features (nnz
+// weights per Gaussian at channels of its own) blend nnz values per Gaussian and pixel into the chunk's
+// channels, as the CPU tile kernels do.
 #include <cuda_runtime.h>
 
 #include <cub/cub.cuh>
@@ -84,13 +86,15 @@ struct RenderArgs {
   const uint32_t* ids;
   const ProjectedGaussian<float>* proj;
   const float* opacities;
-  const float* values;  // N x channels
+  const float* values;  // N x channels, or N x nnz with index
+  const int32_t* index;  // N x nnz channels of the values, or null
+  int nnz;
   const float* background;
   float *image, *alpha, *depth, *final_T;
   int32_t* n_contrib;
 };
 
-template <int CHUNK>
+template <int CHUNK, bool SPARSE>
 __global__ void __launch_bounds__(kBlock) render_kernel(RenderArgs r) {
   const int tile = blockIdx.y * r.tiles_x + blockIdx.x;
   const int c0 = blockIdx.z * CHUNK;
@@ -104,7 +108,9 @@ __global__ void __launch_bounds__(kBlock) render_kernel(RenderArgs r) {
   __shared__ float s_mean[kBlock][2];
   __shared__ float s_conic[kBlock][3];
   __shared__ float s_op[kBlock], s_cut[kBlock], s_depth[kBlock];
-  extern __shared__ __align__(16) float s_val[];  // kBlock x CHUNK values (dynamic: 64 KB at 64 channels)
+  // kBlock x CHUNK values (dynamic: 64 KB at 64 channels); SPARSE: kBlock x nnz weights, then their channels
+  extern __shared__ __align__(16) float s_val[];
+  int32_t* const s_idx = reinterpret_cast<int32_t*>(s_val + kBlock * r.nnz);
   bool done = !inside;
   float T = 1.f, d = 0.f, acc[CHUNK];
   for (int c = 0; c < CHUNK; ++c) acc[c] = 0.f;
@@ -121,8 +127,11 @@ __global__ void __launch_bounds__(kBlock) render_kernel(RenderArgs r) {
       s_op[tid] = r.opacities[id];
       s_cut[tid] = alpha_cutoff_power(s_op[tid]);
       s_depth[tid] = p.depth;
-      const float* v = r.values + static_cast<size_t>(id) * r.channels + c0;
-      if (CHUNK % 4 == 0 && vector_values && c0 + CHUNK <= r.channels) {
+      if constexpr (SPARSE) {
+        const size_t row = static_cast<size_t>(id) * r.nnz;
+        for (int q = 0; q < r.nnz; ++q) s_val[tid * r.nnz + q] = r.values[row + q], s_idx[tid * r.nnz + q] = r.index[row + q];
+      } else if (const float* v = r.values + static_cast<size_t>(id) * r.channels + c0;
+                 CHUNK % 4 == 0 && vector_values && c0 + CHUNK <= r.channels) {
         for (int q = 0; q < CHUNK / 4; ++q)
           reinterpret_cast<float4*>(s_val + tid * CHUNK)[q] = __ldg(reinterpret_cast<const float4*>(v) + q);
       } else {
@@ -144,7 +153,12 @@ __global__ void __launch_bounds__(kBlock) render_kernel(RenderArgs r) {
         continue;
       }
       const float w = a * T;
-      if constexpr (CHUNK % 4 == 0) {  // one 16-byte shared load per four channels
+      if constexpr (SPARSE) {  // acc indexed at run time (local memory): the weights in this chunk's channels
+        for (int q = 0; q < r.nnz; ++q) {
+          const int c = s_idx[j * r.nnz + q] - c0;
+          if (c >= 0 && c < CHUNK) acc[c] += w * s_val[j * r.nnz + q];
+        }
+      } else if constexpr (CHUNK % 4 == 0) {  // one 16-byte shared load per four channels
         const float4* v4 = reinterpret_cast<const float4*>(s_val + j * CHUNK);
 #pragma unroll
         for (int q = 0; q < CHUNK / 4; ++q) {
@@ -173,16 +187,16 @@ __global__ void __launch_bounds__(kBlock) render_kernel(RenderArgs r) {
 
 // False, launching nothing, where the GPU cannot give a block the CHUNK's shared memory (64 channels
 // take 72 KB: beyond sm_75's 64 KB).
-template <int CHUNK>
+template <int CHUNK, bool SPARSE = false>
 bool launch_render(const RenderArgs& r, int tiles_y, cudaStream_t stream) {
   const dim3 grid(r.tiles_x, tiles_y, (r.channels + CHUNK - 1) / CHUNK), block(kTileSize, kTileSize);
-  const size_t shared = sizeof(float) * kBlock * CHUNK;
-  if (shared > 48 * 1024 &&
-      cudaFuncSetAttribute(render_kernel<CHUNK>, cudaFuncAttributeMaxDynamicSharedMemorySize, int(shared)) != cudaSuccess) {
+  const size_t shared = SPARSE ? (sizeof(float) + sizeof(int32_t)) * kBlock * r.nnz : sizeof(float) * kBlock * CHUNK;
+  if (shared > 48 * 1024 && cudaFuncSetAttribute(render_kernel<CHUNK, SPARSE>, cudaFuncAttributeMaxDynamicSharedMemorySize,
+                                                 int(shared)) != cudaSuccess) {
     cudaGetLastError();  // clear it: the caller takes a smaller chunk
     return false;
   }
-  render_kernel<CHUNK><<<grid, block, shared, stream>>>(r);
+  render_kernel<CHUNK, SPARSE><<<grid, block, shared, stream>>>(r);
   return true;
 }
 
@@ -196,6 +210,8 @@ bool launch_render(const RenderArgs& r, int tiles_y, cudaStream_t stream) {
 
 int rasterize_forward_cuda(const CudaSplatArgs& a, CudaForwardStatePtr& state, void* stream_ptr) {
   const cudaStream_t stream = static_cast<cudaStream_t>(stream_ptr);
+  // sparse features: at most kCudaSparseMaxNnz weights (32 KB of shared memory per block)
+  if (!a.sh && a.feature_index && (a.nnz < 1 || a.nnz > kCudaSparseMaxNnz)) return int(cudaErrorInvalidValue);
   state.reset(new CudaForwardState());
   CudaForwardState& s = *state;
   const CudaAllocator& al = a.allocator;
@@ -264,8 +280,12 @@ int rasterize_forward_cuda(const CudaSplatArgs& a, CudaForwardStatePtr& state, v
     CLS_CUDA_TRY(cudaGetLastError());
   }
   RenderArgs r{a.cam.width, a.cam.height, tiles_x, C, s.ranges, s.ids, s.proj, a.opacities,
-               a.sh ? s.colors : a.features, a.background, a.image, a.alpha, a.depth, s.final_T, s.n_contrib};
-  if (C == 1) launch_render<1>(r, tiles_y, stream);
+               a.sh ? s.colors : a.features, a.sh ? nullptr : a.feature_index, a.sh ? 0 : a.nnz, a.background,
+               a.image, a.alpha, a.depth, s.final_T, s.n_contrib};
+  if (r.index) {
+    if (C <= 16) launch_render<16, true>(r, tiles_y, stream);
+    else launch_render<64, true>(r, tiles_y, stream);
+  } else if (C == 1) launch_render<1>(r, tiles_y, stream);
   else if (C == 2) launch_render<2>(r, tiles_y, stream);
   else if (C == 3) launch_render<3>(r, tiles_y, stream);
   else if (C == 4) launch_render<4>(r, tiles_y, stream);

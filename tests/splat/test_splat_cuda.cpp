@@ -146,30 +146,47 @@ TEST(SplatCuda, SsimKernelsMatchTheOps) {
 }
 
 // The sparse features (K weights at K of C channels) on CUDA against the CPU's sparse tile kernels: the image
-// and the weights' gradient (the CUDA path scatters the weights and runs the dense kernel).
+// and the weights' gradient, through the sparse CUDA kernels (frozen geometry, K <= kCudaSparseMaxNnz; C over
+// one chunk of 64 and over two) and through the dense kernel on the scattered weights (geometry gradients, or
+// more weights than the sparse kernels take), then the means' gradient as well. Random indices repeat
+// within a Gaussian at times: both sum them.
 TEST(SplatCuda, SparseFeaturesMatchCpu) {
   if (!torch::cuda::is_available()) GTEST_SKIP() << "no CUDA device: the sparse features are not compared with the CPU path";
   const auto s = test::random_scene(200, 53, 37, 1, false, 71, 0.9);
   const RasterizeSettings settings = settings_of(s);
   const int64_t n = s.n;
-  constexpr int K = 4, C = 64;
-  torch::manual_seed(72);
-  const torch::Tensor weights = torch::rand({n, K}), indices = torch::randint(0, C, {n, K}, torch::kInt32);
-  const torch::Tensor w = torch::randn({s.cam.height, s.cam.width, C});
-  std::vector<torch::Tensor> images, grads;
-  for (const torch::Device dev : {torch::Device(torch::kCPU), torch::Device(torch::kCUDA)}) {
-    const torch::Tensor v = weights.to(dev).detach().requires_grad_(true);
-    const auto o = rasterize_sparse_features(float_tensor(s.means, {n, 3}).to(dev), float_tensor(s.scales, {n, 3}).to(dev),
-                                             float_tensor(s.quats, {n, 4}).to(dev), float_tensor(s.opacities, {n}).to(dev),
-                                             v, indices.to(dev), C, {}, settings);
-    (o.image * w.to(dev)).sum().backward();
-    images.push_back(o.image.cpu());
-    grads.push_back(v.grad().cpu());
+  struct Case {
+    int K, C;
+    bool geometry;
+  };
+  for (const Case c : {Case{4, 64, false}, Case{4, 100, false}, Case{1, 8, false}, Case{3, 64, true},
+                       Case{kCudaSparseMaxNnz + 4, 64, false}}) {
+    SCOPED_TRACE(testing::Message() << "K " << c.K << ", C " << c.C << (c.geometry ? ", with geometry" : ""));
+    torch::manual_seed(72 + c.K + c.C);
+    const torch::Tensor weights = torch::rand({n, c.K}), indices = torch::randint(0, c.C, {n, c.K}, torch::kInt32);
+    const torch::Tensor w = torch::randn({s.cam.height, s.cam.width, c.C});
+    std::vector<torch::Tensor> images, grads, mean_grads;
+    for (const torch::Device dev : {torch::Device(torch::kCPU), torch::Device(torch::kCUDA)}) {
+      const torch::Tensor v = weights.to(dev).detach().requires_grad_(true);
+      const torch::Tensor means = float_tensor(s.means, {n, 3}).to(dev).detach().requires_grad_(c.geometry);
+      const auto o = rasterize_sparse_features(means, float_tensor(s.scales, {n, 3}).to(dev),
+                                               float_tensor(s.quats, {n, 4}).to(dev), float_tensor(s.opacities, {n}).to(dev),
+                                               v, indices.to(dev), c.C, {}, settings);
+      (o.image * w.to(dev)).sum().backward();
+      images.push_back(o.image.cpu());
+      grads.push_back(v.grad().cpu());
+      if (c.geometry) mean_grads.push_back(means.grad().cpu());
+    }
+    EXPECT_LT((images[1] - images[0]).abs().max().item<float>(), 1e-5f);
+    const double scale = grads[0].abs().max().item<double>();
+    ASSERT_GT(scale, 0.0);
+    EXPECT_LT((grads[1] - grads[0]).abs().max().item<double>(), 1e-4 * scale);
+    if (c.geometry) {
+      const double mscale = mean_grads[0].abs().max().item<double>();
+      ASSERT_GT(mscale, 0.0);
+      EXPECT_LT((mean_grads[1] - mean_grads[0]).abs().max().item<double>(), 1e-3 * mscale);
+    }
   }
-  EXPECT_LT((images[1] - images[0]).abs().max().item<float>(), 1e-5f);
-  const double scale = grads[0].abs().max().item<double>();
-  ASSERT_GT(scale, 0.0);
-  EXPECT_LT((grads[1] - grads[0]).abs().max().item<double>(), 1e-4 * scale);
 }
 
 TEST(SplatCuda, ForwardMatchesCpu) {
@@ -194,6 +211,9 @@ TEST(SplatCuda, FeatureGradientsWithoutGeometryMatchCpu) {
 }
 TEST(SplatCuda, SsimKernelsMatchTheOps) {
   GTEST_SKIP() << "built without the CUDA backend (CLS_WITH_CUDA): the CUDA SSIM kernels are not compared with the ops";
+}
+TEST(SplatCuda, SparseFeaturesMatchCpu) {
+  GTEST_SKIP() << "built without the CUDA backend (CLS_WITH_CUDA): the sparse CUDA kernels are not compared with the CPU path";
 }
 
 #endif
