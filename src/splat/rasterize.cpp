@@ -286,9 +286,10 @@ RasterizeOutput rasterize_sparse_features(const at::Tensor& means, const at::Ten
     throw Error("rasterize_sparse_features: an index lies outside [0, " + std::to_string(channels) + ")");
   // The sparse CUDA kernels take up to kCudaSparseMaxNnz weights and give their gradient alone; with more, or
   // with geometry gradients, the weights scattered into N x C dense features (the same image and gradients).
-  const bool geometry_grad = means.requires_grad() || scales.requires_grad() || quats.requires_grad() ||
-                             opacities.requires_grad() || (means2d.defined() && means2d.requires_grad()) ||
-                             settings.mean2d_abs_grad.defined();
+  const bool geometry_grad = settings.mean2d_abs_grad.defined() ||
+                             (torch::GradMode::is_enabled() &&
+                              (means.requires_grad() || scales.requires_grad() || quats.requires_grad() ||
+                               opacities.requires_grad() || (means2d.defined() && means2d.requires_grad())));
   if (means.is_cuda() && (geometry_grad || weights.size(1) > kCudaSparseMaxNnz)) {
     const at::Tensor dense = torch::zeros({means.size(0), channels}, weights.options())
                                  .scatter_add(1, indices.to(torch::kLong), weights);

@@ -45,7 +45,8 @@ RasterizeOutput rasterize_features(const at::Tensor& means, const at::Tensor& sc
 // at channels indices N x K (int32, each in [0, C), repeats add) of a C-channel image, zero elsewhere.
 // The image equals rasterize_features of the weights scattered into N x C (the reference the tests
 // compare), at a cost per Gaussian and pixel of K instead of C. Gradients flow to the weights (and the
-// geometry); on CUDA tensors it scatters and calls rasterize_features (no sparse CUDA kernel yet).
+// geometry). On CUDA tensors the sparse kernels take up to kCudaSparseMaxNnz (16) weights on frozen geometry;
+// with more, or with a geometry gradient, the weights are scattered and rasterize_features runs.
 RasterizeOutput rasterize_sparse_features(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
                                           const at::Tensor& opacities, const at::Tensor& weights,
                                           const at::Tensor& indices, int channels, const at::Tensor& means2d,

@@ -141,8 +141,9 @@ __global__ void __launch_bounds__(kCudaBlock) render_backward_kernel(BackwardArg
       }
       if (!__any_sync(kFullWarp, contributes)) continue;
       const uint32_t id = s_id[j];
-      const float* v = r.values + static_cast<size_t>(id) * C;
-      float* vg = r.value_grad + static_cast<size_t>(id) * (SPARSE ? r.nnz : C);
+      const size_t row = static_cast<size_t>(id) * (SPARSE ? r.nnz : C);
+      const float* v = r.values + row;
+      float* vg = r.value_grad + row;
       float w = 0.f;
       if (contributes) {
         T = T / (1.f - a);
@@ -184,7 +185,7 @@ __global__ void __launch_bounds__(kCudaBlock) render_backward_kernel(BackwardArg
         if (has_image) {
           float t[CMAX];
 #pragma unroll
-          for (int q = 0; q < CMAX; ++q) t[q] = dpix && q < r.nnz ? w * dpix[s_idx[j * CMAX + q]] : 0.f;
+          for (int q = 0; q < CMAX; ++q) t[q] = contributes && q < r.nnz ? w * dpix[s_idx[j * CMAX + q]] : 0.f;
           const float sum = warp_transpose_sum<CMAX>(t, lane);
           if (lane < r.nnz) atomicAdd(vg + lane, sum);
         }

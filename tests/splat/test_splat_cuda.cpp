@@ -148,8 +148,9 @@ TEST(SplatCuda, SsimKernelsMatchTheOps) {
 // The sparse features (K weights at K of C channels) on CUDA against the CPU's sparse tile kernels: the image
 // and the weights' gradient, through the sparse CUDA kernels (frozen geometry, K <= kCudaSparseMaxNnz; C over
 // one chunk of 64 and over two) and through the dense kernel on the scattered weights (geometry gradients, or
-// more weights than the sparse kernels take), then the means' gradient as well. Random indices repeat
-// within a Gaussian at times: both sum them.
+// more weights than the sparse kernels take), then the means' gradient as well; each backward instantiation
+// (K 1, 2, 3-4, 5-8, 9-16) and one case on a background. Random indices repeat within a Gaussian at times:
+// both sum them.
 TEST(SplatCuda, SparseFeaturesMatchCpu) {
   if (!torch::cuda::is_available()) GTEST_SKIP() << "no CUDA device: the sparse features are not compared with the CPU path";
   const auto s = test::random_scene(200, 53, 37, 1, false, 71, 0.9);
@@ -157,11 +158,14 @@ TEST(SplatCuda, SparseFeaturesMatchCpu) {
   const int64_t n = s.n;
   struct Case {
     int K, C;
-    bool geometry;
+    bool geometry = false, background = false;
   };
-  for (const Case c : {Case{4, 64, false}, Case{4, 100, false}, Case{1, 8, false}, Case{3, 64, true},
-                       Case{kCudaSparseMaxNnz + 4, 64, false}}) {
-    SCOPED_TRACE(testing::Message() << "K " << c.K << ", C " << c.C << (c.geometry ? ", with geometry" : ""));
+  for (const Case c : {Case{4, 64}, Case{4, 100}, Case{1, 8}, Case{2, 8, false, true}, Case{7, 64},
+                       Case{kCudaSparseMaxNnz, 100}, Case{3, 64, true}, Case{kCudaSparseMaxNnz + 4, 64}}) {
+    SCOPED_TRACE(testing::Message() << "K " << c.K << ", C " << c.C << (c.geometry ? ", with geometry" : "")
+                                    << (c.background ? ", on a background" : ""));
+    RasterizeSettings on = settings;
+    if (c.background) on.background = torch::linspace(0.1, 0.9, c.C);
     torch::manual_seed(72 + c.K + c.C);
     const torch::Tensor weights = torch::rand({n, c.K}), indices = torch::randint(0, c.C, {n, c.K}, torch::kInt32);
     const torch::Tensor w = torch::randn({s.cam.height, s.cam.width, c.C});
@@ -171,7 +175,7 @@ TEST(SplatCuda, SparseFeaturesMatchCpu) {
       const torch::Tensor means = float_tensor(s.means, {n, 3}).to(dev).detach().requires_grad_(c.geometry);
       const auto o = rasterize_sparse_features(means, float_tensor(s.scales, {n, 3}).to(dev),
                                                float_tensor(s.quats, {n, 4}).to(dev), float_tensor(s.opacities, {n}).to(dev),
-                                               v, indices.to(dev), c.C, {}, settings);
+                                               v, indices.to(dev), c.C, {}, on);
       (o.image * w.to(dev)).sum().backward();
       images.push_back(o.image.cpu());
       grads.push_back(v.grad().cpu());
