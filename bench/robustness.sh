@@ -21,8 +21,10 @@
 # "Mechanics benchmark") in its own columns.
 #   bash bench/robustness.sh [--work DIR] [--buildings "fzk citygml4j texture4"] [--errors "0 t=0.25 ..."]
 #                            [--variants "exact drop=0.3 lod2 occl=8 occl=8+drop=0.3"] [--rgb-iterations N]
-#                            [--language-iterations N]
+#                            [--language-iterations N] [--field dense|sparse]
 #                            [--report-only]   (the table, JSON and plot of the runs WORK already holds)
+# --field: the language field every run trains (docs/language.md); give each field its own WORK (a link to
+# another WORK's <building>/rgb reuses its photometric model).
 # A building's photometric model is trained once per set of photos into WORK/<building>/rgb (rgb-occl=N)
 # and reused when present (and `run` reuses every stage whose inputs did not change).
 set -euo pipefail
@@ -31,6 +33,7 @@ repo=$(pwd)
 bin=${CLS_BIN:-$repo/build/citylangsplat}
 work=/tmp/cls-bench-robustness; buildings="fzk citygml4j texture4"
 errors="0 t=0.25 t=0.5,r=0.5 t=1,r=2"; variants="exact drop=0.3"; rgb_iterations=1500; language_iterations=300
+field=dense
 report_only=0
 while [ $# -gt 0 ]; do
   case $1 in
@@ -40,13 +43,15 @@ while [ $# -gt 0 ]; do
     --variants) variants=$2; shift 2 ;;
     --rgb-iterations) rgb_iterations=$2; shift 2 ;;
     --language-iterations) language_iterations=$2; shift 2 ;;
+    --field) field=$2; shift 2 ;;
     --report-only) report_only=1; shift ;;
     *) echo "usage: $0 [--work DIR (/tmp/cls-bench-robustness)] [--buildings \"fzk citygml4j texture4\"]" \
             "[--errors \"0 t=0.25 t=0.5,r=0.5 t=1,r=2\"] [--variants \"exact drop=0.3\" (also lod2, occl=N, occl=N+drop=F, occl=N+lod2)]" \
-            "[--rgb-iterations 1500] [--language-iterations 300] [--report-only]" >&2
+            "[--rgb-iterations 1500] [--language-iterations 300] [--field dense|sparse (dense)] [--report-only]" >&2
        exit 2 ;;
   esac
 done
+case $field in dense|sparse) ;; *) echo "robustness.sh: --field must be dense or sparse, got $field" >&2; exit 2 ;; esac
 case " $errors " in *" 0 "*) ;; *) echo "robustness.sh: --errors must include 0 (the baseline and the reference row run there)" >&2; exit 2 ;; esac
 # The exact photos' baseline runs with the exact model; occl=N scenes have their own photos and baseline.
 case " $variants " in
@@ -89,7 +94,7 @@ run() {  # [MODELS=...] run SCENE OUT [run options], with $rgb the photometric m
   local scene=$1 out=$2; shift 2
   echo "  run $(basename "$out") ($(date +%H:%M:%S))" >&2
   "$bin" -q run "$scene" --models "${MODELS:-image-segments}" --rgb-model "$rgb/point_cloud.ply" \
-    --language-iterations "$language_iterations" --out "$out" "$@" > "$out.log" 2>&1 \
+    --language-iterations "$language_iterations" --field "$field" --out "$out" "$@" > "$out.log" 2>&1 \
     || { echo "robustness.sh: run failed, see $out.log" >&2; tail -5 "$out.log" >&2; exit 1; }
 }
 for b in $buildings; do
@@ -116,8 +121,12 @@ for b in $buildings; do
       if [ "$v" = exact ] && [ "$e" = 0 ]; then
         # With the baselines (they do not depend on the city model): LangSplat's objective on the shared
         # autoencoder, and LangSplat as published (its 3-d autoencoder, normalised splatting).
-        run "$scene" "$work/$b/run-0-off" --align off --baseline langsplat,langsplat-original
-        MODELS=synthetic run "$scene" "$work/$b/run-0-synthetic" --align off  # the mechanics benchmark
+        # LangSplat as published has no sparse form (`run` refuses it with the sparse field).
+        originals=langsplat,langsplat-original; [ "$field" = dense ] || originals=langsplat
+        run "$scene" "$work/$b/run-0-off" --align off --baseline "$originals"
+        # the mechanics benchmark, with run's default baseline (the sparse field has LangSplat's objective only)
+        mech_baseline=(); [ "$field" = dense ] || mech_baseline=(--baseline langsplat)
+        MODELS=synthetic run "$scene" "$work/$b/run-0-synthetic" --align off "${mech_baseline[@]}"
       elif [ "$photos" = "$v" ] && [ "$e" = 0 ]; then  # other photos: their own baseline
         run "$scene" "$work/$b/run-$prefix$e-off" --align off --baseline langsplat
       else
