@@ -40,6 +40,7 @@ at::Tensor kmeans_codebook(const at::Tensor& rows, int k, uint64_t seed, int ite
   const at::Tensor x = rows.to(at::kCPU, at::kFloat).contiguous();
   const int64_t M = x.size(0);
   std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
   if (M <= k) {  // every row a basis, then jittered copies
     std::vector<int64_t> pick(static_cast<size_t>(k));
     for (int64_t i = 0; i < k; ++i) pick[size_t(i)] = i < M ? i : int64_t(rng() % uint64_t(M));
@@ -49,16 +50,18 @@ at::Tensor kmeans_codebook(const at::Tensor& rows, int k, uint64_t seed, int ite
     }
     return book;
   }
-  // Farthest-first seeding (Gonzalez): from a seeded first row, each next centre is the row farthest from the
-  // centres so far. k-means++ draws it with probability proportional to that squared distance, which spends
-  // the bases on the spread of the classes with many segments (hundreds of wall segments outweigh a few
-  // doors far away) and leaves rare ones without a basis of their own; farthest-first gives every
-  // separated group of targets one before splitting any.
+  // k-means++: each next centre drawn with probability proportional to the squared distance to the nearest one.
   const at::Tensor sq = (x * x).sum(1);
   std::vector<int64_t> chosen{int64_t(rng() % uint64_t(M))};
   at::Tensor nearest = (sq - 2 * at::mv(x, x[chosen[0]]) + sq[chosen[0]]).clamp_min(0);
   while (int64_t(chosen.size()) < k) {
-    const int64_t next = nearest.argmax().item<int64_t>();
+    const at::Tensor cumulative = nearest.to(at::kDouble).cumsum(0);
+    const double total = cumulative[M - 1].item<double>();
+    int64_t next = int64_t(rng() % uint64_t(M));
+    if (total > 0) {
+      const double u = uniform(rng) * total;
+      next = std::min<int64_t>(M - 1, at::searchsorted(cumulative, at::scalar_tensor(u, at::kDouble)).item<int64_t>());
+    }
     chosen.push_back(next);
     nearest = at::minimum(nearest, (sq - 2 * at::mv(x, x[next]) + sq[next]).clamp_min(0));
   }

@@ -29,9 +29,8 @@ struct SparseWeights {
 };
 SparseWeights top_k_softmax(const at::Tensor& logits, int k);
 
-// A codebook of k bases for `rows` (M x D float32): k-means (farthest-first seeding from a row `seed` draws,
-// then Lloyd iterations until no assignment changes or `iterations` ran), as LangSplatV2 starts its codebook
-// from k-means; the seeding gives rare, separated targets a basis (sparse_field.cpp). With M <= k
+// A codebook of k bases for `rows` (M x D float32): k-means (k-means++ seeding from `seed`, then Lloyd
+// iterations until no assignment changes or `iterations` ran), as LangSplatV2 starts its codebook. With M <= k
 // the rows themselves, then copies of them with a 1e-3 jitter. Deterministic for a seed on one machine.
 at::Tensor kmeans_codebook(const at::Tensor& rows, int k, uint64_t seed, int iterations = 30);
 
