@@ -5,8 +5,9 @@
 # Steps: splat_tests (the CUDA rasterizer against the CPU path), query_tests (relevance cosines on CUDA
 # against the CPU path), language_tests (the language loss's CUDA kernel against its reference),
 # models_tests (CLIP/SAM fixture parity on CUDA), bench_* (rasterizer, CLIP, language field, relevance
-# maps, SAM AMG on the GPU; the sparse field's training iterations and maps too), run (`run --models clip-tiny` on the bundled example), query_gpu (after run:
-# `query --device cuda` on its model against run's CPU query, scripts/device/compare_query.py), train_rgb
+# maps, SAM AMG on the GPU; the sparse field's training iterations and maps too), run (`run --models
+# clip-tiny` on the bundled example), query_gpu (after run: `query --device cuda` on its model against
+# run's CPU query, scripts/device/compare_query.py), train_rgb
 # (densification, the cap and resuming on the GPU), suite (every test program carried, 16 at a time, one
 # OpenMP thread each), profile_splat / profile_language (every kernel's duration under Nsight Compute: one
 # photometric and 128-channel iteration at 1M Gaussians, 1600x1000; one language iteration at 200k,
