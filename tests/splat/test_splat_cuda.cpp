@@ -52,9 +52,6 @@ void compare_cuda_cpu(const test::RandomScene& s) {
   EXPECT_LT((g_depth.cpu() - cpu_depth).abs().max().item<float>(), 1e-4f);
 }
 
-// Gradients through the autograd function on CUDA against the CPU function (float32 both). With
-// `geometry` false only the colours/features require a gradient (a language field on frozen
-// Gaussians), which takes the CUDA backward's path without the alpha gradient.
 // The scene's camera and pose as the autograd functions take them.
 RasterizeSettings settings_of(const test::RandomScene& s) {
   RasterizeSettings settings;
@@ -69,6 +66,9 @@ torch::Tensor float_tensor(const std::vector<double>& v, std::vector<int64_t> sh
   return torch::tensor(v, torch::kFloat64).reshape(shape).to(torch::kFloat32);
 }
 
+// Gradients through the autograd function on CUDA against the CPU function (float32 both). With
+// `geometry` false only the colours/features require a gradient (a language field on frozen
+// Gaussians), which takes the CUDA backward's path without the alpha gradient.
 void compare_gradients(bool use_sh, int channels, unsigned seed, bool geometry = true) {
   const auto s = test::random_scene(200, 53, 37, channels, use_sh, seed, 0.9);
   const RasterizeSettings settings = settings_of(s);
