@@ -11,6 +11,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "splat/rasterize.h"
 
 namespace cls {
 
@@ -113,8 +114,7 @@ at::Tensor sparse_cosines(const SparseLevel& level, const at::Tensor& directions
 }
 
 at::Tensor scattered_weights(const SparseLevel& level) {
-  return at::zeros({level.weights.size(0), level.codebook.size(0)}, level.weights.options())
-      .scatter_add(1, level.indices.to(at::kLong), level.weights);
+  return scatter_sparse_features(level.weights, level.indices, int(level.codebook.size(0)));
 }
 
 at::Tensor sparse_features(const SparseLevel& level) { return at::matmul(scattered_weights(level), level.codebook); }

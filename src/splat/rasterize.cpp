@@ -269,6 +269,10 @@ RasterizeOutput rasterize_features(const at::Tensor& means, const at::Tensor& sc
 
 namespace cls {
 
+at::Tensor scatter_sparse_features(const at::Tensor& weights, const at::Tensor& indices, int channels) {
+  return torch::zeros({weights.size(0), channels}, weights.options()).scatter_add(1, indices.to(torch::kLong), weights);
+}
+
 RasterizeOutput rasterize_sparse_features(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
                                           const at::Tensor& opacities, const at::Tensor& weights,
                                           const at::Tensor& indices, int channels, const at::Tensor& means2d,
@@ -291,9 +295,8 @@ RasterizeOutput rasterize_sparse_features(const at::Tensor& means, const at::Ten
                               (means.requires_grad() || scales.requires_grad() || quats.requires_grad() ||
                                opacities.requires_grad() || (means2d.defined() && means2d.requires_grad())));
   if (means.is_cuda() && (geometry_grad || weights.size(1) > kCudaSparseMaxNnz)) {
-    const at::Tensor dense = torch::zeros({means.size(0), channels}, weights.options())
-                                 .scatter_add(1, indices.to(torch::kLong), weights);
-    return rasterize_features(means, scales, quats, opacities, dense, means2d, settings);
+    return rasterize_features(means, scales, quats, opacities, scatter_sparse_features(weights, indices, channels),
+                              means2d, settings);
   }
   return run(means, scales, quats, opacities, weights, -1, means2d, settings, indices, channels);
 }

@@ -52,4 +52,8 @@ RasterizeOutput rasterize_sparse_features(const at::Tensor& means, const at::Ten
                                           const at::Tensor& indices, int channels, const at::Tensor& means2d,
                                           const RasterizeSettings& settings);
 
+// Sparse features as dense ones: weights N x K scattered into N x C at their indices (zero elsewhere; repeats
+// add). The image of rasterize_features on it is rasterize_sparse_features' image.
+at::Tensor scatter_sparse_features(const at::Tensor& weights, const at::Tensor& indices, int channels);
+
 }  // namespace cls
