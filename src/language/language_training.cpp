@@ -41,6 +41,7 @@
 #include "language/language_model.h"
 #include "language/provenance.h"
 #include "language/sparse_field.h"
+#include "language/sparse_lifting.h"
 #include "scene/view_selection.h"
 #include "splat/compute_device.h"
 #include "splat/adam.h"
@@ -208,7 +209,7 @@ nlohmann::json run_config(const LanguageTrainOptions& o, int64_t n, int latent, 
           {"iterations", o.iterations}};
   if (o.field == "sparse")
     c["field"] = o.field, c["codebook_size"] = o.codebook_size, c["top_k"] = o.top_k, c["codebook_lr"] = o.codebook_lr, c["logit_lr"] = o.logit_lr,
-    c["sparse_warmup"] = o.sparse_warmup;
+    c["sparse_warmup"] = o.sparse_warmup, c["lift_temperature"] = o.lift_temperature;
   return c;
 }
 
@@ -293,6 +294,9 @@ const OptionList<LanguageTrainOptions>& language_train_options() {
         .add("top-k", &O::top_k, "sparse field: weights per Gaussian and level (K)")
         .add("sparse-warmup", &O::sparse_warmup,
              "sparse field: share of each level's iterations that splat the softmax over all bases before the top K")
+        .add("lift-temperature", &O::lift_temperature,
+             "sparse field: the first logits are each basis's mean cosine with the targets a Gaussian is blended "
+             "into, divided by this (0: seeded noise)")
         .add("logit-lr", &O::logit_lr, "sparse field: Adam learning rate of the weights' logits")
         .add("codebook-lr", &O::codebook_lr, "sparse field: Adam learning rate of the codebook")
         .add("checkpoint-every", &O::checkpoint_every, "iterations between checkpoints (0 = only on interrupt)",
@@ -314,6 +318,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
   if (o.lr <= 0) throw UsageError("--lr must be positive");
   if (!(o.sparse_warmup >= 0 && o.sparse_warmup <= 1)) throw UsageError("--sparse-warmup must lie in [0, 1]");
   if (!(o.logit_lr > 0)) throw UsageError("--logit-lr must be positive");
+  if (!(o.lift_temperature >= 0)) throw UsageError("--lift-temperature must be 0 (off) or positive");
   if (o.codebook_lr < 0) throw UsageError("--codebook-lr must not be negative (0: the codebook stays as initialised)");
   const at::Device device = compute_device(o.device);
   install_interrupt_handlers();
@@ -427,6 +432,16 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
       std::mt19937_64 rng(o.seed * 0x100000001B3ull + uint64_t(level));
       latents = normal_noise(n, latent, 0.01f, rng).to(device);
       codebook = initial_codebook(views, o.codebook_size, o.seed, level).to(device);
+      if (o.lift_temperature > 0) {
+        auto view = [&](int64_t i) {
+          const ViewTargets& v = views[size_t(i)];
+          LiftingView lv{{}, {v.sam_map(level), v.sam_latents}, {v.gml_map(level), v.gml_latents}, v.coverage};
+          lv.settings.camera = scene.views[v.view].camera;
+          lv.settings.pose = scene.views[v.view].pose;
+          return lv;
+        };
+        latents += lifted_logits(means, scales, quats, opacities, nviews, view, codebook, weights, o.lift_temperature);
+      }
     }
     if (!latents.defined()) latents = at::zeros({n, int64_t(latent)}, at::TensorOptions(device).dtype(at::kFloat));
     latents = latents.detach().requires_grad_(true);

@@ -34,6 +34,9 @@ struct LanguageTrainOptions {
   double logit_lr = 0.01;       // Adam lr of the sparse field's logits (`lr`: the dense field's latents)
   double codebook_lr = 0.0025;  // Adam lr of the sparse field's codebook
   double sparse_warmup = 0.3;   // share of a level's iterations splatting the softmax over all bases
+  // The sparse field's first logits: each basis's mean cosine with the targets a Gaussian is blended into
+  // over the training views, divided by this temperature; 0 = seeded noise near zero (no lifting).
+  double lift_temperature = 0.1;
   int checkpoint_every = 1000;
   bool resume = false;
   uint64_t seed = 1;

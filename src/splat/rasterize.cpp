@@ -265,6 +265,20 @@ RasterizeOutput rasterize_features(const at::Tensor& means, const at::Tensor& sc
   return run(means, scales, quats, opacities, features, -1, means2d, settings);
 }
 
+at::Tensor lift_to_gaussians(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
+                             const at::Tensor& opacities, const at::Tensor& values, const RasterizeSettings& settings) {
+  if (values.dim() != 3 || values.size(0) != settings.camera.height || values.size(1) != settings.camera.width ||
+      values.size(2) < 1)
+    throw Error("lift_to_gaussians: values must be H x W x C at the camera's size, got " + c10::str(values.sizes()));
+  const torch::AutoGradMode grad_mode(true);
+  RasterizeSettings s = settings;
+  s.mean2d_abs_grad = torch::Tensor();
+  const torch::Tensor x = torch::zeros({means.size(0), values.size(2)}, means.options()).requires_grad_(true);
+  const RasterizeOutput o =
+      rasterize_features(means.detach(), scales.detach(), quats.detach(), opacities.detach(), x, {}, s);
+  return torch::autograd::grad({o.image}, {x}, {values.to(o.image.options())})[0];
+}
+
 }  // namespace cls
 
 namespace cls {

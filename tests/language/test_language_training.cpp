@@ -241,6 +241,9 @@ TEST(LanguageTraining, SparseFieldLearnsTheTargetsInFeatureSpace) {
   t.options.resume = false;
   t.options.top_k = 9;
   EXPECT_THROW(train_language(t.scene, t.options), UsageError) << "K above the codebook";
+  t.options.top_k = 2;
+  t.options.lift_temperature = -0.1;
+  EXPECT_THROW(train_language(t.scene, t.options), UsageError) << "a negative lifting temperature";
 }
 
 TEST(LanguageTraining, BaselineIgnoresCityGmlTargets) {

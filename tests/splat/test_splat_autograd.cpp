@@ -265,6 +265,28 @@ TEST(SplatAutograd, GradientsReachTheRawModelParameters) {
   }
 }
 
+// lift_to_gaussians against its definition: the blend weights alpha_ip T_ip read off a render of one-hot
+// features (channel i of the image is Gaussian i's weight at each pixel), times the values, summed.
+TEST(SplatAutograd, LiftToGaussiansIsTheRendersTranspose) {
+  constexpr int C = 4;
+  TorchScene t = torch_scene(false, C, 51, torch::kFloat64);
+  const int64_t n = t.means.size(0), h = t.settings.camera.height, w = t.settings.camera.width;
+  const torch::Tensor values = torch::randn({h, w, C}, torch::kFloat64);
+  RasterizeSettings plain = t.settings;
+  plain.background = torch::Tensor();
+  const torch::Tensor blend =
+      rasterize_features(t.means, t.scales, t.quats, t.opacities, torch::eye(n, torch::kFloat64), {}, plain).image;
+  ASSERT_GT(blend.sum(2).max().item<double>(), 0.1) << "the scene must cover pixels";
+  const torch::Tensor expected = blend.reshape({-1, n}).t().matmul(values.reshape({-1, C}));
+  // The caller's background and densification statistics change nothing and are left alone; no gradient mode needed.
+  t.settings.mean2d_abs_grad = torch::zeros({n, 2}, torch::kFloat64);
+  const torch::NoGradGuard no_grad;
+  const torch::Tensor lifted = lift_to_gaussians(t.means, t.scales, t.quats, t.opacities, values, t.settings);
+  EXPECT_LT((lifted - expected).abs().max().item<double>(), 1e-12 * std::max(1.0, expected.abs().max().item<double>()));
+  EXPECT_EQ(t.settings.mean2d_abs_grad.abs().sum().item<double>(), 0.0);
+  EXPECT_THROW(lift_to_gaussians(t.means, t.scales, t.quats, t.opacities, values.slice(0, 1), t.settings), Error);
+}
+
 TEST(SplatAutograd, RejectsBadShapes) {
   RasterizeSettings s;
   s.camera = PinholeCamera{40, 40, 16, 16, 32, 32};
