@@ -558,7 +558,9 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
                          {"test_every", o.test_every},
                          {"normalize_latents", o.normalize_latents},
                          {"final_loss", s.final_loss}};
-  if (sparse) info["logit_lr"] = o.logit_lr, info["codebook_lr"] = o.codebook_lr, info["sparse_warmup"] = o.sparse_warmup;
+  if (sparse)
+    info["logit_lr"] = o.logit_lr, info["codebook_lr"] = o.codebook_lr, info["sparse_warmup"] = o.sparse_warmup,
+    info["lift_temperature"] = o.lift_temperature;
   GaussianModel frozen = geometry;
   LanguageModel model{std::move(frozen), {}, std::move(autoencoder), std::move(info), {}, {}};
   for (int l = 0; l < kLevels; ++l)
