@@ -1,8 +1,9 @@
 // Language training (paper 3.3) on a frozen photometric model; see language_training.h.
 //
 // Choices beyond the paper, as LangSplat's train.py makes them unless said otherwise:
-//  - latents start at zero (LangSplat's language_feature init), one N x L tensor per level, trained
-//    one level after the other (LangSplat trains one model per feature level);
+//  - latents start at zero (LangSplat's language_feature init; the sparse field's logits start lifted from
+//    the targets, sparse_lifting.h), one N x L tensor per level, trained one level after the other
+//    (LangSplat trains one model per feature level);
 //  - Adam (eps 1e-15 as 3DGS/LangSplat), constant lr;
 //  - views in a random order without replacement per epoch (LangSplat pops random cameras from a
 //    stack). The order of epoch e at level l is a pure function of (seed, l, e), so the "RNG state"
