@@ -210,7 +210,9 @@ nlohmann::json run_config(const LanguageTrainOptions& o, int64_t n, int latent, 
           {"iterations", o.iterations}};
   if (o.field == "sparse")
     c["field"] = o.field, c["codebook_size"] = o.codebook_size, c["top_k"] = o.top_k, c["codebook_lr"] = o.codebook_lr, c["logit_lr"] = o.logit_lr,
-    c["sparse_warmup"] = o.sparse_warmup, c["lift_temperature"] = o.lift_temperature;
+    c["sparse_warmup"] = o.sparse_warmup;
+  // Only when lifting: a checkpoint from before the lifted start resumes with --lift-temperature 0.
+  if (o.field == "sparse" && o.lift_temperature > 0) c["lift_temperature"] = o.lift_temperature;
   return c;
 }
 
@@ -297,7 +299,7 @@ const OptionList<LanguageTrainOptions>& language_train_options() {
              "sparse field: share of each level's iterations that splat the softmax over all bases before the top K")
         .add("lift-temperature", &O::lift_temperature,
              "sparse field: the first logits are each basis's mean cosine with the targets a Gaussian is blended "
-             "into, divided by this (0: seeded noise)")
+             "into, divided by this, plus a seeded 0.01 jitter (0: the jitter alone)")
         .add("logit-lr", &O::logit_lr, "sparse field: Adam learning rate of the weights' logits")
         .add("codebook-lr", &O::codebook_lr, "sparse field: Adam learning rate of the codebook")
         .add("checkpoint-every", &O::checkpoint_every, "iterations between checkpoints (0 = only on interrupt)",
@@ -428,8 +430,9 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
     at::Tensor& latents = s.latents[level - 1];
     at::Tensor& codebook = s.codebooks[level - 1];
     if (!latents.defined() && sparse) {
-      // Logits near zero with a seeded jitter: every Gaussian starts near the mean of K bases, which ones
-      // decided by the noise (all-equal logits would give every Gaussian the same K).
+      // A seeded jitter near zero, then (unless --lift-temperature 0) what the targets say of each Gaussian
+      // (sparse_lifting.h). The jitter decides the K bases of a Gaussian no pixel sees (all-equal logits would
+      // give every such Gaussian the same K).
       std::mt19937_64 rng(o.seed * 0x100000001B3ull + uint64_t(level));
       latents = normal_noise(n, latent, 0.01f, rng).to(device);
       codebook = initial_codebook(views, o.codebook_size, o.seed, level).to(device);

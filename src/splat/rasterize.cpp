@@ -272,6 +272,7 @@ at::Tensor lift_to_gaussians(const at::Tensor& means, const at::Tensor& scales, 
     throw Error("lift_to_gaussians: values must be H x W x C at the camera's size, got " + c10::str(values.sizes()));
   const torch::AutoGradMode grad_mode(true);
   RasterizeSettings s = settings;
+  s.background = torch::Tensor();  // of another width than `values`, and no part of the transpose
   s.mean2d_abs_grad = torch::Tensor();
   const torch::Tensor x = torch::zeros({means.size(0), values.size(2)}, means.options()).requires_grad_(true);
   const RasterizeOutput o =

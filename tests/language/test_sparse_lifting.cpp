@@ -21,11 +21,13 @@ struct LiftCase {
   at::Tensor codebook;
 };
 
+constexpr int kSegments = 4, kRegions = 3;  // rows of each view's SAM and CityGML tables
+
 LiftCase lift_case() {
   LiftCase c;
   c.scene = test::latent_scene(12, 36, 34, 1, 61);
   c.means = c.scene.g.means.detach().clone();
-  c.means[11] += at::tensor({1000.f, 0.f, 0.f});  // far outside the view: no pixel sees it
+  c.means[c.means.size(0) - 1] += at::tensor({1000.f, 0.f, 0.f});  // far outside the view: no pixel sees it
   c.scales = c.scene.g.scales().detach(), c.quats = c.scene.g.quats.detach(), c.opacities = c.scene.g.opacities().detach();
   const int64_t h = c.scene.camera.height, w = c.scene.camera.width, d = 5;
   torch::manual_seed(62);
@@ -34,8 +36,8 @@ LiftCase lift_case() {
     LiftingView lv;
     lv.settings.camera = c.scene.camera;
     lv.settings.pose = c.scene.pose;
-    lv.sam = {torch::randint(-1, 4, {h, w}, torch::kInt), torch::randn({4, d})};
-    lv.gml = {torch::randint(-1, 3, {h, w}, torch::kInt), torch::randn({3, d})};
+    lv.sam = {torch::randint(-1, kSegments, {h, w}, torch::kInt), torch::randn({kSegments, d})};
+    lv.gml = {torch::randint(-1, kRegions, {h, w}, torch::kInt), torch::randn({kRegions, d})};
     lv.coverage = torch::randint(0, 2, {h, w}, torch::kFloat);
     c.views.push_back(lv);
   }
@@ -82,7 +84,8 @@ at::Tensor expected_logits(const LiftCase& c, const LanguageLossWeights& lw, dou
 
 TEST(SparseLifting, LogitsAreTheBlendWeightedCosinesOfTheTargets) {
   const LiftCase c = lift_case();
-  for (const LanguageLossWeights lw : {LanguageLossWeights{0.7, 0.4, false}, LanguageLossWeights{1.0, 0.5, true}}) {
+  // The baseline with lambda_sam != 1: its SAM weight is 1 inside coverage too, whatever lambda_sam says.
+  for (const LanguageLossWeights lw : {LanguageLossWeights{0.7, 0.4, false}, LanguageLossWeights{0.7, 0.4, true}}) {
     SCOPED_TRACE(lw.baseline ? "LangSplat's objective" : "CityLangSplat's objective");
     const double temperature = 0.2;
     const at::Tensor got = lifted_logits(c.means, c.scales, c.quats, c.opacities, int64_t(c.views.size()),
@@ -91,13 +94,13 @@ TEST(SparseLifting, LogitsAreTheBlendWeightedCosinesOfTheTargets) {
     ASSERT_EQ(got.sizes(), expected.sizes());
     ASSERT_GT(expected.abs().max().item<double>(), 1.0) << "the case must lift something";
     EXPECT_LT((got.to(torch::kFloat64) - expected).abs().max().item<double>(), 1e-4 * expected.abs().max().item<double>());
-    EXPECT_EQ(got[11].abs().sum().item<double>(), 0.0) << "a Gaussian no pixel sees starts at zero";
+    EXPECT_EQ(got[got.size(0) - 1].abs().sum().item<double>(), 0.0) << "a Gaussian no pixel sees starts at zero";
   }
 }
 
 TEST(SparseLifting, RejectsAnIdOutsideItsTable) {
   LiftCase c = lift_case();
-  c.views[1].gml.ids[3][4] = 3;  // the table has rows 0..2
+  c.views[1].gml.ids[3][4] = int(c.views[1].gml.table.size(0));  // one past the table's last row
   EXPECT_THROW(lifted_logits(c.means, c.scales, c.quats, c.opacities, int64_t(c.views.size()),
                              [&](int64_t i) { return c.views[size_t(i)]; }, c.codebook, LanguageLossWeights{}, 0.1),
                Error);

@@ -269,7 +269,7 @@ TEST(SplatAutograd, GradientsReachTheRawModelParameters) {
 // features (channel i of the image is Gaussian i's weight at each pixel), times the values, summed.
 TEST(SplatAutograd, LiftToGaussiansIsTheRendersTranspose) {
   constexpr int C = 4;
-  TorchScene t = torch_scene(false, C, 51, torch::kFloat64);
+  TorchScene t = torch_scene(false, C - 1, 51, torch::kFloat64);  // its background: C - 1 values, not C
   const int64_t n = t.means.size(0), h = t.settings.camera.height, w = t.settings.camera.width;
   const torch::Tensor values = torch::randn({h, w, C}, torch::kFloat64);
   RasterizeSettings plain = t.settings;
