@@ -189,6 +189,14 @@ at::Tensor initial_codebook(const std::vector<ViewTargets>& views, int size, uin
   return kmeans_codebook(at::cat(rows, 0), size, seed * 0x9E3779B97F4A7C15ull + uint64_t(level));
 }
 
+// A training view's camera and pose as the rasterizer takes them (zero background).
+RasterizeSettings view_settings(const SceneView& view) {
+  RasterizeSettings settings;
+  settings.camera = view.camera;
+  settings.pose = view.pose;
+  return settings;
+}
+
 // What a Gaussian splats of its latent: the latent, or LangSplat's latent / (|latent| + 1e-9).
 at::Tensor splatted(const at::Tensor& latents, const LanguageTrainOptions& o) {
   return o.normalize_latents ? latents / (latents.norm(2, {1}, true) + 1e-9) : latents;
@@ -208,11 +216,12 @@ nlohmann::json run_config(const LanguageTrainOptions& o, int64_t n, int latent, 
           {"latent_dim", latent},
           {"views", views},
           {"iterations", o.iterations}};
-  if (o.field == "sparse")
+  if (o.field == "sparse") {
     c["field"] = o.field, c["codebook_size"] = o.codebook_size, c["top_k"] = o.top_k, c["codebook_lr"] = o.codebook_lr, c["logit_lr"] = o.logit_lr,
     c["sparse_warmup"] = o.sparse_warmup;
-  // Only when lifting: a checkpoint from before the lifted start resumes with --lift-temperature 0.
-  if (o.field == "sparse" && o.lift_temperature > 0) c["lift_temperature"] = o.lift_temperature;
+    // Only when lifting: a checkpoint from before the lifted start resumes with --lift-temperature 0.
+    if (o.lift_temperature > 0) c["lift_temperature"] = o.lift_temperature;
+  }
   return c;
 }
 
@@ -439,10 +448,8 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
       if (o.lift_temperature > 0) {
         auto view = [&](int64_t i) {
           const ViewTargets& v = views[size_t(i)];
-          LiftingView lv{{}, {v.sam_map(level), v.sam_latents}, {v.gml_map(level), v.gml_latents}, v.coverage};
-          lv.settings.camera = scene.views[v.view].camera;
-          lv.settings.pose = scene.views[v.view].pose;
-          return lv;
+          return LiftingView{view_settings(scene.views[v.view]), {v.sam_map(level), v.sam_latents},
+                             {v.gml_map(level), v.gml_latents}, v.coverage};
         };
         latents += lifted_logits(means, scales, quats, opacities, nviews, view, codebook, weights, o.lift_temperature);
       }
@@ -472,11 +479,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
       const int64_t epoch = s.iteration / nviews;
       if (epoch != order_epoch) order = epoch_order(o.seed, level, epoch, nviews), order_epoch = epoch;
       const ViewTargets& v = views[order[s.iteration % nviews]];
-      const SceneView& sv = scene.views[v.view];
-
-      RasterizeSettings settings;
-      settings.camera = sv.camera;
-      settings.pose = sv.pose;
+      const RasterizeSettings settings = view_settings(scene.views[v.view]);
       at::Tensor rendered;
       if (sparse) {  // the rendered weights times the codebook: the features the targets are compared with
         const at::Tensor& logits = adam.group(adam_name(level)).param;

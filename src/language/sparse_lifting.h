@@ -27,8 +27,8 @@ struct LiftingView {
 // the views, a_ip = alpha_ip T_ip, t(p) the pixel's targets, w_t(p) their loss weights (seg_loss_pixel.h), b_j
 // the bases (`codebook` L x D). The weights are the loss's per pixel, without its per-view 1 / (H W L): every
 // pixel is the same evidence whatever its view's size. The + 1 is a prior of one fully blended pixel at
-// cosine 0: a Gaussian few pixels see stays near zero. `view(i)` gives view i of `views`, one at a time (a view's maps are made on
-// demand, as training makes them). cls::Error if an id lies outside its table.
+// cosine 0: a Gaussian few pixels see stays near zero. `view(i)` gives view i of `views`, one at a time (a
+// view's maps are made on demand, as training makes them). cls::Error if an id lies outside its table.
 at::Tensor lifted_logits(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
                          const at::Tensor& opacities, int64_t views, const std::function<LiftingView(int64_t)>& view,
                          const at::Tensor& codebook, const LanguageLossWeights& weights, double temperature);

@@ -59,8 +59,9 @@ at::Tensor scatter_sparse_features(const at::Tensor& weights, const at::Tensor& 
 // The transpose of rasterize_features: per Gaussian, the values of the pixels it is blended into, weighted
 // by its alpha T there: sum_p alpha_ip T_ip values(p), N x C for `values` H x W x C (the means' dtype and
 // device). For every X, <rasterize_features(X).image, values> = <X, lift_to_gaussians(values)> on a zero
-// background: how per-pixel quantities are lifted onto the Gaussians. The features' backward on the given geometry (no
-// gradient reaches it, nor settings.mean2d_abs_grad); works under a NoGradGuard too.
+// background: how per-pixel quantities are lifted onto the Gaussians. The features' backward on the given
+// geometry (no gradient reaches it, nor settings.mean2d_abs_grad, nor the background); works under a
+// NoGradGuard too.
 at::Tensor lift_to_gaussians(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
                              const at::Tensor& opacities, const at::Tensor& values, const RasterizeSettings& settings);
 
