@@ -33,6 +33,7 @@
 #include "language/autoencoder.h"
 #include "language/language_loss.h"
 #include "language/sparse_field.h"
+#include "language/sparse_loss.h"
 #include "query/relevance.h"
 #include "splat/compute_device.h"
 #include "splat/rasterize.h"
@@ -144,8 +145,9 @@ SegTargets make_seg_targets(int width, int height, int channels, at::Generator& 
 // from gathered H x W x L targets, language_loss: the reference, and what the GPU ran before seg_loss_cuda).
 // The sparse field's iterations (issue 36): "sparse" (top-K softmax of N x L logits splatted sparsely, times an
 // L x 512 codebook, the paper's loss from seg maps against 512-d targets, backward into logits and codebook)
-// and "sparse-warmup" (its first iterations: the softmax over all L bases splatted densely).
-Timing bench_sparse_training(const SceneSpec& spec, int bases, int top_k, bool warmup, int repeats,
+// and "sparse-warmup" (its first iterations: the softmax over all L bases splatted densely); "sparse-cosine" and
+// "sparse-cosine-warmup": the same with the cosine distance (sparse_loss.h, --sparse-distance cosine).
+Timing bench_sparse_training(const SceneSpec& spec, int bases, int top_k, bool warmup, bool cosine, int repeats,
                              const at::Device& device) {
   const Scene s = make_scene(spec.gaussians, spec.width, spec.height, 42, device);
   at::Generator gen = at::detail::createCPUGenerator(7);
@@ -165,8 +167,9 @@ Timing bench_sparse_training(const SceneSpec& spec, int bases, int top_k, bool w
       map = rasterize_sparse_features(s.means, s.scales, s.quats, s.opacities, w.weights, w.indices, bases, at::Tensor(),
                                       s.settings).image;
     }
-    language_loss_from_seg(at::matmul(map, codebook), {seg_map(seg.sam), seg.sam_table}, {seg_map(seg.gml), seg.gml_table},
-                           seg.coverage, weights)
+    const SegMapTarget sam{seg_map(seg.sam), seg.sam_table}, gml{seg_map(seg.gml), seg.gml_table};
+    (cosine ? sparse_cosine_loss(map, codebook, sam, gml, seg.coverage, weights)
+            : language_loss_from_seg(at::matmul(map, codebook), sam, gml, seg.coverage, weights))
         .total.backward();
     logits.mutable_grad().zero_();
     codebook.mutable_grad().zero_();
@@ -215,7 +218,8 @@ int bench_main(int argc, char** argv) {
       .bind("channels", channels, "latent channels")
       .bind("train-scenes", train_scene_text, "training scenes, N@WxH comma-separated")
       .bind("loss", losses, "training losses to time, comma-separated: l1, seg (train-language's), dense; sparse, "
-                            "sparse-warmup (the sparse field's iterations, 512-d targets)")
+                            "sparse-warmup (the sparse field's iterations, 512-d targets), sparse-cosine, "
+                            "sparse-cosine-warmup (the same with --sparse-distance cosine)")
       .bind("codebook-size", bases, "sparse: bases L")
       .bind("top-k", top_k, "sparse: weights per Gaussian K")
       .bind("query-scene", query_scene_text, "the relevance-map scene, N@WxH (empty: none)")
@@ -232,8 +236,10 @@ int bench_main(int argc, char** argv) {
   const std::vector<SceneSpec> train_scenes = parse_scenes(train_scene_text);
   const std::vector<SceneSpec> query_scenes = parse_scenes(query_scene_text);  // checked before the timing
   for (const std::string& l : losses)
-    if (l != "l1" && l != "seg" && l != "dense" && l != "sparse" && l != "sparse-warmup")
-      throw UsageError("bench_language: --loss takes l1, seg, dense, sparse or sparse-warmup, got '" + l + "'");
+    if (l != "l1" && l != "seg" && l != "dense" && l != "sparse" && l != "sparse-warmup" && l != "sparse-cosine" &&
+        l != "sparse-cosine-warmup")
+      throw UsageError("bench_language: --loss takes l1, seg, dense, sparse, sparse-warmup, sparse-cosine or "
+                       "sparse-cosine-warmup, got '" + l + "'");
   for (const std::string& p : precisions)
     if (p != "highest" && p != "high" && p != "medium")
       throw UsageError("bench_language: --matmul-precision takes highest, high or medium, got '" + p + "'");
@@ -243,7 +249,8 @@ int bench_main(int argc, char** argv) {
   for (const SceneSpec& spec : train_scenes)
     for (const std::string& loss : losses) {
       const Timing t = loss.rfind("sparse", 0) == 0
-                           ? bench_sparse_training(spec, bases, top_k, loss == "sparse-warmup", repeats, device)
+                           ? bench_sparse_training(spec, bases, top_k, loss.find("warmup") != std::string::npos,
+                                                   loss.find("cosine") != std::string::npos, repeats, device)
                            : bench_training(spec, channels, loss, repeats, device);
       std::printf("training  %7lld Gaussians %4dx%-4d  %9.1f ms/iteration (wall)  CPU %9.1f ms  CPU/threads %9.1f ms"
                   "  loss %s\n",

@@ -188,19 +188,6 @@ bool seg_loss_gpu(const SegLossArgs& a, const at::Device& device, SegLossSums& t
 }
 #endif
 
-// Throws naming the first pixel of the map whose id lies outside its table (read on the CPU: an error path).
-void throw_if_bad_id(const SegMapTarget& t, const char* name) {
-  if (!t.ids.defined()) return;
-  const at::Tensor ids = t.ids.to(at::kCPU).contiguous();
-  const int32_t* p = ids.data_ptr<int32_t>();
-  const int64_t k = t.table.size(0), w = ids.size(1);
-  for (int64_t i = 0; i < ids.numel(); ++i)
-    if (p[i] < -1 || p[i] >= k)
-      throw Error(std::string("language loss: the ") + name + " seg map holds id " + std::to_string(p[i]) +
-                  " at pixel (" + std::to_string(i % w) + ", " + std::to_string(i / w) + "), outside [-1, " +
-                  std::to_string(k) + ") of its latent table");
-}
-
 // Forward: the three terms (into *terms) and dL/dZ^ (saved); backward: grad_output x dL/dZ^.
 class SegLossFunction : public torch::autograd::Function<SegLossFunction> {
  public:
@@ -222,8 +209,8 @@ class SegLossFunction : public torch::autograd::Function<SegLossFunction> {
     const bool ok = seg_loss_cpu(a, sums);
 #endif
     if (!ok) {
-      throw_if_bad_id(*sam, "SAM");
-      if (!weights.baseline) throw_if_bad_id(*gml, "CityGML");
+      check_seg_ids(*sam, "SAM");
+      if (!weights.baseline) check_seg_ids(*gml, "CityGML");
       throw Error("language loss: a seg map holds an id outside its latent table");
     }
     (*terms)[0] = sums.sam * w.inv, (*terms)[1] = sums.sam_gml * w.inv, (*terms)[2] = sums.citygml * w.inv;
@@ -243,6 +230,18 @@ class SegLossFunction : public torch::autograd::Function<SegLossFunction> {
 };
 
 }  // namespace
+
+void check_seg_ids(const SegMapTarget& t, const char* name) {
+  if (!t.ids.defined()) return;
+  const at::Tensor ids = t.ids.to(at::kCPU).contiguous();
+  const int32_t* p = ids.data_ptr<int32_t>();
+  const int64_t k = t.table.size(0), w = ids.size(1);
+  for (int64_t i = 0; i < ids.numel(); ++i)
+    if (p[i] < -1 || p[i] >= k)
+      throw Error(std::string("language loss: the ") + name + " seg map holds id " + std::to_string(p[i]) +
+                  " at pixel (" + std::to_string(i % w) + ", " + std::to_string(i / w) + "), outside [-1, " +
+                  std::to_string(k) + ") of its latent table");
+}
 
 LanguageLoss language_loss_from_seg(const at::Tensor& rendered, const SegMapTarget& sam, const SegMapTarget& gml,
                                     const at::Tensor& coverage, const LanguageLossWeights& weights) {

@@ -65,4 +65,8 @@ struct SegMapTarget {
 LanguageLoss language_loss_from_seg(const at::Tensor& rendered, const SegMapTarget& sam, const SegMapTarget& gml,
                                     const at::Tensor& coverage, const LanguageLossWeights& weights);
 
+// cls::Error naming the map (`name`: "SAM", "CityGML"), the id and the first pixel whose id lies outside
+// [-1, rows of the table); nothing when the ids are undefined. Reads the ids on the CPU.
+void check_seg_ids(const SegMapTarget& t, const char* name);
+
 }  // namespace cls

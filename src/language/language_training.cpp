@@ -43,6 +43,7 @@
 #include "language/provenance.h"
 #include "language/sparse_field.h"
 #include "language/sparse_lifting.h"
+#include "language/sparse_loss.h"
 #include "scene/view_selection.h"
 #include "splat/compute_device.h"
 #include "splat/adam.h"
@@ -221,6 +222,7 @@ nlohmann::json run_config(const LanguageTrainOptions& o, int64_t n, int latent, 
     c["sparse_warmup"] = o.sparse_warmup;
     // Only when lifting: a checkpoint from before the lifted start resumes with --lift-temperature 0.
     if (o.lift_temperature > 0) c["lift_temperature"] = o.lift_temperature;
+    if (o.sparse_distance != "l1") c["sparse_distance"] = o.sparse_distance;  // likewise: older ones took the L1
   }
   return c;
 }
@@ -309,6 +311,9 @@ const OptionList<LanguageTrainOptions>& language_train_options() {
         .add("lift-temperature", &O::lift_temperature,
              "sparse field: the first logits are each basis's mean cosine with the targets a Gaussian is blended "
              "into, divided by this, plus a seeded 0.01 jitter (0: the jitter alone)")
+        .add("sparse-distance", &O::sparse_distance,
+             "sparse field: the distance in the paper's loss, in CLIP space: l1 (the paper's, on the D-d features) or "
+             "cosine (1 - cos, LangSplatV2's; taken in the L-d weight space through the codebook's Gram matrix)")
         .add("logit-lr", &O::logit_lr, "sparse field: Adam learning rate of the weights' logits")
         .add("codebook-lr", &O::codebook_lr, "sparse field: Adam learning rate of the codebook")
         .add("checkpoint-every", &O::checkpoint_every, "iterations between checkpoints (0 = only on interrupt)",
@@ -331,6 +336,8 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
   if (!(o.sparse_warmup >= 0 && o.sparse_warmup <= 1)) throw UsageError("--sparse-warmup must lie in [0, 1]");
   if (!(o.logit_lr > 0)) throw UsageError("--logit-lr must be positive");
   if (!(o.lift_temperature >= 0)) throw UsageError("--lift-temperature must be 0 (off) or positive");
+  if (o.sparse_distance != "l1" && o.sparse_distance != "cosine")
+    throw UsageError("--sparse-distance must be l1 or cosine, got '" + o.sparse_distance + "'");
   if (o.codebook_lr < 0) throw UsageError("--codebook-lr must not be negative (0: the codebook stays as initialised)");
   const at::Device device = compute_device(o.device);
   install_interrupt_handlers();
@@ -480,7 +487,8 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
       if (epoch != order_epoch) order = epoch_order(o.seed, level, epoch, nviews), order_epoch = epoch;
       const ViewTargets& v = views[order[s.iteration % nviews]];
       const RasterizeSettings settings = view_settings(scene.views[v.view]);
-      at::Tensor rendered;
+      const SegMapTarget sam_target{v.sam_map(level), v.sam_latents}, gml_target{v.gml_map(level), v.gml_latents};
+      LanguageLoss loss;
       if (sparse) {  // the rendered weights times the codebook: the features the targets are compared with
         const at::Tensor& logits = adam.group(adam_name(level)).param;
         // The first iterations splat the softmax over all bases, so that every logit learns which bases fit
@@ -493,13 +501,16 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
           map = rasterize_sparse_features(means, scales, quats, opacities, w.weights, w.indices, latent, at::Tensor(),
                                           settings).image;
         }
-        rendered = at::matmul(map, adam.group(codebook_name(level)).param);
+        const at::Tensor& book = adam.group(codebook_name(level)).param;
+        loss = o.sparse_distance == "cosine"
+                   ? sparse_cosine_loss(map, book, sam_target, gml_target, v.coverage, weights)
+                   : language_loss_from_seg(at::matmul(map, book), sam_target, gml_target, v.coverage, weights);
       } else {
-        rendered = rasterize_features(means, scales, quats, opacities, splatted(adam.group(adam_name(level)).param, o),
-                                      at::Tensor(), settings).image;
+        const at::Tensor rendered = rasterize_features(means, scales, quats, opacities,
+                                                       splatted(adam.group(adam_name(level)).param, o), at::Tensor(),
+                                                       settings).image;
+        loss = language_loss_from_seg(rendered, sam_target, gml_target, v.coverage, weights);
       }
-      const LanguageLoss loss = language_loss_from_seg(rendered, {v.sam_map(level), v.sam_latents},
-                                                       {v.gml_map(level), v.gml_latents}, v.coverage, weights);
       loss.total.backward();
       adam.step();
       adam.zero_grad();
@@ -567,7 +578,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
                          {"final_loss", s.final_loss}};
   if (sparse)
     info["logit_lr"] = o.logit_lr, info["codebook_lr"] = o.codebook_lr, info["sparse_warmup"] = o.sparse_warmup,
-    info["lift_temperature"] = o.lift_temperature;
+    info["lift_temperature"] = o.lift_temperature, info["sparse_distance"] = o.sparse_distance;
   GaussianModel frozen = geometry;
   LanguageModel model{std::move(frozen), {}, std::move(autoencoder), std::move(info), {}, {}};
   for (int l = 0; l < kLevels; ++l)

@@ -37,6 +37,9 @@ struct LanguageTrainOptions {
   // The sparse field's first logits: each basis's mean cosine with the targets a Gaussian is blended into
   // over the training views, divided by this temperature; 0 = seeded noise near zero (no lifting).
   double lift_temperature = 0.1;
+  // The sparse field's distance to the targets in the paper's loss: "l1" (the paper's |.|_1 on the D-d
+  // features) or "cosine" (sparse_loss.h: 1 - cos, exact in the L-d weight space).
+  std::string sparse_distance = "l1";
   int checkpoint_every = 1000;
   bool resume = false;
   uint64_t seed = 1;

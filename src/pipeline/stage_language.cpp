@@ -37,7 +37,8 @@ Stage language_stage(RunContext& run, const std::string& method) {
   // A dense field's settings as before the sparse field existed (its stages stay reused): the sparse field's
   // own options only with it.
   if (!sparse)
-    for (const char* key : {"field", "codebook_size", "top_k", "logit_lr", "codebook_lr", "sparse_warmup", "lift_temperature"})
+    for (const char* key : {"field", "codebook_size", "top_k", "logit_lr", "codebook_lr", "sparse_warmup", "lift_temperature",
+                            "sparse_distance"})
       settings.erase(key);
   Stage s;
   s.name = per_method("train-language", method);

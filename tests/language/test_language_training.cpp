@@ -141,8 +141,10 @@ struct TinyScene {
 };
 
 // Mean |rendered - target| over the target's valid pixels of every view at `level`, and the same
-// for a zero rendering (the initial state).
-std::pair<double, double> target_error(const TinyScene& t, const LanguageModel& m, int level, bool gml) {
+// for a zero rendering (the initial state). `cosine`: mean 1 - cos(rendered, target) instead, and 1 (a
+// rendering orthogonal to the targets).
+std::pair<double, double> target_error(const TinyScene& t, const LanguageModel& m, int level, bool gml,
+                                       bool cosine = false) {
   const at::Tensor means = m.gaussians.means, scales = m.gaussians.scales(), quats = m.gaussians.quats,
                    opac = m.gaussians.opacities();
   double err = 0, base = 0, count = 0;
@@ -166,8 +168,10 @@ std::pair<double, double> target_error(const TinyScene& t, const LanguageModel& 
     at::Tensor w = target.valid.clone();
     for (int x = 0; x < kW; ++x)
       if (std::abs(world_x(v, x)) < 0.5) w.select(1, x).zero_();
-    err += ((img - target.latents).abs().sum(-1) * w).sum().item<double>();
-    base += (target.latents.abs().sum(-1) * w).sum().item<double>();
+    const at::Tensor distance = cosine ? 1 - at::cosine_similarity(img, target.latents, -1)
+                                       : (img - target.latents).abs().sum(-1);
+    err += (distance * w).sum().item<double>();
+    base += ((cosine ? at::ones_like(w) : target.latents.abs().sum(-1)) * w).sum().item<double>();
     count += w.sum().item<double>();
   }
   return {err / count, base / count};
@@ -268,6 +272,50 @@ TEST(LanguageTraining, SparseFieldStartsNearerTheTargetsWhenLifted) {
   }
   for (size_t level = 0; level < 3; ++level)
     EXPECT_LT(rows[0.1][level]["loss"].get<double>(), rows[0.0][level]["loss"].get<double>()) << "level " << level + 1;
+}
+
+// The sparse field under the cosine distance (--sparse-distance cosine, sparse_loss.h): from the jittered start
+// its rendered features turn towards the targets' directions at every level, and model.json says which
+// distance trained it.
+TEST(LanguageTraining, SparseFieldLearnsTheTargetsUnderTheCosineDistance) {
+  TinyScene t;
+  t.options.field = "sparse";
+  t.options.codebook_size = 8;
+  t.options.top_k = 2;
+  t.options.logit_lr = t.options.lr;
+  t.options.autoencoder_path.clear();
+  t.options.lift_temperature = 0;  // what the loss learns, not what the lifting starts from
+  t.options.sparse_distance = "cosine";
+  std::map<int, LanguageModel> models;
+  for (const int iterations : {1, 150}) {
+    t.options.iterations = iterations;
+    t.options.out_dir = (t.dir.path / ("cosine_" + std::to_string(iterations))).string();
+    train_language(t.scene, t.options);
+    models.emplace(iterations, load_language_model(t.options.out_dir));
+  }
+  EXPECT_EQ(models.at(150).info["sparse_distance"], "cosine");
+  // The distance reaches the loss: from the same start the first losses under the L1 differ at every level.
+  const std::vector<nlohmann::json> cosine_rows = read_metrics(fs::path(t.dir.path / "cosine_1") / "metrics.jsonl");
+  t.options.sparse_distance = "l1";
+  t.options.iterations = 1;
+  t.options.out_dir = (t.dir.path / "l1_1").string();
+  train_language(t.scene, t.options);
+  const std::vector<nlohmann::json> l1_rows = read_metrics(fs::path(t.options.out_dir) / "metrics.jsonl");
+  ASSERT_EQ(cosine_rows.size(), 3u);
+  ASSERT_EQ(l1_rows.size(), 3u);
+  for (size_t level = 0; level < 3; ++level)
+    EXPECT_GT(std::abs(cosine_rows[level]["loss"].get<double>() - l1_rows[level]["loss"].get<double>()),
+              0.01 * l1_rows[level]["loss"].get<double>())
+        << "level " << level + 1;
+  for (int level = 1; level <= 3; ++level)
+    for (const bool gml : {false, true}) {
+      const double before = target_error(t, models.at(1), level, gml, true).first;
+      const double after = target_error(t, models.at(150), level, gml, true).first;
+      EXPECT_LT(after, 0.05) << "level " << level << (gml ? " CityGML" : " SAM") << " half, 1 - cos";
+      EXPECT_LT(after, 0.2 * before) << "level " << level << (gml ? " CityGML" : " SAM") << " half";
+    }
+  t.options.sparse_distance = "l2";
+  EXPECT_THROW(train_language(t.scene, t.options), UsageError) << "a distance that is not l1 or cosine";
 }
 
 TEST(LanguageTraining, BaselineIgnoresCityGmlTargets) {
