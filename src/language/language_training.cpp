@@ -222,7 +222,8 @@ nlohmann::json run_config(const LanguageTrainOptions& o, int64_t n, int latent, 
     c["sparse_warmup"] = o.sparse_warmup;
     // Only when lifting: a checkpoint from before the lifted start resumes with --lift-temperature 0.
     if (o.lift_temperature > 0) c["lift_temperature"] = o.lift_temperature;
-    if (o.sparse_distance != "l1") c["sparse_distance"] = o.sparse_distance;  // likewise: older ones took the L1
+    // Likewise: a checkpoint from before the cosine distance resumes with --sparse-distance l1.
+    if (o.sparse_distance != "l1") c["sparse_distance"] = o.sparse_distance;
   }
   return c;
 }
@@ -312,8 +313,8 @@ const OptionList<LanguageTrainOptions>& language_train_options() {
              "sparse field: the first logits are each basis's mean cosine with the targets a Gaussian is blended "
              "into, divided by this, plus a seeded 0.01 jitter (0: the jitter alone)")
         .add("sparse-distance", &O::sparse_distance,
-             "sparse field: the distance in the paper's loss, in CLIP space: l1 (the paper's, on the D-d features) or "
-             "cosine (1 - cos, LangSplatV2's; taken in the L-d weight space through the codebook's Gram matrix)")
+             "sparse field: the distance in the paper's loss, in CLIP space: cosine (1 - cos, LangSplatV2's; taken in "
+             "the L-d weight space through the codebook's Gram matrix) or l1 (the paper's, on the D-d features)")
         .add("logit-lr", &O::logit_lr, "sparse field: Adam learning rate of the weights' logits")
         .add("codebook-lr", &O::codebook_lr, "sparse field: Adam learning rate of the codebook")
         .add("checkpoint-every", &O::checkpoint_every, "iterations between checkpoints (0 = only on interrupt)",

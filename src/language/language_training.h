@@ -2,7 +2,8 @@
 // Language training (paper 3.3): geometry frozen, one latent per Gaussian and level, trained under
 //   L = sum (1 - M) |Z^ - Z_SAM|_1 + lambda_sam sum M |Z^ - Z_SAM|_1 + lambda_citygml sum M |Z^ - Z_GML|_1
 // (SAM terms only where a SAM segment exists, the CityGML term only where C^l is valid).
-// `baseline` = LangSplat's objective (the CityGML term dropped: |Z^ - Z_SAM|_1 everywhere).
+// `baseline` = LangSplat's objective (the CityGML term dropped: |Z^ - Z_SAM|_1 everywhere). The sparse field
+// takes the same terms in CLIP space with --sparse-distance: 1 - cos (sparse_loss.h) or the L1.
 #include <cstdint>
 #include <string>
 
@@ -37,9 +38,10 @@ struct LanguageTrainOptions {
   // The sparse field's first logits: each basis's mean cosine with the targets a Gaussian is blended into
   // over the training views, divided by this temperature; 0 = seeded noise near zero (no lifting).
   double lift_temperature = 0.1;
-  // The sparse field's distance to the targets in the paper's loss: "l1" (the paper's |.|_1 on the D-d
-  // features) or "cosine" (sparse_loss.h: 1 - cos, exact in the L-d weight space).
-  std::string sparse_distance = "l1";
+  // The sparse field's distance to the targets in the paper's loss: "cosine" (sparse_loss.h: 1 - cos, exact in
+  // the L-d weight space; LangSplatV2's) or "l1" (the paper's |.|_1 on the D-d features). docs/language.md
+  // measures both.
+  std::string sparse_distance = "cosine";
   int checkpoint_every = 1000;
   bool resume = false;
   uint64_t seed = 1;

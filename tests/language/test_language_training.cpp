@@ -199,12 +199,13 @@ TEST(LanguageTraining, RenderedLatentsApproachTheTargets) {
   EXPECT_TRUE(at::equal(m.gaussians.opacity_logits, in.opacity_logits));
 }
 
-// The sparse field (issue 36): K softmax weights over a codebook per level, no autoencoder; its rendered
-// features (weights times codebook) approach the targets in feature space, and a resumed run equals an
-// uninterrupted one (the logits, the codebook and both Adam states are checkpointed).
+// The sparse field (issue 36): K softmax weights over a codebook per level, no autoencoder; under the L1 its
+// rendered features (weights times codebook) approach the targets in feature space, magnitude and all, and a
+// resumed run equals an uninterrupted one (the logits, the codebook and both Adam states are checkpointed).
 TEST(LanguageTraining, SparseFieldLearnsTheTargetsInFeatureSpace) {
   TinyScene t;
   t.options.field = "sparse";
+  t.options.sparse_distance = "l1";  // the cosine leaves a feature's length free (its own test below)
   t.options.codebook_size = 8;
   t.options.top_k = 2;
   t.options.logit_lr = t.options.lr;  // the tiny scene's short schedule
@@ -285,7 +286,7 @@ TEST(LanguageTraining, SparseFieldLearnsTheTargetsUnderTheCosineDistance) {
   t.options.logit_lr = t.options.lr;
   t.options.autoencoder_path.clear();
   t.options.lift_temperature = 0;  // what the loss learns, not what the lifting starts from
-  t.options.sparse_distance = "cosine";
+  EXPECT_EQ(t.options.sparse_distance, "cosine") << "the default";
   std::map<int, LanguageModel> models;
   for (const int iterations : {1, 150}) {
     t.options.iterations = iterations;
