@@ -94,7 +94,7 @@ for s in "${steps[@]}"; do
       done ;;
     bench_language)
       step "$s" 180 "$B/bench/bench_language" --device cuda --threads 16 --repeats 10 \
-        --train-scenes 50000@480x360,200000@800x600,1000000@1600x1000 --loss l1,dense,seg,sparse,sparse-warmup,sparse-cosine \
+        --train-scenes 50000@480x360,200000@800x600,1000000@1600x1000 --loss l1,dense,seg,sparse,sparse-warmup,sparse-cosine,sparse-cosine-warmup \
         --query-scene 200000@1920x1080 --matmul-precision highest,high
       step bench_language_chunk256k 60 "$B/bench/bench_language" --device cuda --threads 16 --repeats 10 \
         --train-scenes '' --query-scene 200000@1920x1080 --chunk 262144 ;;

@@ -24,7 +24,8 @@ int cmd_train_language(int argc, char** argv) {
   args.bind("scene", scene_dir, "scene directory (COLMAP, OPF or Pix4D) the features were computed for").required();
   language_train_options().declare(args, o);
   args.bind("baseline", baseline,
-            "'langsplat': LangSplat's objective (plain L1 to the SAM targets, no CityGML term); "
+            "'langsplat': LangSplat's objective (the SAM targets alone, no CityGML term; L1, or the sparse field's "
+            "--sparse-distance); "
             "'langsplat-original': the same with LangSplat's normalised splatting (give it the autoencoder of "
             "`autoencoder --preset langsplat`)",
             choice_codec({"", "langsplat", "langsplat-original"}))

@@ -94,21 +94,10 @@ namespace {
 using torch::autograd::AutogradContext;
 using torch::autograd::variable_list;
 
-void check_seg_target(const SegMapTarget& t, const at::Tensor& rendered, const char* name) {
-  if (!t.ids.defined()) return;
-  if (t.ids.dim() != 2 || t.ids.size(0) != rendered.size(0) || t.ids.size(1) != rendered.size(1) ||
-      t.ids.scalar_type() != at::kInt)
-    throw Error(std::string("language loss: the ") + name + " seg map must be H x W int32 as the rendered map");
-  if (!t.table.defined() || t.table.dim() != 2 || t.table.size(1) != rendered.size(2) ||
-      t.table.scalar_type() != at::kFloat)
-    throw Error(std::string("language loss: the ") + name + " latent table must be K x L float32 with L = " +
-                std::to_string(rendered.size(2)));
-}
-
-// The seg map's ids and table on `device`, contiguous (undefined where there is no map).
+// The seg map's ids and its table as float32 on `device`, contiguous (undefined where there is no map).
 std::pair<at::Tensor, at::Tensor> on_device(const SegMapTarget& t, const at::Device& device) {
   if (!t.ids.defined()) return {};
-  return {t.ids.to(device).contiguous(), t.table.to(device).contiguous()};
+  return {t.ids.to(device).contiguous(), t.table.to(device, at::kFloat).contiguous()};
 }
 
 // The tensors of one pass and the SegLossArgs that point into them (on their device).
@@ -231,6 +220,16 @@ class SegLossFunction : public torch::autograd::Function<SegLossFunction> {
 
 }  // namespace
 
+void check_seg_target(const SegMapTarget& t, const at::Tensor& map, int64_t columns, const char* what,
+                      const char* name) {
+  if (!t.ids.defined()) return;
+  if (t.ids.dim() != 2 || t.ids.size(0) != map.size(0) || t.ids.size(1) != map.size(1) || t.ids.scalar_type() != at::kInt)
+    throw Error(std::string(what) + ": the " + name + " seg map must be H x W int32 as the rendered map");
+  if (!t.table.defined() || t.table.dim() != 2 || t.table.size(1) != columns || !t.table.is_floating_point())
+    throw Error(std::string(what) + ": the " + name + " table must be K x " + std::to_string(columns) +
+                " floating point");
+}
+
 void check_seg_ids(const SegMapTarget& t, const char* name) {
   if (!t.ids.defined()) return;
   const at::Tensor ids = t.ids.to(at::kCPU).contiguous();
@@ -256,8 +255,8 @@ LanguageLoss language_loss_from_seg(const at::Tensor& rendered, const SegMapTarg
                 "the CPU or a CUDA device");
   if (rendered.numel() == 0) throw Error("language loss: the rendered map is empty (" + c10::str(rendered.sizes()) + ")");
   check_map(coverage, rendered, "coverage", false);
-  check_seg_target(sam, rendered, "SAM");
-  if (!weights.baseline) check_seg_target(gml, rendered, "CityGML");
+  check_seg_target(sam, rendered, rendered.size(2), "language loss", "SAM");
+  if (!weights.baseline) check_seg_target(gml, rendered, rendered.size(2), "language loss", "CityGML");
   std::array<double, 3> terms{0, 0, 0};
   LanguageLoss out;
   out.total = SegLossFunction::apply(rendered, &sam, &gml, coverage, weights, &terms);

@@ -60,10 +60,15 @@ LanguageLoss language_loss(const LanguageLossInputs& inputs, const LanguageLossW
 // terms are CPU scalars (the pass sums them on the host's side).
 struct SegMapTarget {
   at::Tensor ids;    // H x W int32, -1 = none; undefined = no pixel valid
-  at::Tensor table;  // K x L float32 latents
+  at::Tensor table;  // K x L latents (floating point; the one-pass loss reads them as float32)
 };
 LanguageLoss language_loss_from_seg(const at::Tensor& rendered, const SegMapTarget& sam, const SegMapTarget& gml,
                                     const at::Tensor& coverage, const LanguageLossWeights& weights);
+
+// cls::Error from `what` (the caller) unless the seg map's ids are int32 of the rendered `map`'s H x W and its
+// table K x `columns` floating point; nothing when the ids are undefined.
+void check_seg_target(const SegMapTarget& t, const at::Tensor& map, int64_t columns, const char* what,
+                      const char* name);
 
 // cls::Error naming the map (`name`: "SAM", "CityGML"), the id and the first pixel whose id lies outside
 // [-1, rows of the table); nothing when the ids are undefined. Reads the ids on the CPU.

@@ -13,7 +13,8 @@
 //    region there (docs/conventions.md: coverage is 255 where any level has a label, and the
 //    features stage writes -1 wherever M = 0).
 // Only the per-segment latents (the encoder applied once per view) and the seg maps are kept in
-// memory; the loss runs straight from the seg maps (language_loss_from_seg), on the CPU or a GPU.
+// memory; the loss runs straight from the seg maps (language_loss_from_seg; the sparse field's cosine:
+// sparse_cosine_loss), on the CPU or a GPU.
 #include "language/language_training.h"
 
 #include <ATen/ATen.h>

@@ -3,25 +3,10 @@
 #include <ATen/ATen.h>
 
 #include <string>
-#include <utility>
 
 #include "core/error.h"
 
 namespace cls {
-namespace {
-
-void check_target(const SegMapTarget& t, const at::Tensor& weight_map, const at::Tensor& codebook, const char* name) {
-  if (!t.ids.defined()) return;
-  if (t.ids.dim() != 2 || t.ids.size(0) != weight_map.size(0) || t.ids.size(1) != weight_map.size(1) ||
-      t.ids.scalar_type() != at::kInt)
-    throw Error(std::string("sparse cosine loss: the ") + name + " seg map must be H x W int32 as the weight map");
-  if (!t.table.defined() || t.table.dim() != 2 || t.table.size(1) != codebook.size(1))
-    throw Error(std::string("sparse cosine loss: the ") + name + " table must be K x D with D = " +
-                std::to_string(codebook.size(1)) + ", the codebook's width");
-  check_seg_ids(t, name);
-}
-
-}  // namespace
 
 LanguageLoss sparse_cosine_loss(const at::Tensor& weight_map, const at::Tensor& codebook, const SegMapTarget& sam,
                                 const SegMapTarget& gml, const at::Tensor& coverage, const LanguageLossWeights& weights) {
@@ -33,16 +18,21 @@ LanguageLoss sparse_cosine_loss(const at::Tensor& weight_map, const at::Tensor& 
   if (!coverage.defined() || coverage.dim() != 2 || coverage.size(0) != weight_map.size(0) ||
       coverage.size(1) != weight_map.size(1))
     throw Error("sparse cosine loss: the coverage must be H x W as the weight map");
-  check_target(sam, weight_map, codebook, "SAM");
-  if (!weights.baseline) check_target(gml, weight_map, codebook, "CityGML");
+  check_seg_target(sam, weight_map, codebook.size(1), "sparse cosine loss", "SAM");
+  check_seg_ids(sam, "SAM");
+  if (!weights.baseline) {  // the baseline reads no CityGML map
+    check_seg_target(gml, weight_map, codebook.size(1), "sparse cosine loss", "CityGML");
+    check_seg_ids(gml, "CityGML");
+  }
 
   const int64_t n = weight_map.size(0) * weight_map.size(1);
   const at::TensorOptions opts = weight_map.options().requires_grad(false);
   const at::Tensor flat = weight_map.reshape({n, weight_map.size(2)});
-  const at::Tensor book = codebook.to(weight_map.scalar_type());
+  const at::Tensor book = codebook.to(weight_map.device(), weight_map.scalar_type());
   // |F(v)|^2 = W(v)^T (B B^T) W(v): the L x L Gram matrix instead of the D-d features.
   const at::Tensor norm2 = (at::matmul(flat, at::matmul(book, book.t())) * flat).sum(1);
-  // 1 - cos(F(v), t(v)) where the map has a target, else 0.
+  // 1 - cos(F(v), t(v)) where the map has a target, else 0. A pixel no Gaussian reaches (W = 0) has cosine 0
+  // and a gradient of (B t) / 1e-8 that no weight receives: nothing is blended there.
   const auto distance = [&](const SegMapTarget& t) {
     if (!t.ids.defined() || t.table.size(0) == 0) return at::zeros({n}, opts);
     const at::Tensor ids = t.ids.reshape({n}).to(weight_map.device(), at::kLong);

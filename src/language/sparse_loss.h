@@ -21,7 +21,8 @@ namespace cls {
 
 // weight_map: H x W x L rendered weights (may require grad); codebook: L x D (may require grad); the seg maps'
 // tables hold D-d targets (the baseline's CityGML map is not read). cos = F . t / max(|F| |t|, 1e-8), as
-// torch's cosine_similarity. Any floating dtype on any device; the ids are read on the CPU for the check.
+// torch's cosine_similarity. float32 or float64 on any device (the codebook, tables and coverage are moved to
+// the weight map's); the ids are read on the CPU for the check.
 // cls::Error for shapes that do not agree and for ids outside their tables (check_seg_ids).
 LanguageLoss sparse_cosine_loss(const at::Tensor& weight_map, const at::Tensor& codebook, const SegMapTarget& sam,
                                 const SegMapTarget& gml, const at::Tensor& coverage, const LanguageLossWeights& weights);

@@ -19,6 +19,7 @@
 #include "core/error.h"
 #include "core/interrupt.h"
 #include "core/metrics_log.h"
+#include "error_of.h"
 #include "features/view_features.h"
 #include "language/language_loss.h"
 #include "language/language_model.h"
@@ -315,6 +316,16 @@ TEST(LanguageTraining, SparseFieldLearnsTheTargetsUnderTheCosineDistance) {
       EXPECT_LT(after, 0.05) << "level " << level << (gml ? " CityGML" : " SAM") << " half, 1 - cos";
       EXPECT_LT(after, 0.2 * before) << "level " << level << (gml ? " CityGML" : " SAM") << " half";
     }
+  // A checkpoint trained under the L1 does not resume under the cosine: the distance is part of its settings.
+  t.options.out_dir = (t.dir.path / "l1_stopped").string();
+  t.options.iterations = 4;
+  t.options.stop_after = 2;
+  EXPECT_TRUE(train_language(t.scene, t.options).interrupted);
+  t.options.stop_after = 0;
+  t.options.resume = true;
+  t.options.sparse_distance = "cosine";
+  EXPECT_NE(test::error_of([&] { train_language(t.scene, t.options); }).find("sparse_distance"), std::string::npos);
+  t.options.resume = false;
   t.options.sparse_distance = "l2";
   EXPECT_THROW(train_language(t.scene, t.options), UsageError) << "a distance that is not l1 or cosine";
 }

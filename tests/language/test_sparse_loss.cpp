@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <torch/torch.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -42,7 +43,7 @@ std::array<double, 3> definition(const CosineCase& c, const at::Tensor& weights,
     const auto ta = t.table.accessor<double, 2>();
     double dot = 0, ff = 0, tt = 0;
     for (int64_t k = 0; k < d; ++k) dot += f[k] * ta[id][k], ff += f[k] * f[k], tt += ta[id][k] * ta[id][k];
-    return dot / std::sqrt(ff * tt);
+    return dot / std::sqrt(std::max(ff * tt, 1e-16));  // the 1e-8 floor of sparse_loss.h
   };
   std::array<double, 3> terms{0, 0, 0};
   for (int64_t y = 0; y < h; ++y)
@@ -84,7 +85,11 @@ TEST(SparseCosineLoss, EqualsTheDefinitionAndItsDifferences) {
       };
       return (at(plus) - at(minus)) / (2 * step);
     };
-    for (const int64_t pixel : {int64_t(0), int64_t(17)})
+    // Two pixels with a SAM segment: one with a CityGML region, one without.
+    const at::Tensor sam_ids = c.sam.ids.flatten(), gml_ids = c.gml.ids.flatten();
+    const int64_t both = ((sam_ids >= 0) & (gml_ids >= 0)).nonzero()[0].item<int64_t>();
+    const int64_t sam_only = ((sam_ids >= 0) & (gml_ids < 0)).nonzero()[0].item<int64_t>();
+    for (const int64_t pixel : {both, sam_only})
       for (int64_t j = 0; j < c.weights.size(2); ++j) {
         at::Tensor plus = c.weights.clone(), minus = c.weights.clone();
         plus.view({-1, c.weights.size(2)})[pixel][j] += step;
@@ -128,6 +133,20 @@ TEST(SparseCosineLoss, ScaleOfTheWeightsAndTargetsDoesNotMatter) {
             1e-3);
 }
 
+TEST(SparseCosineLoss, PixelsNoGaussianReachesStayFinite) {
+  // W = 0 (nothing blended): cosine 0 there, so 1 - 0 counts, and every value and gradient is finite.
+  CosineCase c = cosine_case(3, 4, 3, 5, 2, 2);
+  c.weights[1][2].zero_();
+  c.sam.ids[1][2] = 0;
+  c.coverage[1][2] = 0;
+  const at::Tensor weights = c.weights.clone().requires_grad_(true), codebook = c.codebook.clone().requires_grad_(true);
+  const LanguageLoss loss = sparse_cosine_loss(weights, codebook, c.sam, c.gml, c.coverage, {1.0, 0.5, false});
+  EXPECT_NEAR(loss.sam.item<double>(), definition(c, c.weights, c.codebook)[0], 1e-12);
+  loss.total.backward();
+  EXPECT_TRUE(torch::isfinite(weights.grad()).all().item<bool>());
+  EXPECT_TRUE(torch::isfinite(codebook.grad()).all().item<bool>());
+}
+
 TEST(SparseCosineLoss, BadInputsAreErrorsNamingWhat) {
   CosineCase c = cosine_case(3, 4, 3, 5, 2, 2);
   const LanguageLossWeights lw;
@@ -145,7 +164,7 @@ TEST(SparseCosineLoss, BadInputsAreErrorsNamingWhat) {
             std::string::npos);
   EXPECT_NE(test::error_of([&] {
               sparse_cosine_loss(c.weights, c.codebook, {c.sam.ids, c.sam.table.slice(1, 1)}, c.gml, c.coverage, lw);
-            }).find("D = 5"),
+            }).find("SAM table must be K x 5"),
             std::string::npos);
   EXPECT_THROW(sparse_cosine_loss(c.weights, c.codebook, c.sam, c.gml, c.coverage.slice(0, 1), lw), Error);
 }
