@@ -6,13 +6,21 @@
 // and the transmittance chain, which per-channel loops cannot. The tests hold it to blend_pixel.h's
 // scalar definitions through the double reference renderer and finite differences in double.
 //
+// Comparisons and selections go through lane_less, lane_less_equal and lane_select, which take the
+// build's register size: GCC 12 splits the arithmetic and bitwise operations of a vector wider than the
+// registers into registers, but lowers its comparisons one lane at a time (a scalar compare per lane, and
+// a branch per lane for `m ? a : b`). Written as operators, every build but AVX-512's ran the
+// blending scalar, slower than the SSE2 build on an AVX2 CPU (docs/benchmarks.md).
+//
 // Hand-written instead of a SIMD library: Debian has none that LibTorch's build already brings, and
-// the operations needed are a few (select, lane sums, one exp). Everything here, and blend_pixel.h's
-// gaussian_power that the lanes share, is inlined into the tile kernels: no vector crosses a call, so
-// GCC's -Wpsabi note (64-byte vectors change the ABI without AVX-512) does not apply; the includer
-// silences it.
+// the operations needed are a few (compare, select, lane sums, one exp). Everything here, and
+// blend_pixel.h's gaussian_power that the lanes share, is inlined into the tile kernels: no vector crosses
+// a call, so GCC's -Wpsabi note (64-byte vectors change the ABI without AVX-512) does not apply; the
+// includer silences it.
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <type_traits>
 
 #include "splat/blend_pixel.h"
 
@@ -36,6 +44,73 @@ using Lanes = typename LaneTypes<T>::V;
 // Per-lane truth values: all bits set (-1) or 0, integers of the lanes' width.
 template <class T>
 using LaneMask = decltype(Lanes<T>{} < Lanes<T>{});
+
+// A vector of one register: kBytes of E (16 SSE2 and NEON, 32 AVX2, 64 AVX-512), what a build's tile
+// kernels pass to the helpers below as kBytes.
+// (Spelled out per type: GCC drops vector_size from a dependent type.)
+template <class E, int kBytes>
+struct NativeVector;
+#define CLS_NATIVE_VECTOR(E, BYTES)                         \
+  template <>                                               \
+  struct NativeVector<E, BYTES> {                           \
+    using V = E __attribute__((vector_size(BYTES)));        \
+  };
+#define CLS_NATIVE_VECTORS(E) CLS_NATIVE_VECTOR(E, 16) CLS_NATIVE_VECTOR(E, 32) CLS_NATIVE_VECTOR(E, 64)
+CLS_NATIVE_VECTORS(float)
+CLS_NATIVE_VECTORS(double)
+#undef CLS_NATIVE_VECTORS
+#undef CLS_NATIVE_VECTOR
+
+// op applied a register at a time: the lanes of a and b (Lanes<T> or LaneMask<T>) cut into registers of
+// kBytes, op on each pair, the results put together in order.
+template <int kBytes, class Out, class In, class Op>
+[[gnu::always_inline]] inline Out lanes_by_register(const In& a, const In& b, Op op) {
+  using E = std::remove_cv_t<std::remove_reference_t<decltype(a[0])>>;
+  using P = typename NativeVector<E, kBytes>::V;
+  static_assert(sizeof(In) % kBytes == 0 && sizeof(Out) == sizeof(In), "whole registers of lanes");
+  Out out;
+  for (std::size_t i = 0; i < sizeof(In); i += kBytes) {
+    P pa, pb;
+    std::memcpy(&pa, reinterpret_cast<const char*>(&a) + i, kBytes);
+    std::memcpy(&pb, reinterpret_cast<const char*>(&b) + i, kBytes);
+    const auto r = op(pa, pb);
+    static_assert(sizeof(r) == kBytes, "one register in, one out");
+    std::memcpy(reinterpret_cast<char*>(&out) + i, &r, kBytes);
+  }
+  return out;
+}
+
+struct LessOp {
+  template <class P>
+  [[gnu::always_inline]] auto operator()(const P& a, const P& b) const {
+    return a < b;
+  }
+};
+struct LessEqualOp {
+  template <class P>
+  [[gnu::always_inline]] auto operator()(const P& a, const P& b) const {
+    return a <= b;
+  }
+};
+
+// a < b and a <= b per lane of Lanes<T> (IEEE: false where either is NaN), as a LaneMask<T>.
+template <int kBytes, class V>
+[[gnu::always_inline]] inline auto lane_less(const V& a, const V& b) {
+  return lanes_by_register<kBytes, decltype(a < b)>(a, b, LessOp{});
+}
+template <int kBytes, class V>
+[[gnu::always_inline]] inline auto lane_less_equal(const V& a, const V& b) {
+  return lanes_by_register<kBytes, decltype(a <= b)>(a, b, LessEqualOp{});
+}
+
+// m ? a : b per lane for masks m of all bits or none (LaneMask), a and b Lanes<T> or LaneMask<T>: the
+// bits of a where m is set, of b elsewhere.
+template <int kBytes, class Vec, class Mask>
+[[gnu::always_inline]] inline Vec lane_select(const Mask& m, const Vec& a, const Vec& b) {
+  static_assert(sizeof(Vec) == sizeof(Mask), "a mask lane per value lane");
+  const Mask bits_a = __builtin_bit_cast(Mask, a), bits_b = __builtin_bit_cast(Mask, b);
+  return __builtin_bit_cast(Vec, bits_b ^ ((bits_a ^ bits_b) & m));
+}
 
 // The lane sums of 16 vectors at once: lane i of the result is the sum of q[i]'s lanes (a transpose by
 // halving: 15 steps of two shuffles and an add, against 16 separate sums).
@@ -67,11 +142,14 @@ template <class Mask>
 // polynomial, 2^n through the exponent bits), relative error about 1e-7 like the library's expf, and
 // the same in the forward and the backward, so both take the same skip decisions. double (the
 // finite-difference checks): the library's exp per lane.
+template <int kBytes>
 [[gnu::always_inline]] inline Lanes<float> lane_exp(const Lanes<float>& power) {
   using V = Lanes<float>;
   using I = LaneMask<float>;
-  V x = power >= -87.0f ? power : V{} - 87.0f;  // NaN too: no NaN reaches the integer conversion
-  x = x > 0.0f ? V{} : x;
+  const V floor = V{} - 87.0f;
+  V x = lane_select<kBytes>(lane_less_equal<kBytes>(floor, power), power, floor);  // NaN too: no NaN reaches
+                                                                                   // the integer conversion
+  x = lane_select<kBytes>(lane_less<kBytes>(V{}, x), V{}, x);
   const float kRound = 12582912.0f;  // 1.5 * 2^23: adding and subtracting it rounds to an integer
   const V n = (x * 1.44269504088896341f + kRound) - kRound;
   x = x - n * 0.693359375f;
@@ -86,6 +164,7 @@ template <class Mask>
   return p * __builtin_bit_cast(V, bits);
 }
 
+template <int kBytes>
 [[gnu::always_inline]] inline Lanes<double> lane_exp(const Lanes<double>& x) {
   Lanes<double> r;
   for (int l = 0; l < kLanes; ++l) r[l] = x[l] > 0.0 ? 1.0 : std::exp(x[l]);
@@ -94,40 +173,38 @@ template <class Mask>
 
 // alpha_from_power per lane: alpha where `pass` (power <= 0 and alpha >= 1/255, and `pass` on entry), 0
 // elsewhere; G = exp(power). The exp runs in every lane anyway, so the cutoff power (a skip of the scalar
-// exp) is not tested: below it alpha < 1/255 for certain. One mask comparison only: GCC 12 turns two or
-// more comparisons combined into a mask here into one scalar compare per lane (16 vcomiss each) when it
-// inlines this into a kernel built for AVX-512; the power test is a select of floats instead.
-template <class T>
+// exp) is not tested: below it alpha < 1/255 for certain.
+template <int kBytes, class T>
 [[gnu::always_inline]] inline Lanes<T> lane_alpha(const Lanes<T>& power, T opacity, LaneMask<T>& pass, Lanes<T>& G) {
   using V = Lanes<T>;
-  G = lane_exp(power);
-  const V raw = opacity * G;
-  V alpha = raw < T(kAlphaMax) ? raw : V{} + T(kAlphaMax);
-  alpha = power <= T(0) ? alpha : V{};
-  pass &= alpha >= T(kAlphaMin);
-  return pass ? alpha : V{};
+  G = lane_exp<kBytes>(power);
+  const V raw = opacity * G, max = V{} + T(kAlphaMax);
+  V alpha = lane_select<kBytes>(lane_less<kBytes>(raw, max), raw, max);
+  alpha = lane_select<kBytes>(lane_less_equal<kBytes>(power, V{}), alpha, V{});
+  pass &= lane_less_equal<kBytes>(V{} + T(kAlphaMin), alpha);
+  return lane_select<kBytes>(pass, alpha, V{});
 }
 
 // gaussian_alpha_backward per lane where `contributed` (zero elsewhere and at the 0.99 clamp): q[0..1]
 // dL/dmean2d, q[2..3] its absolute value, q[4..6] dL/dconic, q[7] dL/dopacity.
-template <class T>
+template <int kBytes, class T>
 [[gnu::always_inline]] inline void lane_alpha_backward(const T* mean2d, const T* conic, T opacity, const Lanes<T>& cx,
                                                        const Lanes<T>& cy, const Lanes<T>& G, const Lanes<T>& dL_dalpha,
                                                        const LaneMask<T>& contributed, Lanes<T>* q) {
   using V = Lanes<T>;
-  const LaneMask<T> pass = contributed & (opacity * G < T(kAlphaMax));
+  const LaneMask<T> pass = contributed & lane_less<kBytes>(opacity * G, V{} + T(kAlphaMax));
   const V dx = mean2d[0] - cx, dy = mean2d[1] - cy;
-  const V dL_dpower = pass ? opacity * G * dL_dalpha : V{};
+  const V dL_dpower = lane_select<kBytes>(pass, opacity * G * dL_dalpha, V{});
   const V gx = -dL_dpower * (conic[0] * dx + conic[1] * dy);
   const V gy = -dL_dpower * (conic[2] * dy + conic[1] * dx);
   q[0] = gx;
   q[1] = gy;
-  q[2] = gx < T(0) ? -gx : gx;
-  q[3] = gy < T(0) ? -gy : gy;
+  q[2] = lane_select<kBytes>(lane_less<kBytes>(gx, V{}), -gx, gx);
+  q[3] = lane_select<kBytes>(lane_less<kBytes>(gy, V{}), -gy, gy);
   q[4] = T(-0.5) * dx * dx * dL_dpower;
   q[5] = -dx * dy * dL_dpower;
   q[6] = T(-0.5) * dy * dy * dL_dpower;
-  q[7] = pass ? G * dL_dalpha : V{};
+  q[7] = lane_select<kBytes>(pass, G * dL_dalpha, V{});
 }
 
 }  // namespace cls

@@ -239,7 +239,7 @@ template <class T>
 // Front-to-back blending of one tile (renderCUDA), a 4x4 sub-tile at a time with one lane per pixel
 // (blend_lanes.h). kC > 0 fixes the channel count at compile time (RGB), kC = 0 loops over C at run time.
 // Always inlined: the kernel builds below compile it once per instruction set.
-template <class T, int kC>
+template <class T, int kC, int kBytes>
 [[gnu::always_inline]] inline void forward_tile(const ForwardTileJob<T>& j, int tile, TileScratch<T>& s) {
   using V = Lanes<T>;
   using M = LaneMask<T>;
@@ -279,15 +279,15 @@ template <class T, int kC>
       const V power = gaussian_power(g.mean2d, g.conic, cx, cy);
       M pass = live;  // nearly every entry of a sub-tile list has a lane within its cutoff
       V G;
-      const V a = lane_alpha(power, g.opacity, pass, G);
+      const V a = lane_alpha<kBytes>(power, g.opacity, pass, G);
       if (!any_lane(pass)) continue;
       const V test_T = Tr * (T(1) - a);
-      const M stop = pass & (test_T < T(kTransmittanceMin));
+      const M stop = pass & lane_less<kBytes>(test_T, V{} + T(kTransmittanceMin));
       pass &= ~stop;
-      const V w = pass ? a * Tr : V{};
+      const V w = lane_select<kBytes>(pass, a * Tr, V{});
       const T* v = values + static_cast<size_t>(g.id) * j.nv;
       if (kC > 0) {
-        for (int c = 0; c < nc; ++c) acc[c] += pass ? w * v[c] : V{};
+        for (int c = 0; c < nc; ++c) acc[c] += lane_select<kBytes>(pass, w * v[c], V{});
       } else if (j.index) {  // sparse: w = 0 in the lanes that do not pass
         const int32_t* idx = j.index + static_cast<size_t>(g.id) * j.nv;
         for (int k = 0; k < j.nv; ++k) acc[idx[k]] += w * v[k];
@@ -296,8 +296,8 @@ template <class T, int kC>
         if (batched == kBatch) add_weighted_values(acc, batch_w, batch_v, batched, nc), batched = 0;
       }
       d += w * g.depth;
-      Tr = pass ? test_T : Tr;
-      last = pass ? M{} + (k + 1) : last;
+      Tr = lane_select<kBytes>(pass, test_T, Tr);
+      last = lane_select<kBytes>(pass, M{} + (k + 1), last);
       if (any_lane(stop)) {
         live &= ~stop;
         if (!any_lane(live)) break;
@@ -353,7 +353,7 @@ template <class T>
     for (int k = 0; k < n; ++k) value_grad[c] += weights[k] * rows[k][c];
 }
 
-template <class T, int kC>
+template <class T, int kC, int kBytes>
 [[gnu::always_inline]] inline void backward_tile(const BackwardTileJob<T>& j, int tile, TileScratch<T>& s) {
   using V = Lanes<T>;
   using M = LaneMask<T>;
@@ -422,7 +422,7 @@ template <class T, int kC>
       // into one mask (lane_alpha's) in the AVX-512 build, one compare per lane
       M pass = (jj - n_lane) >> 31;
       V G;
-      const V a = lane_alpha(power, g.opacity, pass, G);
+      const V a = lane_alpha<kBytes>(power, g.opacity, pass, G);
       if (!any_lane(pass)) continue;
       // a = 0 in the other lanes, so these leave them as they are
       const V one_minus_a = T(1) - a;
@@ -451,17 +451,17 @@ template <class T, int kC>
           for (; c < nc; ++c) part[0] += v[c] * dpix[c];
           v_dot = (part[0] + part[1]) + (part[2] + part[3]);
         }
-        rec_dot = pass ? last_alpha * last_v_dot + (T(1) - last_alpha) * rec_dot : rec_dot;
-        last_v_dot = pass ? v_dot : last_v_dot;
+        rec_dot = lane_select<kBytes>(pass, last_alpha * last_v_dot + (T(1) - last_alpha) * rec_dot, rec_dot);
+        last_v_dot = lane_select<kBytes>(pass, v_dot, last_v_dot);
         V dL_da = v_dot - rec_dot;
-        rec_d = pass ? last_alpha * last_d + (T(1) - last_alpha) * rec_d : rec_d;
-        last_d = pass ? V{} + g.depth : last_d;
+        rec_d = lane_select<kBytes>(pass, last_alpha * last_d + (T(1) - last_alpha) * rec_d, rec_d);
+        last_d = lane_select<kBytes>(pass, V{} + g.depth, last_d);
         dL_da += (g.depth - rec_d) * dD;
         dL_da *= Tr;
         // alpha = 1 - T_final and the background term T_final * bg: dT_final/dalpha = -T_final/(1-alpha)
         dL_da += (dA - bg_dot) * T_final * inv_one_minus_a;
-        last_alpha = pass ? a : last_alpha;
-        lane_alpha_backward(g.mean2d, g.conic, g.opacity, cx, cy, G, dL_da, pass, q);
+        last_alpha = lane_select<kBytes>(pass, a, last_alpha);
+        lane_alpha_backward<kBytes>(g.mean2d, g.conic, g.opacity, cx, cy, G, dL_da, pass, q);
         q[8] = w * dD;  // w = 0 where the lane does not contribute
       }
       // summed over the lanes
@@ -511,19 +511,19 @@ using ForwardTileFn = void (*)(const ForwardTileJob<T>&, int, TileScratch<T>&);
 template <class T>
 using BackwardTileFn = void (*)(const BackwardTileJob<T>&, int, TileScratch<T>&);
 
-#define CLS_TILE_KERNELS(NAME, ATTRIBUTE)                                                                \
+#define CLS_TILE_KERNELS(NAME, ATTRIBUTE, REGISTER_BYTES)                                                \
   template <class T, int kC>                                                                             \
   ATTRIBUTE void forward_tile_##NAME(const ForwardTileJob<T>& j, int tile, TileScratch<T>& s) {          \
-    forward_tile<T, kC>(j, tile, s);                                                                     \
+    forward_tile<T, kC, REGISTER_BYTES>(j, tile, s);                                                     \
   }                                                                                                      \
   template <class T, int kC>                                                                             \
   ATTRIBUTE void backward_tile_##NAME(const BackwardTileJob<T>& j, int tile, TileScratch<T>& s) {        \
-    backward_tile<T, kC>(j, tile, s);                                                                    \
+    backward_tile<T, kC, REGISTER_BYTES>(j, tile, s);                                                    \
   }
-CLS_TILE_KERNELS(baseline, )
+CLS_TILE_KERNELS(baseline, , 16)
 #if CLS_X86_KERNELS
-CLS_TILE_KERNELS(v3, [[gnu::target("arch=x86-64-v3")]])
-CLS_TILE_KERNELS(v4, [[gnu::target("arch=x86-64-v4,prefer-vector-width=512")]])
+CLS_TILE_KERNELS(v3, [[gnu::target("arch=x86-64-v3")]], 32)
+CLS_TILE_KERNELS(v4, [[gnu::target("arch=x86-64-v4,prefer-vector-width=512")]], 64)
 #endif
 #undef CLS_TILE_KERNELS
 
