@@ -104,6 +104,7 @@ struct SceneSpec {
 
 std::vector<SceneSpec> parse_scenes(const std::string& text) {
   std::vector<SceneSpec> specs;
+  if (text == "none") return specs;
   for (const std::string& item : split_commas(text)) {
     SceneSpec s{};
     char at_sign = 0, x = 0;
@@ -216,13 +217,13 @@ int bench_main(int argc, char** argv) {
   std::vector<std::string> losses = {"l1"}, precisions = {"highest"};
   args.bind("threads", threads, "OpenMP / ATen threads")
       .bind("channels", channels, "latent channels")
-      .bind("train-scenes", train_scene_text, "training scenes, N@WxH comma-separated")
+      .bind("train-scenes", train_scene_text, "training scenes, N@WxH comma-separated, or none")
       .bind("loss", losses, "training losses to time, comma-separated: l1, seg (train-language's), dense; sparse, "
                             "sparse-warmup (the sparse field's iterations, 512-d targets), sparse-cosine, "
                             "sparse-cosine-warmup (the same with --sparse-distance cosine)")
       .bind("codebook-size", bases, "sparse: bases L")
       .bind("top-k", top_k, "sparse: weights per Gaussian K")
-      .bind("query-scene", query_scene_text, "the relevance-map scene, N@WxH (empty: none)")
+      .bind("query-scene", query_scene_text, "the relevance-map scene, N@WxH, or none")
       .bind("chunk", chunk_pixels, "pixels decoded per autoencoder call")
       .bind("matmul-precision", precisions, "float32 product precisions to time the decode with, comma-separated "
                                             "(highest, high: TF32 on CUDA, medium)")

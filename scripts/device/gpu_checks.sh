@@ -97,7 +97,7 @@ for s in "${steps[@]}"; do
         --train-scenes 50000@480x360,200000@800x600,1000000@1600x1000 --loss l1,dense,seg,sparse,sparse-warmup,sparse-cosine,sparse-cosine-warmup \
         --query-scene 200000@1920x1080 --matmul-precision highest,high
       step bench_language_chunk256k 60 "$B/bench/bench_language" --device cuda --threads 16 --repeats 10 \
-        --train-scenes '' --query-scene 200000@1920x1080 --chunk 262144 ;;
+        --train-scenes none --query-scene 200000@1920x1080 --chunk 262144 ;;
     bench_query)  # relevance_maps as `query` calls it, 1080p, per decode chunk (0: the device's default)
       for c in 8192 65536 0 1048576; do
         step "bench_query_chunk$c" 90 "$B/bench/bench_query" --device cuda --threads 16 --sizes 1920x1080 --iters 5 --chunk $c
