@@ -61,22 +61,27 @@ CLS_NATIVE_VECTORS(double)
 #undef CLS_NATIVE_VECTORS
 #undef CLS_NATIVE_VECTOR
 
+// The register of v (Lanes<T> or LaneMask<T>) that starts `at` bytes in, and its store.
+template <int kBytes, class Vec>
+[[gnu::always_inline]] inline auto lane_register(const Vec& v, std::size_t at) {
+  typename NativeVector<std::remove_cv_t<std::remove_reference_t<decltype(v[0])>>, kBytes>::V p;
+  std::memcpy(&p, reinterpret_cast<const char*>(&v) + at, kBytes);
+  return p;
+}
+template <int kBytes, class Vec, class P>
+[[gnu::always_inline]] inline void set_lane_register(Vec& v, std::size_t at, const P& p) {
+  static_assert(sizeof(P) == kBytes, "one register");
+  std::memcpy(reinterpret_cast<char*>(&v) + at, &p, kBytes);
+}
+
 // op applied a register at a time: the lanes of a and b (Lanes<T> or LaneMask<T>) cut into registers of
 // kBytes, op on each pair, the results put together in order.
 template <int kBytes, class Out, class In, class Op>
 [[gnu::always_inline]] inline Out lanes_by_register(const In& a, const In& b, Op op) {
-  using E = std::remove_cv_t<std::remove_reference_t<decltype(a[0])>>;
-  using P = typename NativeVector<E, kBytes>::V;
   static_assert(sizeof(In) % kBytes == 0 && sizeof(Out) == sizeof(In), "whole registers of lanes");
   Out out;
-  for (std::size_t i = 0; i < sizeof(In); i += kBytes) {
-    P pa, pb;
-    std::memcpy(&pa, reinterpret_cast<const char*>(&a) + i, kBytes);
-    std::memcpy(&pb, reinterpret_cast<const char*>(&b) + i, kBytes);
-    const auto r = op(pa, pb);
-    static_assert(sizeof(r) == kBytes, "one register in, one out");
-    std::memcpy(reinterpret_cast<char*>(&out) + i, &r, kBytes);
-  }
+  for (std::size_t at = 0; at < sizeof(In); at += kBytes)
+    set_lane_register<kBytes>(out, at, op(lane_register<kBytes>(a, at), lane_register<kBytes>(b, at)));
   return out;
 }
 
@@ -101,6 +106,16 @@ template <int kBytes, class V>
 template <int kBytes, class V>
 [[gnu::always_inline]] inline auto lane_less_equal(const V& a, const V& b) {
   return lanes_by_register<kBytes, decltype(a <= b)>(a, b, LessEqualOp{});
+}
+
+// y += x s, a register at a time, for y in memory (an accumulator row). Written as y += x * s, GCC 12
+// moves a vector wider than the registers through the stack and general registers on every store (the AVX2
+// build's dense backward spent most of its time so).
+template <int kBytes, class Vec, class E>
+[[gnu::always_inline]] inline void lane_add_scaled(Vec& y, const Vec& x, E s) {
+  static_assert(sizeof(Vec) % kBytes == 0, "whole registers of lanes");
+  for (std::size_t at = 0; at < sizeof(Vec); at += kBytes)
+    set_lane_register<kBytes>(y, at, lane_register<kBytes>(y, at) + lane_register<kBytes>(x, at) * s);
 }
 
 // m ? a : b per lane for masks m of all bits or none (LaneMask), a and b Lanes<T> or LaneMask<T>: the

@@ -217,23 +217,27 @@ template <class T>
   for (int l = 0; l < kLanes; ++l) cx[l] = T(sx + l % kLaneSide) + T(0.5), cy[l] = T(sy + l / kLaneSide) + T(0.5);
 }
 
-// acc[c] += sum over k of w[k] values[k][c], in order of k, for many channels: eight channels' lanes stay in
-// registers while the n contributions are added (each would otherwise load and store all of acc).
-template <class T>
+// acc[c] += sum over k of w[k] values[k][c], in order of k, for many channels: a register of lanes of eight
+// channels stays in registers while the n contributions are added (each would otherwise load and store all
+// of acc); kBytes: the build's register size (blend_lanes.h).
+template <int kBytes, class T>
 [[gnu::always_inline]] inline void add_weighted_values(Lanes<T>* acc, const Lanes<T>* w, const T* const* values, int n,
                                                        int nc) {
-  using V = Lanes<T>;
+  using P = typename NativeVector<T, kBytes>::V;
   constexpr int R = 8;
   int c = 0;
-  for (; c + R <= nc; c += R) {
-    V sum[R];
-    for (int r = 0; r < R; ++r) sum[r] = acc[c + r];
-    for (int k = 0; k < n; ++k)
-      for (int r = 0; r < R; ++r) sum[r] += w[k] * values[k][c + r];
-    for (int r = 0; r < R; ++r) acc[c + r] = sum[r];
-  }
+  for (; c + R <= nc; c += R)
+    for (std::size_t at = 0; at < sizeof(Lanes<T>); at += kBytes) {
+      P sum[R];
+      for (int r = 0; r < R; ++r) sum[r] = lane_register<kBytes>(acc[c + r], at);
+      for (int k = 0; k < n; ++k) {
+        const P wk = lane_register<kBytes>(w[k], at);
+        for (int r = 0; r < R; ++r) sum[r] += wk * values[k][c + r];
+      }
+      for (int r = 0; r < R; ++r) set_lane_register<kBytes>(acc[c + r], at, sum[r]);
+    }
   for (; c < nc; ++c)
-    for (int k = 0; k < n; ++k) acc[c] += w[k] * values[k][c];
+    for (int k = 0; k < n; ++k) lane_add_scaled<kBytes>(acc[c], w[k], values[k][c]);
 }
 
 // Front-to-back blending of one tile (renderCUDA), a 4x4 sub-tile at a time with one lane per pixel
@@ -290,10 +294,10 @@ template <class T, int kC, int kBytes>
         for (int c = 0; c < nc; ++c) acc[c] += lane_select<kBytes>(pass, w * v[c], V{});
       } else if (j.index) {  // sparse: w = 0 in the lanes that do not pass
         const int32_t* idx = j.index + static_cast<size_t>(g.id) * j.nv;
-        for (int k = 0; k < j.nv; ++k) acc[idx[k]] += w * v[k];
+        for (int k = 0; k < j.nv; ++k) lane_add_scaled<kBytes>(acc[idx[k]], w, v[k]);
       } else {  // (a NaN value reaches the sub-tile's other lanes here: NaN features are an error upstream)
         batch_w[batched] = w, batch_v[batched++] = v;
-        if (batched == kBatch) add_weighted_values(acc, batch_w, batch_v, batched, nc), batched = 0;
+        if (batched == kBatch) add_weighted_values<kBytes>(acc, batch_w, batch_v, batched, nc), batched = 0;
       }
       d += w * g.depth;
       Tr = lane_select<kBytes>(pass, test_T, Tr);
@@ -303,7 +307,7 @@ template <class T, int kC, int kBytes>
         if (!any_lane(live)) break;
       }
     }
-    add_weighted_values(acc, batch_w, batch_v, batched, nc);
+    add_weighted_values<kBytes>(acc, batch_w, batch_v, batched, nc);
     for (int l = 0; l < kLanes; ++l) {
       const int64_t pix = lane_pixel(sx, sy, l, x1, y1, cam.width);
       if (pix < 0) continue;
@@ -323,32 +327,30 @@ template <class T, int kC, int kBytes>
 // run-time channel count the values in `value_buf` (rows of whole vectors, so their vector loads and
 // stores do not straddle cache lines), then adds them to the per-Gaussian sums under striped locks.
 // value_grad += sum over the lanes where `pass` of w_l dL/dimage(pixel_l), for many channels: eight
-// vectors of channels stay in registers while the lanes are added (one sum would otherwise be loaded
-// and stored per lane), then vectors and single channels for the rest.
-template <class T>
+// registers of channels stay in registers while the lanes are added (one sum would otherwise be loaded
+// and stored per lane), then single channels for the rest.
+template <int kBytes, class T>
 [[gnu::always_inline]] inline void add_lane_rows(const Lanes<T>& w, const LaneMask<T>& pass, const T* dL_dimage,
                                                  const int64_t* pixel, int nc, T* value_grad) {
-  using V = Lanes<T>;
+  using P = typename NativeVector<T, kBytes>::V;
+  constexpr int kPer = kBytes / sizeof(T), R = 8;
   const T* rows[kLanes];
   T weights[kLanes];
   int n = 0;
   for (int l = 0; l < kLanes; ++l)
     if (pass[l]) rows[n] = dL_dimage + pixel[l] * nc, weights[n++] = w[l];
-  auto add_block = [&](int c, auto regs) {
-    constexpr int R = decltype(regs)::value;
-    V sum[R];
+  int c = 0;
+  for (; c + R * kPer <= nc; c += R * kPer) {
+    P sum[R];
     std::memcpy(sum, value_grad + c, sizeof(sum));
     for (int k = 0; k < n; ++k)
       for (int r = 0; r < R; ++r) {
-        V d;
-        std::memcpy(&d, rows[k] + c + r * kLanes, sizeof(V));
+        P d;
+        std::memcpy(&d, rows[k] + c + r * kPer, kBytes);
         sum[r] += weights[k] * d;
       }
     std::memcpy(value_grad + c, sum, sizeof(sum));
-  };
-  int c = 0;
-  for (; c + 8 * kLanes <= nc; c += 8 * kLanes) add_block(c, std::integral_constant<int, 8>{});
-  for (; c + kLanes <= nc; c += kLanes) add_block(c, std::integral_constant<int, 1>{});
+  }
   for (; c < nc; ++c)
     for (int k = 0; k < n; ++k) value_grad[c] += weights[k] * rows[k][c];
 }
@@ -439,16 +441,16 @@ template <class T, int kC, int kBytes>
         // with dpix is carried: rec_dot_i = a_{i+1} (v_{i+1} . dpix) + (1 - a_{i+1}) rec_dot_{i+1}.
         V v_dot = V{};
         if (kC > 0) {
-          for (int c = 0; c < nc; ++c) v_dot += v[c] * dpix[c];
+          for (int c = 0; c < nc; ++c) lane_add_scaled<kBytes>(v_dot, dpix[c], v[c]);
         } else if (j.index) {
           const int32_t* idx = j.index + static_cast<size_t>(g.id) * nv;
-          for (int c = 0; c < nv; ++c) v_dot += v[c] * dpix[idx[c]];
+          for (int c = 0; c < nv; ++c) lane_add_scaled<kBytes>(v_dot, dpix[idx[c]], v[c]);
         } else {  // four partial sums: one would wait on the previous multiply-add every channel
           V part[4] = {};
           int c = 0;
           for (; c + 4 <= nc; c += 4)
-            for (int q = 0; q < 4; ++q) part[q] += v[c + q] * dpix[c + q];
-          for (; c < nc; ++c) part[0] += v[c] * dpix[c];
+            for (int q = 0; q < 4; ++q) lane_add_scaled<kBytes>(part[q], dpix[c + q], v[c + q]);
+          for (; c < nc; ++c) lane_add_scaled<kBytes>(part[0], dpix[c], v[c]);
           v_dot = (part[0] + part[1]) + (part[2] + part[3]);
         }
         rec_dot = lane_select<kBytes>(pass, last_alpha * last_v_dot + (T(1) - last_alpha) * rec_dot, rec_dot);
@@ -481,7 +483,7 @@ template <class T, int kC, int kBytes>
           for (int c = 0; c < n; ++c) sums[c0 + c] += total[c];
         }
       } else if (kC == 0) {
-        add_lane_rows(w, pass, dL_dimage, pixel, nc, values_of(k));
+        add_lane_rows<kBytes>(w, pass, dL_dimage, pixel, nc, values_of(k));
       }
     }
   }
