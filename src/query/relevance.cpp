@@ -61,11 +61,11 @@ at::Tensor relevancy_from_cosines(const at::Tensor& query_cos, const at::Tensor&
     throw Error("langsplat relevancy: canonical cosines must be (query shape) x M with M > 0, got " +
                 shape_of(canonical_cos) + " for " + shape_of(query_cos));
   // OpenCLIPNetwork.get_relevancy: sims = stack(repeated positive, negatives) (... x M x 2),
-  // softmax(10 * sims) over the pair, keep the pair whose positive probability is smallest.
-  const at::Tensor pos = query_cos.unsqueeze(-1).expand_as(canonical_cos);
-  const at::Tensor sims = torch::stack({pos, canonical_cos}, -1);
-  const at::Tensor positive_prob = torch::softmax(10.0 * sims, -1).select(-1, 0);
-  return std::get<0>(positive_prob.min(-1));
+  // softmax(10 * sims) over the pair, keep the pair whose positive probability is smallest. As
+  // softmax(10 [a, b])[0] = sigmoid(10 (a - b)) grows with a - b, that pair is the most similar phrase's:
+  // sigmoid(10 (q - max_m c_m)), a pass over the cosines instead of a softmax per pair (which took more
+  // than the cosines of a 1080p map; docs/benchmarks.md). The test holds it to the softmax form.
+  return torch::sigmoid(10.0 * (query_cos - std::get<0>(canonical_cos.max(-1))));
 }
 
 at::Tensor langsplat_relevancy(const at::Tensor& features, const at::Tensor& query, const at::Tensor& canonical) {

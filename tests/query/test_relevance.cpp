@@ -68,13 +68,17 @@ TEST(LangsplatRelevancy, OnePixelTwoCanonicalPhrases) {
   EXPECT_NEAR(langsplat_relevancy(torch::zeros({1, 1, 3}), q, canonical)[0][0].item<float>(), 0.5, 1e-6);
 }
 
-TEST(LangsplatRelevancy, EqualsClosedFormOnRandomCosines) {
-  // softmax(10 [a, b])[0] = sigmoid(10 (a - b)), so the min over phrases is sigmoid(10 (a - max_c b_c)).
+TEST(LangsplatRelevancy, EqualsTheSoftmaxFormOnRandomCosines) {
+  // OpenCLIPNetwork.get_relevancy as written: softmax(10 [a, b_c]) per phrase, the smallest positive probability.
   torch::manual_seed(3);
   const at::Tensor a = torch::rand({50}, torch::kFloat64) * 2 - 1;
   const at::Tensor b = torch::rand({50, 4}, torch::kFloat64) * 2 - 1;
-  const at::Tensor expected = torch::sigmoid(10 * (a - std::get<0>(b.max(1))));
+  const at::Tensor pairs = torch::stack({a.unsqueeze(1).expand_as(b), b}, -1);  // 50 x 4 x 2
+  const at::Tensor expected = std::get<0>(torch::softmax(10 * pairs, -1).select(-1, 0).min(1));
   EXPECT_LT((relevancy_from_cosines(a, b) - expected).abs().max().item<double>(), 1e-12);
+  // float32, as the maps are made: within a few ulps of 1
+  EXPECT_LT((relevancy_from_cosines(a.to(torch::kFloat32), b.to(torch::kFloat32)).to(torch::kFloat64) - expected)
+                .abs().max().item<double>(), 1e-6);
   EXPECT_THROW(relevancy_from_cosines(a, torch::zeros({50, 0}, torch::kFloat64)), Error);
   EXPECT_THROW(relevancy_from_cosines(a, torch::zeros({49, 4}, torch::kFloat64)), Error);
 }
