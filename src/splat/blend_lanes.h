@@ -61,7 +61,7 @@ CLS_NATIVE_VECTORS(double)
 #undef CLS_NATIVE_VECTORS
 #undef CLS_NATIVE_VECTOR
 
-// The register of v (Lanes<T> or LaneMask<T>) that starts `at` bytes in, and its store.
+// The register of v (a Lanes<T>) that starts `at` bytes in, and its store.
 template <int kBytes, class Vec>
 [[gnu::always_inline]] inline auto lane_register(const Vec& v, std::size_t at) {
   typename NativeVector<std::remove_cv_t<std::remove_reference_t<decltype(v[0])>>, kBytes>::V p;
@@ -74,8 +74,8 @@ template <int kBytes, class Vec, class P>
   std::memcpy(reinterpret_cast<char*>(&v) + at, &p, kBytes);
 }
 
-// op applied a register at a time: the lanes of a and b (Lanes<T> or LaneMask<T>) cut into registers of
-// kBytes, op on each pair, the results put together in order.
+// op applied a register at a time: the lanes of a and b (Lanes<T>) cut into registers of kBytes, op on
+// each pair, the results (a register each) put together in order.
 template <int kBytes, class Out, class In, class Op>
 [[gnu::always_inline]] inline Out lanes_by_register(const In& a, const In& b, Op op) {
   static_assert(sizeof(In) % kBytes == 0 && sizeof(Out) == sizeof(In), "whole registers of lanes");
@@ -188,7 +188,9 @@ template <int kBytes>
 
 // alpha_from_power per lane: alpha where `pass` (power <= 0 and alpha >= 1/255, and `pass` on entry), 0
 // elsewhere; G = exp(power). The exp runs in every lane anyway, so the cutoff power (a skip of the scalar
-// exp) is not tested: below it alpha < 1/255 for certain.
+// exp) is not tested: below it alpha < 1/255 for certain. One mask comparison only, the power test a select
+// of floats: GCC 12 turns two comparisons combined into a mask into a scalar compare per lane in the
+// AVX-512 build (where the registers hold all 16 lanes and lane_less is the plain comparison).
 template <int kBytes, class T>
 [[gnu::always_inline]] inline Lanes<T> lane_alpha(const Lanes<T>& power, T opacity, LaneMask<T>& pass, Lanes<T>& G) {
   using V = Lanes<T>;

@@ -328,7 +328,7 @@ template <class T, int kC, int kBytes>
 // stores do not straddle cache lines), then adds them to the per-Gaussian sums under striped locks.
 // value_grad += sum over the lanes where `pass` of w_l dL/dimage(pixel_l), for many channels: eight
 // registers of channels stay in registers while the lanes are added (one sum would otherwise be loaded
-// and stored per lane), then single channels for the rest.
+// and stored per lane), then one register and single channels for the rest.
 template <int kBytes, class T>
 [[gnu::always_inline]] inline void add_lane_rows(const Lanes<T>& w, const LaneMask<T>& pass, const T* dL_dimage,
                                                  const int64_t* pixel, int nc, T* value_grad) {
@@ -350,6 +350,16 @@ template <int kBytes, class T>
         sum[r] += weights[k] * d;
       }
     std::memcpy(value_grad + c, sum, sizeof(sum));
+  }
+  for (; c + kPer <= nc; c += kPer) {
+    P sum;
+    std::memcpy(&sum, value_grad + c, kBytes);
+    for (int k = 0; k < n; ++k) {
+      P d;
+      std::memcpy(&d, rows[k] + c, kBytes);
+      sum += weights[k] * d;
+    }
+    std::memcpy(value_grad + c, &sum, kBytes);
   }
   for (; c < nc; ++c)
     for (int k = 0; k < n; ++k) value_grad[c] += weights[k] * rows[k][c];

@@ -178,7 +178,8 @@ TEST(SplatGradients, RasterizerRgbFromSh) { FullCheck(true, 3, 5).run("sh"); }
 TEST(SplatGradients, RasterizerFeatures) {
   FullCheck(false, 5, 6).run("features5");
   FullCheck(false, 1, 7).run("features1");
-  // 147 = 128 + 16 + 3: the many-channel paths' blocks of eight vectors, of one vector, and single channels
+  // 147 = 128 + 16 + 3: the many-channel paths' blocks of eight registers, of one register, and single
+  // channels (every build's register holds 4, 8 or 16 floats)
   FullCheck(false, 147, 9).run("features147");
 }
 
