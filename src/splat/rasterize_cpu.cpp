@@ -339,28 +339,21 @@ template <int kBytes, class T>
   int n = 0;
   for (int l = 0; l < kLanes; ++l)
     if (pass[l]) rows[n] = dL_dimage + pixel[l] * nc, weights[n++] = w[l];
-  int c = 0;
-  for (; c + R * kPer <= nc; c += R * kPer) {
-    P sum[R];
+  auto add_block = [&](int c, auto regs) {  // `regs` registers of channels from c
+    constexpr int kRegs = decltype(regs)::value;
+    P sum[kRegs];
     std::memcpy(sum, value_grad + c, sizeof(sum));
     for (int k = 0; k < n; ++k)
-      for (int r = 0; r < R; ++r) {
+      for (int r = 0; r < kRegs; ++r) {
         P d;
         std::memcpy(&d, rows[k] + c + r * kPer, kBytes);
         sum[r] += weights[k] * d;
       }
     std::memcpy(value_grad + c, sum, sizeof(sum));
-  }
-  for (; c + kPer <= nc; c += kPer) {
-    P sum;
-    std::memcpy(&sum, value_grad + c, kBytes);
-    for (int k = 0; k < n; ++k) {
-      P d;
-      std::memcpy(&d, rows[k] + c, kBytes);
-      sum += weights[k] * d;
-    }
-    std::memcpy(value_grad + c, &sum, kBytes);
-  }
+  };
+  int c = 0;
+  for (; c + R * kPer <= nc; c += R * kPer) add_block(c, std::integral_constant<int, R>{});
+  for (; c + kPer <= nc; c += kPer) add_block(c, std::integral_constant<int, 1>{});
   for (; c < nc; ++c)
     for (int k = 0; k < n; ++k) value_grad[c] += weights[k] * rows[k][c];
 }
