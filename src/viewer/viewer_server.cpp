@@ -2,8 +2,10 @@
 
 #include <httplib.h>
 
+#include <atomic>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "core/error.h"
 #include "core/log.h"
@@ -50,6 +52,8 @@ struct ViewerServer::Impl {
   ViewerModel& model;
   ViewerServerOptions options;
   httplib::Server server;
+  // listen() and stop() from different threads (ViewerServer::stop)
+  std::atomic<bool> stop_requested{false}, listening{false}, listen_returned{false};
 
   // Runs a handler; a bad request becomes 400 with its reason, anything else 500, and the server goes on.
   template <class F>
@@ -137,8 +141,24 @@ int ViewerServer::bind() {
   return o.port;
 }
 
-void ViewerServer::listen() { impl_->server.listen_after_bind(); }
+void ViewerServer::listen() {
+  Impl& i = *impl_;
+  i.listening = true;
+  if (!i.stop_requested) i.server.listen_after_bind();
+  i.listen_returned = true;
+}
 
-void ViewerServer::stop() { impl_->server.stop(); }
+// httplib's stop() does nothing until listen_after_bind() has marked the server running, and the listener
+// then blocks in accept() for good: a stop that came between listen()'s start and that point was lost (a
+// test that stopped its server at once hung at exit). listen() marks itself before it looks at the request,
+// and stop() requests before it looks at listen(), so one of the two sees the other: either listen() returns
+// without serving, or stop() waits until the server runs (or listen() has returned) and then stops it.
+void ViewerServer::stop() {
+  Impl& i = *impl_;
+  i.stop_requested = true;
+  if (!i.listening) return;
+  while (!i.server.is_running() && !i.listen_returned) std::this_thread::yield();
+  i.server.stop();
+}
 
 }  // namespace cls

@@ -27,7 +27,8 @@ class ViewerServer {
 
   // Binds the socket; returns the port (the chosen one for port 0). cls::Error when it cannot bind.
   int bind();
-  // Serves until stop() (from any thread).
+  // Serves until stop() (from any thread, before or after listen() has begun: a stop that comes first
+  // makes listen() return at once).
   void listen();
   void stop();
 
