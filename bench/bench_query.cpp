@@ -7,7 +7,8 @@
 // device synchronisation.
 // --field sparse times the sparse field instead (language/sparse_field.h, issue 36): K random softmax-like
 // weights over a random L x 512 codebook per Gaussian, splatted sparsely, the cosines through the codebook's
-// factors. Both fields then time the per-Gaussian scores of one text at one level over all Gaussians (dense:
+// factors: on the CPU inside the rasterizer's tiles (render_sparse_cosines, timed alone as the "render"), on a GPU
+// from the rendered L-channel weight map. Both fields then time the per-Gaussian scores of one text at one level over all Gaussians (dense:
 // the latent cosine `query` takes, gaussian_scores; sparse: sparse_cosines, the feature cosine).
 // Usage: bench_query [--threads N] [--gaussians N] [--iters N] [--sizes 480x360,1920x1080] [--device cpu]
 //                    [--field dense|sparse] [--codebook-size 64] [--top-k 4]
@@ -103,6 +104,7 @@ int bench_main(int argc, char** argv) {
     level.codebook = torch::randn({codebook_size, 512}).to(device);
   }
   const at::Tensor queries = torch::randn({1, 512}).to(device), canonical = torch::randn({4, 512}).to(device);
+  const bool in_tiles = sparse && device.is_cpu();  // relevance_maps takes the cosines in the rasterizer's tiles
   const auto sync = [&] {
     if (device.is_cuda()) torch::cuda::synchronize();
   };
@@ -126,8 +128,10 @@ int bench_main(int argc, char** argv) {
     double render_s = 0, total_s = 0, map_cpu = 0;
     for (int it = -1; it < iters; ++it) {
       const auto t0 = Clock::now();
-      const RenderedLatents r = sparse ? render_sparse(g, level, cam, pose)
-                                       : render_latents(g, latents, cam, pose);  // timed alone for the split
+      // the render timed alone for the split
+      const at::Tensor alpha = in_tiles ? render_sparse_cosines(g, level, cam, pose, torch::cat({queries, canonical})).alpha
+                               : sparse ? render_sparse(g, level, cam, pose).alpha
+                                        : render_latents(g, latents, cam, pose).alpha;
       sync();
       const double tr = bench::seconds_since(t0);
       const double c1 = bench::cpu_seconds();
@@ -138,13 +142,14 @@ int bench_main(int argc, char** argv) {
       const double tm = bench::seconds_since(t1);
       const double c2 = bench::cpu_seconds();
       if (it >= 0) render_s += tr / iters, total_s += tm / iters, map_cpu += (c2 - c1) / iters;
-      if (it == 0) std::printf("  %dx%d: mean alpha %.2f\n", W, H, r.alpha.mean().item<double>());
+      if (it == 0) std::printf("  %dx%d: mean alpha %.2f\n", W, H, alpha.mean().item<double>());
       (void)m;
     }
-    std::printf("%5dx%-5d relevance map %8.1f ms wall (render latents %7.1f ms, decode + cosine + relevancy %7.1f ms)"
+    std::printf("%5dx%-5d relevance map %8.1f ms wall (%s %7.1f ms, %s %7.1f ms)"
                 "  %.3f maps/s  CPU %8.1f ms  (~%.3f maps/s on %d idle cores)\n",
-                W, H, 1e3 * total_s, 1e3 * render_s, 1e3 * (total_s - render_s), 1 / total_s, 1e3 * map_cpu,
-                threads / map_cpu, threads);
+                W, H, 1e3 * total_s, in_tiles ? "render with the cosines" : "render latents", 1e3 * render_s,
+                in_tiles ? "relevancy" : "decode + cosine + relevancy", 1e3 * (total_s - render_s), 1 / total_s,
+                1e3 * map_cpu, threads / map_cpu, threads);
   }
   // Per-Gaussian scores of one text at one level (what a selection, a 3D label or the viewer's answer costs).
   const at::Tensor query_latent = sparse ? at::Tensor() : ae.encode(queries)[0];

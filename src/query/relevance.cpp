@@ -203,19 +203,55 @@ DecodedView render_decoded(const GaussianModel& gaussians, const at::Tensor& lat
   return {features.reshape({H, W, features.size(1)}), r.alpha.to(torch::kFloat32)};
 }
 
-RenderedLatents render_sparse(const GaussianModel& gaussians, const SparseLevel& level, const PinholeCamera& camera,
-                              const Pose& pose) {
+namespace {
+
+// A sparse level splatted for a camera and pose, no gradients: `raster` (rasterize_sparse_features' inputs but
+// the gradient's means2d) on the level's weights, indices and codebook size, on the Gaussians' device and dtype.
+template <class Raster>
+RasterizeOutput splat_sparse(const char* what, const GaussianModel& gaussians, const SparseLevel& level,
+                             const PinholeCamera& camera, const Pose& pose, Raster&& raster) {
   if (!level.defined() || level.size() != gaussians.size())
-    throw Error("render_sparse: the sparse level must have one row per Gaussian (" + std::to_string(gaussians.size()) + ")");
+    throw Error(std::string(what) + ": the sparse level must have one row per Gaussian (" +
+                std::to_string(gaussians.size()) + ")");
   at::NoGradGuard no_grad;
   const at::Tensor means = gaussians.means.contiguous();
   RasterizeSettings settings;
   settings.camera = camera;
   settings.pose = pose;
-  const RasterizeOutput out = rasterize_sparse_features(
-      means, gaussians.scales().contiguous(), gaussians.quats.contiguous(), gaussians.opacities().contiguous(),
-      level.weights.to(means.device(), means.scalar_type()).contiguous(), level.indices.to(means.device()).contiguous(),
-      static_cast<int>(level.codebook.size(0)), at::Tensor(), settings);
+  return raster(means, gaussians.scales().contiguous(), gaussians.quats.contiguous(), gaussians.opacities().contiguous(),
+                level.weights.to(means.device(), means.scalar_type()).contiguous(),
+                level.indices.to(means.device()).contiguous(), static_cast<int>(level.codebook.size(0)), settings);
+}
+
+}  // namespace
+
+RenderedLatents render_sparse(const GaussianModel& gaussians, const SparseLevel& level, const PinholeCamera& camera,
+                              const Pose& pose) {
+  const RasterizeOutput out =
+      splat_sparse("render_sparse", gaussians, level, camera, pose,
+                   [](const auto& m, const auto& s, const auto& q, const auto& o, const auto& w, const auto& i, int c,
+                      const RasterizeSettings& settings) {
+                     return rasterize_sparse_features(m, s, q, o, w, i, c, at::Tensor(), settings);
+                   });
+  return {out.image, out.alpha};
+}
+
+RenderedCosines render_sparse_cosines(const GaussianModel& gaussians, const SparseLevel& level,
+                                      const PinholeCamera& camera, const Pose& pose, const at::Tensor& directions) {
+  const RasterizeOutput out = splat_sparse(
+      "render_sparse_cosines", gaussians, level, camera, pose,
+      [&](const auto& m, const auto& s, const auto& q, const auto& o, const auto& w, const auto& i, int c,
+          const RasterizeSettings& settings) {
+        if (!directions.defined() || directions.dim() != 2 || directions.size(1) != level.codebook.size(1))
+          throw Error("render_sparse_cosines: the codebook's bases are " + std::to_string(level.codebook.size(1)) +
+                      "-d, the directions " + shape_of(directions) + " (another feature provider?)");
+        // a_p = B p / |p| (in double, as DecodedCosines' projections), and R of B^T = Q R: |w B| = |R w|
+        const at::Tensor book = level.codebook.detach().to(torch::kCPU, torch::kFloat64);
+        const at::Tensor in_basis = unit_rows(directions.detach().to(torch::kCPU, torch::kFloat64)).matmul(book.t());
+        const at::Tensor factor = factor_linear_head(book.t().contiguous(), at::Tensor()).r;
+        return rasterize_sparse_cosines(m, s, q, o, w, i, c, in_basis.to(m.options()), factor.to(m.options()),
+                                        settings);
+      });
   return {out.image, out.alpha};
 }
 
@@ -232,6 +268,20 @@ void check_queries(const at::Tensor& queries, const at::Tensor& canonical) {
                 " and " + shape_of(canonical));
 }
 
+// The maps of K queries from the cosines of every pixel (H W x P, float32) with the queries, then the
+// canonical phrases.
+RelevanceMaps maps_of_cosines(const at::Tensor& cos, int64_t K, const at::Tensor& alpha) {
+  const int64_t H = alpha.size(0), W = alpha.size(1);
+  const at::Tensor canonical_cos = cos.slice(1, K);  // H W x M
+  std::vector<at::Tensor> relevancy;
+  for (int64_t k = 0; k < K; ++k) relevancy.push_back(relevancy_from_cosines(cos.select(1, k), canonical_cos));
+  RelevanceMaps out;
+  out.cosine = cos.slice(1, 0, K).t().reshape({K, H, W}).contiguous();
+  out.relevancy = K > 0 ? torch::stack(relevancy, 0).reshape({K, H, W}) : torch::empty({0, H, W}, cos.options());
+  out.alpha = alpha.to(torch::kFloat32);
+  return out;
+}
+
 // The maps of the queries (the first K directions of `cosines`) from rendered latents.
 RelevanceMaps maps_of_rendered(const RenderedLatents& r, const DecodedCosines& cosines, int64_t K,
                                const at::Tensor& canonical, int64_t chunk_pixels) {
@@ -243,14 +293,7 @@ RelevanceMaps maps_of_rendered(const RenderedLatents& r, const DecodedCosines& c
   decode_covered(flat, r.alpha, std::cref(cosines), chunk_pixels, [&](const at::Tensor& rows, const at::Tensor& c) {
     cos.index_copy_(0, rows, c.expand({rows.size(0), P}));
   });
-  const at::Tensor canonical_cos = cos.slice(1, K);  // P x M
-  std::vector<at::Tensor> relevancy;
-  for (int64_t k = 0; k < K; ++k) relevancy.push_back(relevancy_from_cosines(cos.select(1, k), canonical_cos));
-  RelevanceMaps out;
-  out.cosine = cos.slice(1, 0, K).t().reshape({K, H, W}).contiguous();
-  out.relevancy = K > 0 ? torch::stack(relevancy, 0).reshape({K, H, W}) : torch::empty({0, H, W}, cos.options());
-  out.alpha = r.alpha.to(torch::kFloat32);
-  return out;
+  return maps_of_cosines(cos, K, r.alpha);
 }
 
 }  // namespace
@@ -268,8 +311,12 @@ RelevanceMaps relevance_maps(const GaussianModel& gaussians, const SparseLevel& 
                              const Pose& pose, const at::Tensor& queries, const at::Tensor& canonical,
                              int64_t chunk_pixels) {
   check_queries(queries, canonical);
-  const DecodedCosines cosines(codebook_decoder(level.codebook.to(gaussians.means.device())),
-                               torch::cat({queries, canonical}, 0));
+  const at::Tensor directions = torch::cat({queries, canonical}, 0);
+  if (gaussians.means.device().is_cpu()) {  // the cosines taken in the rasterizer's tiles
+    const RenderedCosines r = render_sparse_cosines(gaussians, level, camera, pose, directions);
+    return maps_of_cosines(r.cosine.reshape({-1, directions.size(0)}).to(torch::kFloat32), queries.size(0), r.alpha);
+  }
+  const DecodedCosines cosines(codebook_decoder(level.codebook.to(gaussians.means.device())), directions);
   return maps_of_rendered(render_sparse(gaussians, level, camera, pose), cosines, queries.size(0), canonical,
                           chunk_pixels);
 }

@@ -131,10 +131,20 @@ RelevanceMaps relevance_maps(const GaussianModel& gaussians, const at::Tensor& l
 // Its weights splatted (K per Gaussian) into an L-channel map (rasterize_sparse_features), no gradients.
 RenderedLatents render_sparse(const GaussianModel& gaussians, const SparseLevel& level, const PinholeCamera& camera,
                               const Pose& pose);
+// The cosines of the rendered weights' features (weights times the codebook) with P directions (P x D), taken in
+// the rasterizer's tiles (rasterize_sparse_cosines) without the L-channel map (0 where nothing is blended). CPU only (cls::Error on a GPU's Gaussians).
+struct RenderedCosines {
+  at::Tensor cosine;  // H x W x P
+  at::Tensor alpha;   // H x W
+};
+RenderedCosines render_sparse_cosines(const GaussianModel& gaussians, const SparseLevel& level,
+                                      const PinholeCamera& camera, const Pose& pose, const at::Tensor& directions);
 // The codebook (L x D) as a decoder of rendered weights: no hidden layer, the last layer the codebook's
 // transpose without bias, so DecodedCosines costs L x L per pixel (|B^T w| through B^T's QR factors).
 LinearHeadDecoder codebook_decoder(const at::Tensor& codebook);
-// relevance_maps of a sparse level: the rendered weights' cosines with the queries, never forming D-d features.
+// relevance_maps of a sparse level: the rendered weights' cosines with the queries, never forming D-d features:
+// on the CPU in the rasterizer's tiles (render_sparse_cosines), elsewhere from the rendered weight map through
+// DecodedCosines (chunk_pixels as above; the CPU path has no chunks).
 RelevanceMaps relevance_maps(const GaussianModel& gaussians, const SparseLevel& level, const PinholeCamera& camera,
                              const Pose& pose, const at::Tensor& queries, const at::Tensor& canonical,
                              int64_t chunk_pixels = 0);

@@ -43,6 +43,13 @@ SplatInputs<T> make_inputs(const at::Tensor& means, const at::Tensor& scales, co
   return in;
 }
 
+// radii[i]: Gaussian i's screen radius from the forward's projection, 0 where culled.
+template <class T>
+void fill_radii(const SplatForwardState<T>& state, at::Tensor& radii) {
+  int32_t* r = radii.data_ptr<int32_t>();
+  for (size_t i = 0; i < state.proj.size(); ++i) r[i] = state.proj[i].visible ? state.proj[i].radius : 0;
+}
+
 #ifdef CLS_WITH_CUDA
 // What a CUDA forward keeps for its backward.
 struct CudaSavedState {
@@ -123,8 +130,7 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
       const SplatInputs<T> in = make_inputs<T>(means, scales, quats, opacities, values, int(sh_degree), bg, index, C);
       rasterize_forward_cpu(make_splat_camera<T>(cam, settings->pose), in, image.data_ptr<T>(),
                             alpha.data_ptr<T>(), depth.data_ptr<T>(), *state);
-      int32_t* r = radii.data_ptr<int32_t>();
-      for (int i = 0; i < in.n; ++i) r[i] = state->proj[i].visible ? state->proj[i].radius : 0;
+      fill_radii(*state, radii);
     });
     }
     ctx->save_for_backward({means, scales, quats, opacities, values, index});
@@ -288,21 +294,31 @@ at::Tensor scatter_sparse_features(const at::Tensor& weights, const at::Tensor& 
   return torch::zeros({weights.size(0), channels}, weights.options()).scatter_add(1, indices.to(torch::kLong), weights);
 }
 
+namespace {
+
+// `what`'s sparse weights N x K and indices N x K for `channels` channels, as rasterize_sparse_features takes them.
+void check_sparse_inputs(const char* what, const at::Tensor& means, const at::Tensor& weights, const at::Tensor& indices,
+                         int channels) {
+  const std::string name = what;
+  if (weights.dim() != 2 || weights.size(0) != means.size(0) || weights.size(1) < 1 || indices.sizes() != weights.sizes())
+    throw Error(name + ": weights and indices must both be N x K, got " + c10::str(weights.sizes()) + " and " +
+                c10::str(indices.sizes()));
+  if (weights.scalar_type() != means.scalar_type()) throw Error(name + ": weights must have the means' dtype");
+  if (indices.scalar_type() != torch::kInt32 || indices.device() != means.device())
+    throw Error(name + ": indices must be int32 on the means' device");
+  if (channels < 1) throw Error(name + ": channels must be positive");
+  if (indices.numel() > 0 && (indices.min().item<int32_t>() < 0 || indices.max().item<int32_t>() >= channels))
+    throw Error(name + ": an index lies outside [0, " + std::to_string(channels) + ")");
+}
+
+}  // namespace
+
 RasterizeOutput rasterize_sparse_features(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
                                           const at::Tensor& opacities, const at::Tensor& weights,
                                           const at::Tensor& indices, int channels, const at::Tensor& means2d,
                                           const RasterizeSettings& settings) {
   check_inputs(means, scales, quats, opacities, settings);
-  if (weights.dim() != 2 || weights.size(0) != means.size(0) || weights.size(1) < 1 || indices.sizes() != weights.sizes())
-    throw Error("rasterize_sparse_features: weights and indices must both be N x K, got " + c10::str(weights.sizes()) +
-                " and " + c10::str(indices.sizes()));
-  if (weights.scalar_type() != means.scalar_type())
-    throw Error("rasterize_sparse_features: weights must have the means' dtype");
-  if (indices.scalar_type() != torch::kInt32 || indices.device() != means.device())
-    throw Error("rasterize_sparse_features: indices must be int32 on the means' device");
-  if (channels < 1) throw Error("rasterize_sparse_features: channels must be positive");
-  if (indices.numel() > 0 && (indices.min().item<int32_t>() < 0 || indices.max().item<int32_t>() >= channels))
-    throw Error("rasterize_sparse_features: an index lies outside [0, " + std::to_string(channels) + ")");
+  check_sparse_inputs("rasterize_sparse_features", means, weights, indices, channels);
   // The sparse CUDA kernels take up to kCudaSparseMaxNnz weights and give their gradient alone; with more, or
   // with geometry gradients, the weights scattered into N x C dense features (the same image and gradients).
   const bool geometry_grad = settings.mean2d_abs_grad.defined() ||
@@ -314,6 +330,48 @@ RasterizeOutput rasterize_sparse_features(const at::Tensor& means, const at::Ten
                               means2d, settings);
   }
   return run(means, scales, quats, opacities, weights, -1, means2d, settings, indices, channels);
+}
+
+RasterizeOutput rasterize_sparse_cosines(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
+                                         const at::Tensor& opacities, const at::Tensor& weights,
+                                         const at::Tensor& indices, int channels, const at::Tensor& directions,
+                                         const at::Tensor& factor, const RasterizeSettings& settings) {
+  const char* what = "rasterize_sparse_cosines";
+  check_inputs(means, scales, quats, opacities, settings);
+  check_sparse_inputs(what, means, weights, indices, channels);
+  if (!means.device().is_cpu())
+    throw Error(std::string(what) + ": CPU tensors only (on a GPU, render the weights with rasterize_sparse_features)");
+  if (settings.background.defined()) throw Error(std::string(what) + ": the cosines are of a zero background's features");
+  if (!directions.defined() || directions.dim() != 2 || directions.size(0) < 1 || directions.size(1) != channels ||
+      !factor.defined() || factor.dim() != 2 || factor.size(0) < 1 || factor.size(0) > channels ||
+      factor.size(1) != channels)
+    throw Error(std::string(what) + ": directions P x C and factor k x C (1 <= k <= C) expected for C = " +
+                std::to_string(channels) + ", got " + (directions.defined() ? c10::str(directions.sizes()) : "undefined") +
+                " and " + (factor.defined() ? c10::str(factor.sizes()) : "undefined"));
+  if (directions.scalar_type() != means.scalar_type() || factor.scalar_type() != means.scalar_type() ||
+      !directions.device().is_cpu() || !factor.device().is_cpu())
+    throw Error(std::string(what) + ": directions and factor must have the means' dtype and device");
+  const torch::NoGradGuard no_grad;
+  const auto& cam = settings.camera;
+  const auto opts = means.options();
+  RasterizeOutput out;
+  out.image = torch::empty({cam.height, cam.width, directions.size(0)}, opts);
+  out.alpha = torch::empty({cam.height, cam.width}, opts);
+  out.depth = torch::empty({cam.height, cam.width}, opts);
+  out.radii = torch::zeros({means.size(0)}, opts.dtype(torch::kInt32));
+  const at::Tensor m = means.contiguous(), s = scales.contiguous(), q = quats.contiguous(), o = opacities.contiguous(),
+                   w = weights.contiguous(), idx = indices.contiguous(), a = directions.contiguous(),
+                   r = factor.contiguous();
+  AT_DISPATCH_FLOATING_TYPES(means.scalar_type(), "rasterize_sparse_cosines", [&] {
+    using T = scalar_t;
+    SplatInputs<T> in = make_inputs<T>(m, s, q, o, w, -1, at::Tensor(), idx, channels);
+    in.cosines = {a.data_ptr<T>(), r.data_ptr<T>(), static_cast<int>(a.size(0)), static_cast<int>(r.size(0))};
+    SplatForwardState<T> state;
+    rasterize_forward_cpu(make_splat_camera<T>(cam, settings.pose), in, out.image.data_ptr<T>(),
+                          out.alpha.data_ptr<T>(), out.depth.data_ptr<T>(), state);
+    fill_radii(state, out.radii);
+  });
+  return out;
 }
 
 }  // namespace cls

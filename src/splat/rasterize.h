@@ -52,6 +52,18 @@ RasterizeOutput rasterize_sparse_features(const at::Tensor& means, const at::Ten
                                           const at::Tensor& indices, int channels, const at::Tensor& means2d,
                                           const RasterizeSettings& settings);
 
+// The cosines of rasterize_sparse_features' image with P directions, the image read as coordinates in a
+// basis B (C x D, e.g. the sparse language field's codebook): image H x W x P of cos(w B, p) in place of the
+// C-channel w (0 where w B = 0); alpha, depth and radii as rasterize_sparse_features. `directions` P x C holds
+// a_p = B p / |p|, `factor` k x C the R of B^T = Q R (zero below the diagonal; k = min(C, D)), so that
+// |w B| = |R w| (rasterize_cpu.h's ChannelCosines). What a relevance map needs, C^2 / 2 + P C multiply-adds per
+// pixel taken while the pixel's w is in registers, without the C-channel image. No background, no gradients.
+// CPU tensors only (cls::Error on others: a GPU renders the weights and takes their cosines with LibTorch).
+RasterizeOutput rasterize_sparse_cosines(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
+                                         const at::Tensor& opacities, const at::Tensor& weights,
+                                         const at::Tensor& indices, int channels, const at::Tensor& directions,
+                                         const at::Tensor& factor, const RasterizeSettings& settings);
+
 // Sparse features as dense ones: weights N x K scattered into N x C at their indices (zero elsewhere; repeats
 // add). The image of rasterize_features on it is rasterize_sparse_features' image.
 at::Tensor scatter_sparse_features(const at::Tensor& weights, const at::Tensor& indices, int channels);

@@ -21,6 +21,7 @@
 #include "scene/camera.h"
 #include "splat/blend_lanes.h"
 #include "splat/blend_pixel.h"
+#include "splat/cosine_lanes.h"
 #include "splat/sh.h"
 
 namespace cls {
@@ -176,6 +177,7 @@ template <class T>
 struct ForwardTileJob : TileInputs<T> {
   T *image, *alpha_out, *depth_out, *final_T;
   int32_t* n_contrib;
+  ChannelCosines<T> cosines;  // count > 0: the image holds these instead of the channels
 };
 
 // What every tile of a backward pass reads besides, and writes.
@@ -198,6 +200,7 @@ static_assert(sizeof(LaneRow<float>) == sizeof(Lanes<float>), "LaneRow arrays ar
 template <class T>
 struct TileScratch {
   std::vector<LaneRow<T>> acc, dpix;  // C rows each, with a run-time channel count
+  std::vector<LaneRow<T>> cosine;     // the forward's ChannelCosines, P rows
   std::vector<T> buf;
   std::vector<LaneRow<T>> value_buf;  // the backward's value sums with a run-time channel count
   std::vector<uint8_t> touched;
@@ -261,6 +264,8 @@ template <class T, int kC, int kBytes>
   V acc_fixed[kC > 0 ? kC : 1];
   if (kC == 0) s.acc.resize(nc);
   V* const acc = kC > 0 ? acc_fixed : &s.acc[0].v;
+  const int n_cos = kC > 0 ? 0 : j.cosines.count;
+  if (n_cos > 0) s.cosine.resize(n_cos);
   for (int sy = y0; sy < y1; sy += kSubTile)
   for (int sx = x0; sx < x1; sx += kSubTile) {
     const int q = (sy - y0) / kSubTile * kSubTilesPerSide + (sx - x0) / kSubTile;
@@ -308,11 +313,22 @@ template <class T, int kC, int kBytes>
       }
     }
     add_weighted_values<kBytes>(acc, batch_w, batch_v, batched, nc);
+    if (n_cos > 0) {
+      if (L > 0)
+        lane_cosines<kBytes>(acc, nc, j.cosines, &s.cosine[0].v);
+      else  // nothing blended: cosine 0
+        for (int q = 0; q < n_cos; ++q) s.cosine[q].v = V{};
+    }
     for (int l = 0; l < kLanes; ++l) {
       const int64_t pix = lane_pixel(sx, sy, l, x1, y1, cam.width);
       if (pix < 0) continue;
-      T* out = j.image + pix * nc;
-      for (int c = 0; c < nc; ++c) out[c] = acc[c][l] + (j.bg ? Tr[l] * j.bg[c] : T(0));
+      if (n_cos > 0) {
+        T* out = j.image + pix * n_cos;
+        for (int q = 0; q < n_cos; ++q) out[q] = s.cosine[q].v[l];
+      } else {
+        T* out = j.image + pix * nc;
+        for (int c = 0; c < nc; ++c) out[c] = acc[c][l] + (j.bg ? Tr[l] * j.bg[c] : T(0));
+      }
       j.alpha_out[pix] = T(1) - Tr[l];
       j.depth_out[pix] = d[l];
       j.final_T[pix] = Tr[l];
@@ -699,6 +715,8 @@ void rasterize_forward_cpu(const SplatCamera<T>& cam, const SplatInputs<T>& in, 
   const int C = sh ? 3 : in.channels;
   const int K = sh ? sh_coeff_count(in.sh_degree) : 0;
   const Vec3<T> campos = cam.center();
+  if (in.cosines.count > 0 && (sh || in.background))
+    throw std::invalid_argument("rasterize_forward_cpu: cosines are of features on a zero background only");
   st.cam = cam;
   st.proj.resize(N);
   if (sh) {
@@ -729,14 +747,15 @@ void rasterize_forward_cpu(const SplatCamera<T>& cam, const SplatInputs<T>& in, 
   const T* values = sh ? st.colors.data() : in.features;
   const std::vector<TileGaussian<T>> gaussians = tile_gaussians(st, in.opacities);
   const ForwardTileJob<T> job{{cam, st, gaussians.data(), values, C, in.background, in.feature_index, value_count(in)},
-                              image, alpha, depth, st.final_T.data(), st.n_contrib.data()};
-  const ForwardTileFn<T> forward_tile_fn = tile_kernels<T>(in.feature_index ? 0 : C).first;
+                              image, alpha, depth, st.final_T.data(), st.n_contrib.data(), in.cosines};
+  const ForwardTileFn<T> forward_tile_fn = tile_kernels<T>(in.feature_index || in.cosines.count > 0 ? 0 : C).first;
   run_tiles(cam, forward_tile_fn, job);
 }
 
 template <class T>
 void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>& st, const T* dL_dimage,
                             const T* dL_dalpha, const T* dL_ddepth, SplatGradients<T>& grads) {
+  if (in.cosines.count > 0) throw std::invalid_argument("rasterize_backward_cpu: cosines have no backward");
   const SplatCamera<T>& cam = st.cam;
   const int N = in.n;
   const bool sh = in.use_sh();

@@ -10,6 +10,20 @@
 
 namespace cls {
 
+// Cosines in place of the channels (forward only; the sparse language field's relevance maps, issue 36): a
+// pixel's C blended channels w are the coordinates of a feature F = B^T w in a basis B (C x D, the codebook),
+// and the image holds cos(F, p) for P directions p instead of w: cos = <a_p, w> / |R w| with a_p = B p / |p|
+// and R (k x C, zero below the diagonal) from B B^T = R^T R (B^T = Q R, k = min(C, D)), so |F| = |R w|; 0
+// where R w = 0. Taken from the blended w while it is in registers: C^2 / 2 + P C multiply-adds per pixel,
+// where the C channels would be written, read back and multiplied by C x C in a separate pass.
+template <class T>
+struct ChannelCosines {
+  const T* directions = nullptr;  // P x C: the a_p
+  const T* factor = nullptr;      // k x C: R
+  int count = 0;                  // P; 0: no cosines, the image holds the channels
+  int factor_rows = 0;            // k
+};
+
 // Inputs, Gaussian-major, activated (as the original's rasterizer takes them):
 // means N x 3, scales N x 3 (positive), quats N x 4 (w, x, y, z; normalised inside),
 // opacities N (in (0, 1)), and either SH coefficients N x (degree+1)^2 x 3 (colour, 3 channels)
@@ -30,6 +44,9 @@ struct SplatInputs {
   const int32_t* feature_index = nullptr;
   int nnz = 0;
   const T* background = nullptr;  // C values, or null for zero
+  // With cosines.count = P > 0 the forward's image is H x W x P cosines (features only, no background);
+  // rasterize_backward_cpu rejects such inputs.
+  ChannelCosines<T> cosines;
   bool use_sh() const { return sh != nullptr; }
 };
 
@@ -48,7 +65,7 @@ struct SplatForwardState {
   std::vector<int32_t> n_contrib;          // H x W
 };
 
-// Outputs: image H x W x C (channel-last), alpha = 1 - T_final (H x W), depth = sum_i alpha_i T_i z_i
+// Outputs: image H x W x C (channel-last; H x W x P with in.cosines), alpha = 1 - T_final (H x W), depth = sum_i alpha_i T_i z_i
 // (H x W, the expected camera z of the blended surface, not normalised by alpha).
 template <class T>
 void rasterize_forward_cpu(const SplatCamera<T>& cam, const SplatInputs<T>& in, T* image, T* alpha, T* depth,
@@ -68,7 +85,8 @@ struct SplatGradients {
   T* mean2d_abs = nullptr;
 };
 
-// dL_dimage H x W x C, dL_dalpha and dL_ddepth H x W (each may be null for zero).
+// dL_dimage H x W x C, dL_dalpha and dL_ddepth H x W (each may be null for zero). std::invalid_argument
+// for inputs with cosines (ChannelCosines has no backward).
 template <class T>
 void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>& state, const T* dL_dimage,
                             const T* dL_dalpha, const T* dL_ddepth, SplatGradients<T>& grads);
