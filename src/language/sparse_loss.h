@@ -24,7 +24,16 @@ namespace cls {
 // torch's cosine_similarity. float32 or float64 on any device (the codebook, tables and coverage are moved to
 // the weight map's); the ids are read on the CPU for the check.
 // cls::Error for shapes that do not agree and for ids outside their tables (check_seg_ids).
+//
+// On the CPU one pass over the pixels takes the three terms and the gradients (as language_loss_from_seg): `total`
+// is differentiable with respect to the weight map and the codebook, the three terms are plain scalars. Elsewhere
+// sparse_cosine_loss_reference, whose LibTorch operations make a dozen H W x L tensors and their backward.
 LanguageLoss sparse_cosine_loss(const at::Tensor& weight_map, const at::Tensor& codebook, const SegMapTarget& sam,
                                 const SegMapTarget& gml, const at::Tensor& coverage, const LanguageLossWeights& weights);
+
+// The same loss as LibTorch operations, every term differentiable: the GPU's path and the CPU pass's reference.
+LanguageLoss sparse_cosine_loss_reference(const at::Tensor& weight_map, const at::Tensor& codebook,
+                                          const SegMapTarget& sam, const SegMapTarget& gml, const at::Tensor& coverage,
+                                          const LanguageLossWeights& weights);
 
 }  // namespace cls

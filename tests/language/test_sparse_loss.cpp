@@ -64,12 +64,20 @@ double total_of(const std::array<double, 3>& t, const LanguageLossWeights& w) {
   return w.baseline ? t[0] + t[1] : t[0] + w.lambda_sam * t[1] + w.lambda_citygml * t[2];
 }
 
+// Both forms: the CPU's one pass (sparse_cosine_loss) and the LibTorch operations a GPU runs.
+using CosineLossFn = LanguageLoss (*)(const at::Tensor&, const at::Tensor&, const SegMapTarget&, const SegMapTarget&,
+                                      const at::Tensor&, const LanguageLossWeights&);
+const std::pair<const char*, CosineLossFn> kForms[] = {{"one pass", &sparse_cosine_loss},
+                                                       {"reference", &sparse_cosine_loss_reference}};
+
 TEST(SparseCosineLoss, EqualsTheDefinitionAndItsDifferences) {
   const CosineCase c = cosine_case(5, 6, 4, 7, 3, 2);
+  for (const auto& [form, loss_fn] : kForms)
   for (const LanguageLossWeights lw : {LanguageLossWeights{1.0, 0.5, false}, LanguageLossWeights{2.0, 0.7, false},
                                        LanguageLossWeights{2.0, 0.7, true}}) {
+    SCOPED_TRACE(form);
     const at::Tensor weights = c.weights.clone().requires_grad_(true), codebook = c.codebook.clone().requires_grad_(true);
-    const LanguageLoss loss = sparse_cosine_loss(weights, codebook, c.sam, c.gml, c.coverage, lw);
+    const LanguageLoss loss = loss_fn(weights, codebook, c.sam, c.gml, c.coverage, lw);
     const std::array<double, 3> expected = definition(c, c.weights, c.codebook);
     EXPECT_NEAR(loss.sam.item<double>(), expected[0], 1e-12);
     EXPECT_NEAR(loss.sam_gml.item<double>(), expected[1], 1e-12);
@@ -104,6 +112,35 @@ TEST(SparseCosineLoss, EqualsTheDefinitionAndItsDifferences) {
         minus[j][k] -= step;
         EXPECT_NEAR(codebook.grad()[j][k].item<double>(), difference(plus, minus), 1e-7) << "basis " << j << ", " << k;
       }
+  }
+}
+
+// The one pass against the reference on a view of many pixels (every thread's share of the per-target sums),
+// float32 and both weightings: the terms and both gradients.
+TEST(SparseCosineLoss, OnePassEqualsTheReferenceOnALargerView) {
+  const CosineCase c = cosine_case(37, 41, 16, 24, 9, 5);
+  for (const torch::Dtype dtype : {torch::kFloat64, torch::kFloat32})
+  for (const LanguageLossWeights lw : {LanguageLossWeights{1.0, 0.5, false}, LanguageLossWeights{1.0, 0.5, true}}) {
+    const SegMapTarget sam{c.sam.ids, c.sam.table.to(dtype)}, gml{c.gml.ids, c.gml.table.to(dtype)};
+    at::Tensor grads[2][2];
+    LanguageLoss losses[2];
+    for (int f = 0; f < 2; ++f) {
+      const at::Tensor weights = c.weights.to(dtype).clone().requires_grad_(true),
+                       codebook = c.codebook.to(dtype).clone().requires_grad_(true);
+      losses[f] = kForms[f].second(weights, codebook, sam, gml, c.coverage.to(dtype), lw);
+      losses[f].total.backward();
+      grads[f][0] = weights.grad(), grads[f][1] = codebook.grad();
+    }
+    const double tol = dtype == torch::kFloat64 ? 1e-12 : 1e-5;
+    const std::string what = std::string(dtype == torch::kFloat64 ? "double" : "float") + (lw.baseline ? ", baseline" : "");
+    EXPECT_NEAR(losses[0].total.item<double>(), losses[1].total.item<double>(), tol) << what;
+    EXPECT_NEAR(losses[0].sam_gml.item<double>(), losses[1].sam_gml.item<double>(), tol) << what;
+    EXPECT_NEAR(losses[0].citygml.item<double>(), losses[1].citygml.item<double>(), tol) << what;
+    for (int g = 0; g < 2; ++g) {
+      const double scale = grads[1][g].abs().max().item<double>();
+      ASSERT_GT(scale, 0.0) << what;
+      EXPECT_LT((grads[0][g] - grads[1][g]).abs().max().item<double>(), tol * scale * 10) << what << (g ? ", codebook" : ", weights");
+    }
   }
 }
 
