@@ -289,7 +289,9 @@ template <class T, int kC, int kBytes>
       M pass = live;  // nearly every entry of a sub-tile list has a lane within its cutoff
       V G;
       const V a = lane_alpha<kBytes>(power, g.opacity, pass, G);
-      if (!any_lane(pass)) continue;
+      // An entry no lane passes adds zeros. Sparse values are not worth the test: their few adds cost less (the
+      // sparse field's 1080p map ran 10-20 % faster without it); RGB ran as fast either way.
+      if (!j.index && !any_lane(pass)) continue;
       const V test_T = Tr * (T(1) - a);
       const M stop = pass & lane_less<kBytes>(test_T, V{} + T(kTransmittanceMin));
       pass &= ~stop;
