@@ -8,8 +8,9 @@
 // --field sparse times the sparse field instead (language/sparse_field.h, issue 36): K random softmax-like
 // weights over a random L x 512 codebook per Gaussian, splatted sparsely, the cosines through the codebook's
 // factors: on the CPU inside the rasterizer's tiles (render_sparse_cosines, timed alone as the "render"), on a GPU
-// from the rendered L-channel weight map. Both fields then time the per-Gaussian scores of one text at one level over all Gaussians (dense:
-// the latent cosine `query` takes, gaussian_scores; sparse: sparse_cosines, the feature cosine).
+// from the rendered L-channel weight map. Both fields then time the per-Gaussian scores of one text at one level
+// over all Gaussians (dense: the latent cosine `query` takes, gaussian_scores; sparse: sparse_cosines, the
+// feature cosine).
 // Usage: bench_query [--threads N] [--gaussians N] [--iters N] [--sizes 480x360,1920x1080] [--device cpu]
 //                    [--field dense|sparse] [--codebook-size 64] [--top-k 4]
 // Figures go to docs/benchmarks.md.

@@ -5,7 +5,7 @@
 #include <omp.h>
 #include <torch/csrc/autograd/custom_function.h>
 
-#include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>

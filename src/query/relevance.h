@@ -132,7 +132,8 @@ RelevanceMaps relevance_maps(const GaussianModel& gaussians, const at::Tensor& l
 RenderedLatents render_sparse(const GaussianModel& gaussians, const SparseLevel& level, const PinholeCamera& camera,
                               const Pose& pose);
 // The cosines of the rendered weights' features (weights times the codebook) with P directions (P x D), taken in
-// the rasterizer's tiles (rasterize_sparse_cosines) without the L-channel map (0 where nothing is blended). CPU only (cls::Error on a GPU's Gaussians).
+// the rasterizer's tiles (rasterize_sparse_cosines) without the L-channel map (0 where nothing is blended). CPU
+// only (cls::Error on a GPU's Gaussians).
 struct RenderedCosines {
   at::Tensor cosine;  // H x W x P
   at::Tensor alpha;   // H x W

@@ -65,8 +65,8 @@ struct SplatForwardState {
   std::vector<int32_t> n_contrib;          // H x W
 };
 
-// Outputs: image H x W x C (channel-last; H x W x P with in.cosines), alpha = 1 - T_final (H x W), depth = sum_i alpha_i T_i z_i
-// (H x W, the expected camera z of the blended surface, not normalised by alpha).
+// Outputs: image H x W x C (channel-last; H x W x P with in.cosines), alpha = 1 - T_final (H x W),
+// depth = sum_i alpha_i T_i z_i (H x W, the expected camera z of the blended surface, not normalised by alpha).
 template <class T>
 void rasterize_forward_cpu(const SplatCamera<T>& cam, const SplatInputs<T>& in, T* image, T* alpha, T* depth,
                            SplatForwardState<T>& state);
