@@ -1,10 +1,13 @@
 #include "language/sparse_field.h"
 
 #include <ATen/ATen.h>
+#include <ATen/Dispatch.h>
+#include <torch/csrc/autograd/custom_function.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -29,9 +32,108 @@ void SparseLevel::validate(const std::string& what, int64_t n, int64_t d) const 
     fail(what, "weights or codebook hold a NaN or infinity");
 }
 
-SparseWeights top_k_softmax(const at::Tensor& logits, int k) {
+namespace {
+
+void check_top_k(const at::Tensor& logits, int k) {
   if (logits.dim() != 2 || k < 1 || k > logits.size(1))
     throw Error(cat("top_k_softmax: K must lie in [1, ", logits.dim() == 2 ? logits.size(1) : 0, "], got ", k));
+}
+
+// One row's top k (largest first; of equal logits the first) and their softmax: k passes of a vectorised
+// maximum over the logits not yet taken, then the first position holding it (an insertion per new
+// candidate mispredicted its branch about 17 times a row for k 4 of 64, 9 ms for 50k rows on 2 cores).
+// Where only -inf or NaN logits are left, the first positions not taken.
+template <class T>
+void top_k_row(const T* x, int64_t l, int k, int32_t* index, T* weight, std::vector<T>& rest) {
+  rest.assign(x, x + l);
+  const T taken = -std::numeric_limits<T>::infinity();
+  for (int j = 0; j < k; ++j) {
+    T m = taken;
+#pragma omp simd reduction(max : m)
+    for (int64_t c = 0; c < l; ++c) m = std::max(m, rest[size_t(c)]);
+    int64_t at_max = 0;
+    if (m > taken)
+      while (rest[size_t(at_max)] != m) ++at_max;
+    else  // only -inf or NaN left: the first position not taken
+      while (std::find(index, index + j, int32_t(at_max)) != index + j) ++at_max;
+    index[j] = int32_t(at_max);
+    rest[size_t(at_max)] = taken;
+  }
+  const T top = x[index[0]];
+  T sum = 0;
+  for (int j = 0; j < k; ++j) sum += weight[j] = std::exp(x[index[j]] - top);
+  for (int j = 0; j < k; ++j) weight[j] /= sum;
+}
+
+template <class T>
+void top_k_rows(const T* x, int64_t n, int64_t l, int k, int32_t* index, T* weight) {
+#pragma omp parallel
+  {
+    std::vector<T> rest;
+#pragma omp for schedule(static)
+    for (int64_t i = 0; i < n; ++i) top_k_row(x + i * l, l, k, index + i * k, weight + i * k, rest);
+  }
+}
+
+// d logit_{i,j_m} = w_m (g_m - sum_k w_k g_k) at the kept bases (softmax's Jacobian) into `out` (n x l, zeros).
+template <class T>
+void top_k_rows_backward(const int32_t* index, const T* w, const T* g, int64_t n, int64_t l, int64_t k, T* out) {
+#pragma omp parallel for schedule(static)
+  for (int64_t i = 0; i < n; ++i) {
+    const T *wi = w + i * k, *gi = g + i * k;
+    T dot = 0;
+    for (int64_t j = 0; j < k; ++j) dot += wi[j] * gi[j];
+    for (int64_t j = 0; j < k; ++j) out[i * l + index[i * k + j]] += wi[j] * (gi[j] - dot);
+  }
+}
+
+// top_k_softmax on the CPU in one pass over the rows, forward and backward: at::topk and at::softmax took
+// 20 ms of a 200 ms sparse training iteration (50k Gaussians, L 64), their backward an N x L scatter besides.
+class TopKSoftmaxFunction : public torch::autograd::Function<TopKSoftmaxFunction> {
+ public:
+  static torch::autograd::variable_list forward(torch::autograd::AutogradContext* ctx, const at::Tensor& logits,
+                                                int64_t k) {
+    const at::Tensor x = logits.detach().contiguous();
+    const int64_t n = x.size(0), l = x.size(1);
+    at::Tensor indices = at::empty({n, k}, x.options().dtype(at::kInt));
+    at::Tensor weights = at::empty({n, k}, x.options());
+    AT_DISPATCH_FLOATING_TYPES(x.scalar_type(), "top_k_softmax", [&] {
+      top_k_rows(x.data_ptr<scalar_t>(), n, l, int(k), indices.data_ptr<int32_t>(), weights.data_ptr<scalar_t>());
+    });
+    ctx->mark_non_differentiable({indices});
+    ctx->save_for_backward({indices, weights});
+    ctx->saved_data["l"] = l;
+    return {weights, indices};
+  }
+
+  static torch::autograd::variable_list backward(torch::autograd::AutogradContext* ctx,
+                                                 torch::autograd::variable_list grad_output) {
+    const auto saved = ctx->get_saved_variables();
+    const at::Tensor& indices = saved[0];
+    const at::Tensor& weights = saved[1];
+    if (!grad_output[0].defined()) return {at::Tensor(), at::Tensor()};  // the weights were not used
+    const at::Tensor g = grad_output[0].to(weights.scalar_type()).contiguous();
+    const int64_t n = weights.size(0), k = weights.size(1), l = ctx->saved_data["l"].toInt();
+    at::Tensor out = at::zeros({n, l}, weights.options());
+    AT_DISPATCH_FLOATING_TYPES(weights.scalar_type(), "top_k_softmax_backward", [&] {
+      top_k_rows_backward(indices.data_ptr<int32_t>(), weights.data_ptr<scalar_t>(), g.data_ptr<scalar_t>(), n, l, k,
+                          out.data_ptr<scalar_t>());
+    });
+    return {out, at::Tensor()};
+  }
+};
+
+}  // namespace
+
+SparseWeights top_k_softmax(const at::Tensor& logits, int k) {
+  check_top_k(logits, k);
+  if (!logits.device().is_cpu()) return top_k_softmax_reference(logits, k);
+  const torch::autograd::variable_list out = TopKSoftmaxFunction::apply(logits, int64_t(k));
+  return {out[1], out[0]};
+}
+
+SparseWeights top_k_softmax_reference(const at::Tensor& logits, int k) {
+  check_top_k(logits, k);
   const auto [values, indices] = logits.topk(k, 1);
   return {indices.to(at::kInt).contiguous(), at::softmax(values, 1).contiguous()};
 }

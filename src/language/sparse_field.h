@@ -27,7 +27,11 @@ struct SparseLevel {
 struct SparseWeights {
   at::Tensor indices, weights;
 };
+// On the CPU one pass over the rows (forward and backward); elsewhere top_k_softmax_reference. Of equal
+// logits the first is kept.
 SparseWeights top_k_softmax(const at::Tensor& logits, int k);
+// The same with at::topk and at::softmax (what a GPU runs; the reference the tests compare with).
+SparseWeights top_k_softmax_reference(const at::Tensor& logits, int k);
 
 // A codebook of k bases for `rows` (M x D float32): k-means (k-means++ seeding from `seed`, then Lloyd
 // iterations until no assignment changes or `iterations` ran), as LangSplatV2 starts its codebook. With M <= k

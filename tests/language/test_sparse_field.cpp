@@ -30,6 +30,27 @@ TEST(SparseField, TopKSoftmaxKeepsTheLargestLogitsAndOnlyTheyLearn) {
   EXPECT_THROW(top_k_softmax(logits, 5), Error);
 }
 
+// The one-pass CPU form against at::topk and at::softmax (the reference), weights and the logits' gradient,
+// for K from one to all bases, in float and double; and of equal logits the first kept.
+TEST(SparseField, TopKSoftmaxEqualsTheReference) {
+  at::manual_seed(11);
+  for (const at::ScalarType dtype : {at::kFloat, at::kDouble})
+    for (const int k : {1, 4, 7, 64}) {
+      const at::Tensor base = at::randn({257, 64}, at::TensorOptions().dtype(dtype));
+      const at::Tensor upstream = at::randn({257, k}, at::TensorOptions().dtype(dtype));
+      const at::Tensor fast_logits = base.clone().requires_grad_(true), ref_logits = base.clone().requires_grad_(true);
+      const SparseWeights fast = top_k_softmax(fast_logits, k), ref = top_k_softmax_reference(ref_logits, k);
+      EXPECT_TRUE(at::equal(fast.indices, ref.indices)) << "k " << k;
+      EXPECT_TRUE(at::allclose(fast.weights, ref.weights, 1e-6, 1e-7)) << "k " << k;
+      (fast.weights * upstream).sum().backward();
+      (ref.weights * upstream).sum().backward();
+      EXPECT_TRUE(at::allclose(fast_logits.grad(), ref_logits.grad(), 1e-5, 1e-7)) << "k " << k;
+    }
+  const SparseWeights tied = top_k_softmax(at::tensor({1.0f, 2.0f, 2.0f, 2.0f}).reshape({1, 4}), 2);
+  EXPECT_TRUE(at::equal(tied.indices, at::tensor({1, 2}, at::kInt).reshape({1, 2})));
+  EXPECT_NEAR(tied.weights[0][0].item<double>(), 0.5, 1e-7);
+}
+
 TEST(SparseField, KMeansFindsSeparatedClusters) {
   at::manual_seed(3);
   const at::Tensor centres = at::tensor({10.0f, 0.0f, 0.0f, 0.0f, -10.0f, 0.0f, 0.0f, 0.0f, 10.0f}).reshape({3, 3});
