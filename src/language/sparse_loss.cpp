@@ -5,11 +5,13 @@
 #include <omp.h>
 #include <torch/csrc/autograd/custom_function.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include "core/blas_threads.h"
 #include "core/error.h"
 
 namespace cls {
@@ -48,69 +50,92 @@ struct CosineSums {
   double sam = 0, sam_gml = 0, citygml = 0;
 };
 
-// The pass over the pixels of W (n x L) with WG = W (B B^T): per pixel the cosines with its targets,
-// 1 - cos summed into `sums`, and with the terms' weights w_t at the pixel (dL/d(1 - cos): SAM
-// ((1 - M) + lambda_sam M) / n, the baseline's 1 / n, CityGML lambda_citygml M / n):
-//   dL/dW      = sum_t -w_t (B t / d - [d not floored] cos WG / |F|^2)      (into grad, n x L)
+// Pixels at a time: a chunk's W (B B^T) and its beta W^T W are one-thread GEMMs on rows still in cache.
+constexpr int64_t kChunkRows = 1024;
+
+// The pass over the pixels of W (n x L), in chunks: per pixel the cosines with its targets, 1 - cos summed
+// into `sums`, and with the terms' weights w_t at the pixel (dL/d(1 - cos): SAM ((1 - M) + lambda_sam M) / n,
+// the baseline's 1 / n, CityGML lambda_citygml M / n):
+//   dL/dW      = sum_t -w_t (B t / d - [d not floored] cos W G / |F|^2)      (into grad, n x L)
 //   dL/d(B t)  = sum over the pixels of the target of -w_t W / d              (into grad_projected per map)
-//   beta       = sum_t [d not floored] w_t cos / (2 |F|^2), so that dL/d(B B^T) = sum over pixels of beta W W^T
-// with |F|^2 = W^T (B B^T) W and d = max(|F| |t|, 1e-8). Per-thread copies of grad_projected, summed in thread
-// order afterwards (the same sums on every run with the same threads).
+//   dL/dG      = sum over the pixels of beta W W^T, beta = sum_t [d not floored] w_t cos / (2 |F|^2)
+//                                                                             (into grad_gram, L x L)
+// with G = B B^T, |F|^2 = W^T G W and d = max(|F| |t|, 1e-8). Per-thread sums, added in thread order
+// afterwards (the same sums on every run with the same threads). The GEMMs run on the pass's threads, each
+// with OpenBLAS held to it (the caller's ScopedBlasThreads).
 template <class T>
-void cosine_pass(const T* w, const T* wg, int64_t n, int64_t l, const float* coverage, const CosineTargets<T> (&maps)[2],
-                 const LanguageLossWeights& lw, T* grad, T* beta, std::vector<T> (&grad_projected)[2], CosineSums& sums) {
+void cosine_pass(const at::Tensor& w, const at::Tensor& gram, const float* coverage, const CosineTargets<T> (&maps)[2],
+                 const LanguageLossWeights& lw, T* grad, at::Tensor& grad_gram, std::vector<T> (&grad_projected)[2],
+                 CosineSums& sums) {
+  const int64_t n = w.size(0), l = w.size(1);
+  const T* const wd = w.data_ptr<T>();
   const T inv = T(1) / T(n);
   const int threads = omp_get_max_threads();
   std::vector<std::vector<T>> local(static_cast<size_t>(threads) * 2);
   std::vector<CosineSums> partial(static_cast<size_t>(threads));
+  std::vector<at::Tensor> outer(static_cast<size_t>(threads));
 #pragma omp parallel num_threads(threads)
   {
     const int me = omp_get_thread_num();
     std::vector<T>* mine = &local[static_cast<size_t>(me) * 2];
     for (int k = 0; k < 2; ++k) mine[k].assign(static_cast<size_t>(maps[k].rows * l), T(0));
+    at::Tensor& my_outer = outer[static_cast<size_t>(me)] = at::zeros({l, l}, w.options());
+    const at::Tensor wg_rows = at::empty({kChunkRows, l}, w.options()), wb_rows = at::empty({kChunkRows, l}, w.options());
     CosineSums part;
 #pragma omp for schedule(static)
-    for (int64_t p = 0; p < n; ++p) {
-      const T* wp = w + p * l;
-      const T* gp = wg + p * l;
-      T* out = grad + p * l;
-      T f2 = 0;
+    for (int64_t p0 = 0; p0 < n; p0 += kChunkRows) {
+      const int64_t rows = std::min(kChunkRows, n - p0);
+      const at::Tensor w_chunk = w.slice(0, p0, p0 + rows);
+      at::Tensor wg = wg_rows.slice(0, 0, rows), wb = wb_rows.slice(0, 0, rows);
+      at::mm_out(wg, w_chunk, gram);
+      for (int64_t r = 0; r < rows; ++r) {
+        const int64_t p = p0 + r;
+        const T* wp = wd + p * l;
+        const T* gp = wg.data_ptr<T>() + r * l;
+        T* out = grad + p * l;
+        T f2 = 0;
 #pragma omp simd reduction(+ : f2)
-      for (int64_t c = 0; c < l; ++c) f2 += wp[c] * gp[c];
-      for (int64_t c = 0; c < l; ++c) out[c] = T(0);
-      const T m = coverage[p];
-      const T weights[2] = {(lw.baseline ? T(1) : (1 - m) + T(lw.lambda_sam) * m) * inv, T(lw.lambda_citygml) * m * inv};
-      T b = 0, distance[2] = {0, 0};
-      for (int k = 0; k < 2; ++k) {
-        const int id = maps[k].ids ? maps[k].ids[p] : -1;
-        if (id < 0) continue;
-        const T* a = maps[k].projected + id * l;
-        T dot = 0;
+        for (int64_t c = 0; c < l; ++c) f2 += wp[c] * gp[c];
+        for (int64_t c = 0; c < l; ++c) out[c] = T(0);
+        const T m = coverage[p];
+        const T weights[2] = {(lw.baseline ? T(1) : (1 - m) + T(lw.lambda_sam) * m) * inv, T(lw.lambda_citygml) * m * inv};
+        T b = 0, distance[2] = {0, 0};
+        for (int k = 0; k < 2; ++k) {
+          const int id = maps[k].ids ? maps[k].ids[p] : -1;
+          if (id < 0) continue;
+          const T* a = maps[k].projected + id * l;
+          T dot = 0;
 #pragma omp simd reduction(+ : dot)
-        for (int64_t c = 0; c < l; ++c) dot += wp[c] * a[c];
-        const T product = f2 * maps[k].norm2[id];
-        const bool floored = !(product >= T(1e-16));  // clamp_min's gradient: none below the floor
-        const T d = floored ? T(1e-8) : std::sqrt(product);
-        const T cos = dot / d;
-        distance[k] = 1 - cos;
-        const T along_target = -weights[k] / d, along_norm = floored ? T(0) : weights[k] * cos / f2;
+          for (int64_t c = 0; c < l; ++c) dot += wp[c] * a[c];
+          const T product = f2 * maps[k].norm2[id];
+          const bool floored = !(product >= T(1e-16));  // clamp_min's gradient: none below the floor
+          const T d = floored ? T(1e-8) : std::sqrt(product);
+          const T cos = dot / d;
+          distance[k] = 1 - cos;
+          const T along_target = -weights[k] / d, along_norm = floored ? T(0) : weights[k] * cos / f2;
 #pragma omp simd
-        for (int64_t c = 0; c < l; ++c) out[c] += along_target * a[c] + along_norm * gp[c];
-        T* ga = mine[k].data() + id * l;
+          for (int64_t c = 0; c < l; ++c) out[c] += along_target * a[c] + along_norm * gp[c];
+          T* ga = mine[k].data() + id * l;
 #pragma omp simd
-        for (int64_t c = 0; c < l; ++c) ga[c] += along_target * wp[c];
-        b += along_norm / 2;
+          for (int64_t c = 0; c < l; ++c) ga[c] += along_target * wp[c];
+          b += along_norm / 2;
+        }
+        T* bw = wb.data_ptr<T>() + r * l;
+#pragma omp simd
+        for (int64_t c = 0; c < l; ++c) bw[c] = b * wp[c];
+        part.sam += double((1 - m) * distance[0]), part.sam_gml += double(m * distance[0]);
+        part.citygml += double(m * distance[1]);
       }
-      beta[p] = b;
-      part.sam += double((1 - m) * distance[0]), part.sam_gml += double(m * distance[0]);
-      part.citygml += double(m * distance[1]);
+      my_outer.addmm_(wb.t(), w_chunk);
     }
     partial[static_cast<size_t>(me)] = part;
   }
   for (int k = 0; k < 2; ++k) grad_projected[k].assign(static_cast<size_t>(maps[k].rows * l), T(0));
+  grad_gram = at::zeros({l, l}, w.options());
   for (int t = 0; t < threads; ++t) {
     sums.sam += partial[size_t(t)].sam, sums.sam_gml += partial[size_t(t)].sam_gml,
         sums.citygml += partial[size_t(t)].citygml;
+    grad_gram += outer[size_t(t)];
     for (int k = 0; k < 2; ++k) {
       const std::vector<T>& from = local[static_cast<size_t>(t) * 2 + k];
       for (size_t i = 0; i < from.size(); ++i) grad_projected[k][i] += from[i];
@@ -124,10 +149,13 @@ class SparseCosineLossFunction : public torch::autograd::Function<SparseCosineLo
   static at::Tensor forward(torch::autograd::AutogradContext* ctx, const at::Tensor& flat_weights,
                             const at::Tensor& codebook, const SegMapTarget* sam, const SegMapTarget* gml,
                             const at::Tensor& coverage, LanguageLossWeights weights, std::array<double, 3>* terms) {
+    // OpenBLAS held to the calling thread (core/blas_threads.h): its pool and the OpenMP one took turns
+    // spinning, 40 % of a 2-core loss went to their spins and yields; the large GEMMs are split over the
+    // pass's threads, the others are small.
+    const ScopedBlasThreads blas(1);
     const at::Tensor w = flat_weights.detach().contiguous(), book = codebook.detach().contiguous();
     const int64_t n = w.size(0), l = w.size(1);
     const at::Tensor gram = book.matmul(book.t());
-    const at::Tensor wg = w.matmul(gram);  // W (B B^T): one product instead of n small ones
     const at::Tensor m = coverage.reshape({n}).to(at::kFloat).contiguous();
     // per seg map: the table in the weights' dtype, B t per row and |t|^2 (the baseline reads no CityGML map)
     at::Tensor ids[2], tables[2], projected[2], norm2[2];
@@ -139,8 +167,7 @@ class SparseCosineLossFunction : public torch::autograd::Function<SparseCosineLo
       projected[k] = tables[k].matmul(book.t()).contiguous();
       norm2[k] = tables[k].pow(2).sum(1).contiguous();
     }
-    at::Tensor grad_w = at::empty_like(w), grad_book;
-    const at::Tensor beta = at::empty({n}, w.options());
+    at::Tensor grad_w = at::empty_like(w), grad_gram, grad_book;
     CosineSums sums;
     AT_DISPATCH_FLOATING_TYPES(w.scalar_type(), "sparse_cosine_loss", [&] {
       using T = scalar_t;
@@ -149,10 +176,9 @@ class SparseCosineLossFunction : public torch::autograd::Function<SparseCosineLo
         if (ids[k].defined())
           maps[k] = {ids[k].data_ptr<int32_t>(), projected[k].data_ptr<T>(), norm2[k].data_ptr<T>(), tables[k].size(0)};
       std::vector<T> grad_projected[2];
-      cosine_pass<T>(w.data_ptr<T>(), wg.data_ptr<T>(), n, l, m.data_ptr<float>(), maps, weights, grad_w.data_ptr<T>(),
-                     beta.data_ptr<T>(), grad_projected, sums);
-      // dL/dB: through B t (dL/d(B t) times t, per map) and through B B^T (2 (W^T diag(beta) W) B)
-      grad_book = 2 * (w * beta.unsqueeze(1)).t().matmul(w).matmul(book);
+      cosine_pass<T>(w, gram, m.data_ptr<float>(), maps, weights, grad_w.data_ptr<T>(), grad_gram, grad_projected, sums);
+      // dL/dB: through B t (dL/d(B t) times t, per map) and through G = B B^T (2 dL/dG B)
+      grad_book = 2 * grad_gram.matmul(book);
       for (int k = 0; k < 2; ++k)
         if (ids[k].defined())
           grad_book += at::from_blob(grad_projected[k].data(), {maps[k].rows, l}, w.options()).t().matmul(tables[k]);
