@@ -343,7 +343,9 @@ template <class T, int kC, int kBytes>
 // original's renderCUDA backward, one lane per pixel), summing per-entry gradients over the lanes in `buf`
 // (stride 9 + kC: mean2d 2, |mean2d| 2, conic 3, opacity, depth, and a fixed count of values), or with a
 // run-time channel count the values in `value_buf` (rows of whole vectors, so their vector loads and
-// stores do not straddle cache lines), then adds them to the per-Gaussian sums under striped locks.
+// stores do not straddle cache lines), then adds them to the per-Gaussian sums under striped locks. Sparse
+// values keep a row of lanes per value, summed over the lanes once per entry and tile: a sum over the lanes
+// per entry and sub-tile (a 16-vector transpose for four values) was the sparse backward's largest part.
 // value_grad += sum over the lanes where `pass` of w_l dL/dimage(pixel_l), for many channels: eight
 // registers of channels stay in registers while the lanes are added (one sum would otherwise be loaded
 // and stored per lane), then one register and single channels for the rest.
@@ -393,7 +395,9 @@ template <class T, int kC, int kBytes>
   const int nc = kC > 0 ? kC : j.C;
   const int S = 9 + kC;
   const int nv = j.nv;
-  const int VS = kC > 0 ? 0 : (nv + kLanes - 1) / kLanes;  // value_buf rows per entry
+  const bool sparse = kC == 0 && j.index;
+  // value_buf rows per entry: the sums, or a sparse entry's lanes per value
+  const int VS = kC > 0 ? 0 : sparse ? nv : (nv + kLanes - 1) / kLanes;
   const int tx = tile % cam.tiles_x(), ty = tile / cam.tiles_x();
   const int x0 = tx * kTileSize, y0 = ty * kTileSize;
   const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
@@ -402,7 +406,10 @@ template <class T, int kC, int kBytes>
   if (L == 0) return;
   subtile_lists(list, x0, y0, s.sub);
   buf.assign(static_cast<size_t>(L) * S, T(0));
-  if (kC == 0) s.value_buf.assign(static_cast<size_t>(L) * VS, LaneRow<T>{});
+  if (sparse)  // an entry's rows are set when it is first touched
+    s.value_buf.resize(static_cast<size_t>(L) * VS);
+  else if (kC == 0)
+    s.value_buf.assign(static_cast<size_t>(L) * VS, LaneRow<T>{});
   T* const value_sums = kC == 0 ? reinterpret_cast<T*>(s.value_buf.data()) : nullptr;
   auto values_of = [&](int k) { return value_sums + static_cast<size_t>(k) * VS * kLanes; };  // entry k's sums
   touched.assign(L, 0);
@@ -453,6 +460,7 @@ template <class T, int kC, int kBytes>
       Tr = Tr * inv_one_minus_a;
       const V w = a * Tr;
       T* e = buf.data() + static_cast<size_t>(k) * S;
+      const bool first = !touched[k];
       touched[k] = 1;
       V q[kLanes] = {};  // this entry's gradients per lane in buf's order (a few channels included)
       if (geometry) {
@@ -493,16 +501,10 @@ template <class T, int kC, int kBytes>
         const V sums = lane_sums(q);
         for (int i = 0; i < 9 + kC; ++i) e[i] += sums[i];
       }
-      if (kC == 0 && j.index) {  // sparse: each value's channel summed over the lanes (w = 0 where not passing)
+      if (sparse) {  // sparse: each value's channel per lane (w = 0 where not passing)
         const int32_t* idx = j.index + static_cast<size_t>(g.id) * nv;
-        T* sums = values_of(k);
-        for (int c0 = 0; c0 < nv; c0 += kLanes) {
-          V r[kLanes] = {};
-          const int n = std::min(kLanes, nv - c0);
-          for (int c = 0; c < n; ++c) r[c] = w * dpix[idx[c0 + c]];
-          const V total = lane_sums(r);
-          for (int c = 0; c < n; ++c) sums[c0 + c] += total[c];
-        }
+        LaneRow<T>* rows = s.value_buf.data() + static_cast<size_t>(k) * nv;
+        for (int c = 0; c < nv; ++c) rows[c].v = (first ? V{} : rows[c].v) + w * dpix[idx[c]];
       } else if (kC == 0) {
         add_lane_rows<kBytes>(w, pass, dL_dimage, pixel, nc, values_of(k));
       }
@@ -510,6 +512,17 @@ template <class T, int kC, int kBytes>
   }
   for (int k = 0; k < L; ++k) {
     if (!touched[k]) continue;
+    if (sparse) {  // each value's lanes summed, into the entry's first rows
+      LaneRow<T>* rows = s.value_buf.data() + static_cast<size_t>(k) * nv;
+      T* sums = values_of(k);
+      for (int c0 = 0; c0 < nv; c0 += kLanes) {
+        V r[kLanes] = {};
+        const int n = std::min(kLanes, nv - c0);
+        for (int c = 0; c < n; ++c) r[c] = rows[c0 + c].v;
+        const V total = lane_sums(r);
+        for (int c = 0; c < n; ++c) sums[c0 + c] = total[c];
+      }
+    }
     const int id = list[k].id;
     const T* e = buf.data() + static_cast<size_t>(k) * S;
     j.locks.lock(id);
