@@ -186,6 +186,10 @@ struct BackwardTileJob : TileInputs<T> {
   const T *dL_dimage, *dL_dalpha, *dL_ddepth;
   T *geom_grad, *value_grad;  // geom_grad null: only the values' gradients (no alpha gradient)
   StripedLocks& locks;
+  // Non-null: the values' gradients go to each thread's own copy of value_grad (thread t's at
+  // thread_value_grad + t * thread_stride), without the locks.
+  T* thread_value_grad;
+  size_t thread_stride;
 };
 
 // A thread's buffers, reused from tile to tile.
@@ -525,13 +529,19 @@ template <class T, int kC, int kBytes>
     }
     const int id = list[k].id;
     const T* e = buf.data() + static_cast<size_t>(k) * S;
+    const T* ev = kC > 0 ? e + 9 : values_of(k);
+    if (j.thread_value_grad) {  // no geometry: this thread's own sums
+      T* vg = j.thread_value_grad + omp_get_thread_num() * j.thread_stride + static_cast<size_t>(id) * nv;
+#pragma omp simd
+      for (int c = 0; c < nv; ++c) vg[c] += ev[c];
+      continue;
+    }
     j.locks.lock(id);
     if (geometry) {
       T* gg = j.geom_grad + static_cast<size_t>(id) * 9;
       for (int c = 0; c < 9; ++c) gg[c] += e[c];
     }
     T* vg = j.value_grad + static_cast<size_t>(id) * nv;
-    const T* ev = kC > 0 ? e + 9 : values_of(k);
 #pragma omp simd
     for (int c = 0; c < nv; ++c) vg[c] += ev[c];
     j.locks.unlock(id);
@@ -796,11 +806,22 @@ void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>
   }
   const T* values = sh ? st.colors.data() : in.features;
   StripedLocks locks;
+  // Sparse values on frozen geometry (a sparse language field) sum into a copy of the values' gradients per
+  // thread: the locks' flags, shared by the threads' cache lines, took a fifth of that backward.
+  const size_t value_rows = static_cast<size_t>(N) * value_count(in);
+  const int threads = omp_get_max_threads();
+  std::vector<T> thread_values(!geometry && in.feature_index && threads > 1 ? threads * value_rows : 0, T(0));
   const std::vector<TileGaussian<T>> gaussians = tile_gaussians(st, in.opacities);
   const BackwardTileJob<T> job{{cam, st, gaussians.data(), values, C, in.background, in.feature_index, value_count(in)},
-                               dL_dimage, dL_dalpha, dL_ddepth, geometry ? geom.data() : nullptr, value_grad, locks};
+                               dL_dimage, dL_dalpha, dL_ddepth, geometry ? geom.data() : nullptr, value_grad, locks,
+                               thread_values.empty() ? nullptr : thread_values.data(), value_rows};
   const BackwardTileFn<T> backward_tile_fn = tile_kernels<T>(in.feature_index ? 0 : C).second;
   run_tiles(cam, backward_tile_fn, job);
+  if (!thread_values.empty()) {
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < value_rows; ++i)
+      for (int t = 0; t < threads; ++t) value_grad[i] += thread_values[t * value_rows + i];
+  }
   // per Gaussian: screen-space gradients -> 3D parameters (preprocess backward)
   const Vec3<T> campos = cam.center();
 #pragma omp parallel for schedule(static)

@@ -2,7 +2,6 @@
 // pixel by pixel in double: each pixel's D-d feature formed from its weights and the codebook, its cosine
 // with the target taken directly; gradients against central differences of that definition.
 #include <gtest/gtest.h>
-#include <omp.h>
 #include <torch/torch.h>
 
 #include <algorithm>
@@ -13,6 +12,7 @@
 #include "core/error.h"
 #include "error_of.h"
 #include "language/sparse_loss.h"
+#include "omp_threads.h"
 
 namespace cls {
 namespace {
@@ -121,15 +121,10 @@ TEST(SparseCosineLoss, EqualsTheDefinitionAndItsDifferences) {
 // and both weightings: the terms and both gradients.
 TEST(SparseCosineLoss, OnePassEqualsTheReferenceOnALargerView) {
   const CosineCase c = cosine_case(53, 47, 16, 24, 9, 5);
-  struct RestoreThreads {  // also when an ASSERT leaves early
-    int count = omp_get_max_threads();
-    ~RestoreThreads() { omp_set_num_threads(count); }
-  } restore;
   for (const int threads : {1, 2, 3})
   for (const torch::Dtype dtype : {torch::kFloat64, torch::kFloat32})
   for (const LanguageLossWeights lw : {LanguageLossWeights{1.0, 0.5, false}, LanguageLossWeights{1.0, 0.5, true}}) {
-    omp_set_num_threads(threads);
-    SCOPED_TRACE(threads);
+    const test::ScopedOmpThreads use(threads);
     const SegMapTarget sam{c.sam.ids, c.sam.table.to(dtype)}, gml{c.gml.ids, c.gml.table.to(dtype)};
     at::Tensor grads[2][2];
     LanguageLoss losses[2];

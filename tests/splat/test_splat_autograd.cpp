@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "splat/gaussians.h"
 #include "splat/rasterize.h"
+#include "omp_threads.h"
 #include "splat_scene.h"
 #include "torch_scene.h"
 
@@ -135,8 +136,10 @@ TEST(SplatAutograd, SparseFeaturesEqualTheirDenseScatter) {
   constexpr int K = 3, C = 20;
   for (CpuKernels k : available_cpu_kernels())
   for (torch::Dtype dtype : {torch::kFloat64, torch::kFloat32})
-  for (bool geometry : {false, true}) {
+  for (bool geometry : {false, true})
+  for (int threads : {1, 2, 3}) {  // without geometry, each thread sums the weights' gradients apart
     test::ScopedCpuKernels use(k);
+    const test::ScopedOmpThreads use_threads(threads);
     TorchScene t = torch_scene(false, C, 41, dtype);
     t.settings.background = torch::linspace(0.1, 0.5, C, t.means.options());
     SparseCase sc = sparse_case(t, K, C, 42);

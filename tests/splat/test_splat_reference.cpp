@@ -6,9 +6,9 @@
 #include <utility>
 #include <vector>
 
-#include <omp.h>
 
 #include "splat/reference_render.h"
+#include "omp_threads.h"
 #include "splat_scene.h"
 
 namespace cls {
@@ -159,13 +159,8 @@ TEST(SplatTiles, ListsHoldEveryGaussianOfItsTileFrontToBack) {
     for (int k = 0; k < 3; ++k) s.means[3 * i + k] = s.means[3 * (i - 1) + k] + shift[k];
   }
   const auto af = test::scene_arrays<float>(s);
-  struct RestoreThreads {  // also when an ASSERT leaves early
-    int count = omp_get_max_threads();
-    ~RestoreThreads() { omp_set_num_threads(count); }
-  } restore;
   for (int threads : {1, 2, 3}) {
-    SCOPED_TRACE(threads);
-    omp_set_num_threads(threads);
+    const test::ScopedOmpThreads use(threads);
     const size_t n_pix = static_cast<size_t>(s.cam.width) * s.cam.height;
     std::vector<float> image(n_pix * s.channels), alpha(n_pix), depth(n_pix);
     SplatForwardState<float> st;
