@@ -807,10 +807,15 @@ void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>
   const T* values = sh ? st.colors.data() : in.features;
   StripedLocks locks;
   // Sparse values on frozen geometry (a sparse language field) sum into a copy of the values' gradients per
-  // thread: the locks' flags, shared by the threads' cache lines, took a fifth of that backward.
+  // thread: the locks' flags, shared by the threads' cache lines, took a fifth of that backward. Up to
+  // kThreadCopiesBytes of copies (2M Gaussians of K 4 on 2 threads): their memory, zeroing and sum grow with
+  // threads x Gaussians, the locks' cost with the entries (beyond it the locks, not measured against copies).
+  constexpr size_t kThreadCopiesBytes = size_t(64) << 20;
   const size_t value_rows = static_cast<size_t>(N) * value_count(in);
   const int threads = omp_get_max_threads();
-  std::vector<T> thread_values(!geometry && in.feature_index && threads > 1 ? threads * value_rows : 0, T(0));
+  const bool copies = !geometry && in.feature_index && threads > 1 &&
+                      threads * value_rows * sizeof(T) <= kThreadCopiesBytes;
+  std::vector<T> thread_values(copies ? threads * value_rows : 0, T(0));
   const std::vector<TileGaussian<T>> gaussians = tile_gaussians(st, in.opacities);
   const BackwardTileJob<T> job{{cam, st, gaussians.data(), values, C, in.background, in.feature_index, value_count(in)},
                                dL_dimage, dL_dalpha, dL_ddepth, geometry ? geom.data() : nullptr, value_grad, locks,
