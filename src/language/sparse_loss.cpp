@@ -88,10 +88,12 @@ void cosine_pass(const at::Tensor& w, const at::Tensor& gram, const float* cover
       const at::Tensor w_chunk = w.slice(0, p0, p0 + rows);
       at::Tensor wg = wg_rows.slice(0, 0, rows), wb = wb_rows.slice(0, 0, rows);
       at::mm_out(wg, w_chunk, gram);
+      const T* const wgd = wg.data_ptr<T>();
+      T* const wbd = wb.data_ptr<T>();
       for (int64_t r = 0; r < rows; ++r) {
         const int64_t p = p0 + r;
         const T* wp = wd + p * l;
-        const T* gp = wg.data_ptr<T>() + r * l;
+        const T* gp = wgd + r * l;
         T* out = grad + p * l;
         T f2 = 0;
 #pragma omp simd reduction(+ : f2)
@@ -120,7 +122,7 @@ void cosine_pass(const at::Tensor& w, const at::Tensor& gram, const float* cover
           for (int64_t c = 0; c < l; ++c) ga[c] += along_target * wp[c];
           b += along_norm / 2;
         }
-        T* bw = wb.data_ptr<T>() + r * l;
+        T* bw = wbd + r * l;
 #pragma omp simd
         for (int64_t c = 0; c < l; ++c) bw[c] = b * wp[c];
         part.sam += double((1 - m) * distance[0]), part.sam_gml += double(m * distance[0]);
