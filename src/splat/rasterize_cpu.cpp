@@ -807,9 +807,10 @@ void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>
   const T* values = sh ? st.colors.data() : in.features;
   StripedLocks locks;
   // Sparse values on frozen geometry (a sparse language field) sum into a copy of the values' gradients per
-  // thread: the locks' flags, shared by the threads' cache lines, took a fifth of that backward. Up to
-  // kThreadCopiesBytes of copies (2M Gaussians of K 4 on 2 threads): their memory, zeroing and sum grow with
-  // threads x Gaussians, the locks' cost with the entries (beyond it the locks, not measured against copies).
+  // thread: taking a striped lock per entry and tile took a fifth of that backward (not the flags' sharing of
+  // cache lines: a cache line per flag ran no faster, docs/benchmarks.md). Up to kThreadCopiesBytes of copies
+  // (2M Gaussians of K 4 on 2 threads): their memory, zeroing and sum grow with threads x Gaussians, the locks'
+  // cost with the entries (beyond it the locks, not measured against copies).
   constexpr size_t kThreadCopiesBytes = size_t(64) << 20;
   const size_t value_rows = static_cast<size_t>(N) * value_count(in);
   const int threads = omp_get_max_threads();

@@ -4,9 +4,9 @@
 #include <torch/torch.h>
 
 #include "core/error.h"
+#include "omp_threads.h"
 #include "splat/gaussians.h"
 #include "splat/rasterize.h"
-#include "omp_threads.h"
 #include "splat_scene.h"
 #include "torch_scene.h"
 

@@ -6,9 +6,8 @@
 #include <utility>
 #include <vector>
 
-
-#include "splat/reference_render.h"
 #include "omp_threads.h"
+#include "splat/reference_render.h"
 #include "splat_scene.h"
 
 namespace cls {
