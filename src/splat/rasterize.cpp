@@ -2,6 +2,9 @@
 
 #include <torch/torch.h>
 
+#include <array>
+#include <type_traits>
+
 #include "core/error.h"
 #include "splat/rasterize_cpu.h"
 #include "splat/rasterize_cuda.h"
@@ -15,6 +18,29 @@
 #endif
 
 namespace cls {
+
+struct BlendCache {
+  std::unique_ptr<BlendWeights<float>> weights_float;
+  std::unique_ptr<BlendWeights<double>> weights_double;
+  // The geometry recorded: each tensor's memory and version (means, scales, quats, opacities).
+  std::array<const void*, 4> data{};
+  std::array<int64_t, 4> version{};
+
+  template <class T>
+  std::unique_ptr<BlendWeights<T>>& weights() {
+    if constexpr (std::is_same_v<T, float>)
+      return weights_float;
+    else
+      return weights_double;
+  }
+};
+
+std::shared_ptr<BlendCache> make_blend_cache() { return std::make_shared<BlendCache>(); }
+
+size_t blend_cache_bytes(const BlendCache& cache) {
+  return (cache.weights_float ? cache.weights_float->bytes() : 0) + (cache.weights_double ? cache.weights_double->bytes() : 0);
+}
+
 namespace {
 
 using torch::autograd::AutogradContext;
@@ -41,6 +67,39 @@ SplatInputs<T> make_inputs(const at::Tensor& means, const at::Tensor& scales, co
   }
   in.background = background.defined() ? background.data_ptr<T>() : nullptr;
   return in;
+}
+
+// The geometry's identity as a BlendCache keeps it.
+std::array<const void*, 4> geometry_data(const std::array<const at::Tensor*, 4>& g) {
+  return {g[0]->data_ptr(), g[1]->data_ptr(), g[2]->data_ptr(), g[3]->data_ptr()};
+}
+std::array<int64_t, 4> geometry_version(const std::array<const at::Tensor*, 4>& g) {
+  return {g[0]->_version(), g[1]->_version(), g[2]->_version(), g[3]->_version()};
+}
+
+template <class T>
+bool same_camera(const SplatCamera<T>& a, const SplatCamera<T>& b) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (a.R.m[i][j] != b.R.m[i][j]) return false;
+  return a.t[0] == b.t[0] && a.t[1] == b.t[1] && a.t[2] == b.t[2] && a.fx == b.fx && a.fy == b.fy && a.cx == b.cx &&
+         a.cy == b.cy && a.width == b.width && a.height == b.height;
+}
+
+// The cache's weights for this call: recorded ones (checked to be of this geometry and camera), or null when it
+// is empty (this call records).
+template <class T>
+const BlendWeights<T>* recorded_weights(BlendCache& cache, const std::array<const at::Tensor*, 4>& geometry,
+                                        const SplatCamera<T>& cam) {
+  if (!cache.weights_float && !cache.weights_double) return nullptr;
+  const BlendWeights<T>* bw = cache.weights<T>().get();
+  if (!bw) throw Error("rasterize: the blend cache was recorded for another dtype");
+  if (cache.data != geometry_data(geometry) || bw->n != static_cast<int>(geometry[0]->size(0)))
+    throw Error("rasterize: the blend cache was recorded for other Gaussians (keep one cache per view and geometry)");
+  if (cache.version != geometry_version(geometry))
+    throw Error("rasterize: the Gaussians changed since the blend cache was recorded (it is for frozen geometry)");
+  if (!same_camera(bw->cam, cam)) throw Error("rasterize: the blend cache was recorded for another camera (keep one per view)");
+  return bw;
 }
 
 // radii[i]: Gaussian i's screen radius from the forward's projection, 0 where culled.
@@ -123,19 +182,41 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
     } else {
     AT_DISPATCH_FLOATING_TYPES(means.scalar_type(), "rasterize_forward", [&] {
       using T = scalar_t;
+      const SplatInputs<T> in = make_inputs<T>(means, scales, quats, opacities, values, int(sh_degree), bg, index, C);
+      const SplatCamera<T> splat_cam = make_splat_camera<T>(cam, settings->pose);
+      if (settings->blend_cache) {  // recorded weights, or this call records them; the backward reads them
+        BlendCache& cache = *settings->blend_cache;
+        const std::array<const at::Tensor*, 4> geometry{&means, &scales, &quats, &opacities};
+        const BlendWeights<T>* bw = recorded_weights(cache, geometry, splat_cam);
+        if (bw) {
+          rasterize_forward_recorded_cpu(*bw, in, image.data_ptr<T>(), alpha.data_ptr<T>(), depth.data_ptr<T>());
+        } else {
+          auto recorded = std::make_unique<BlendWeights<T>>();
+          SplatForwardState<T> state;
+          rasterize_forward_cpu(splat_cam, in, image.data_ptr<T>(), alpha.data_ptr<T>(), depth.data_ptr<T>(), state,
+                                recorded.get());
+          cache.data = geometry_data(geometry);
+          cache.version = geometry_version(geometry);
+          bw = (cache.weights<T>() = std::move(recorded)).get();
+        }
+        std::copy(bw->radii.begin(), bw->radii.end(), radii.data_ptr<int32_t>());
+        auto* keep = new std::shared_ptr<BlendCache>(settings->blend_cache);
+        holder = torch::from_blob(keep, {1}, [](void* p) { delete static_cast<std::shared_ptr<BlendCache>*>(p); },
+                                  torch::TensorOptions().dtype(torch::kUInt8));
+        return;
+      }
       auto* state = new SplatForwardState<T>();
       // The forward state is plain C++; a byte tensor whose deleter frees it carries it to backward.
       holder = torch::from_blob(state, {1}, [](void* p) { delete static_cast<SplatForwardState<T>*>(p); },
                                 torch::TensorOptions().dtype(torch::kUInt8));
-      const SplatInputs<T> in = make_inputs<T>(means, scales, quats, opacities, values, int(sh_degree), bg, index, C);
-      rasterize_forward_cpu(make_splat_camera<T>(cam, settings->pose), in, image.data_ptr<T>(),
-                            alpha.data_ptr<T>(), depth.data_ptr<T>(), *state);
+      rasterize_forward_cpu(splat_cam, in, image.data_ptr<T>(), alpha.data_ptr<T>(), depth.data_ptr<T>(), *state);
       fill_radii(*state, radii);
     });
     }
     ctx->save_for_backward({means, scales, quats, opacities, values, index});
     ctx->saved_data["channels"] = channels;
     ctx->saved_data["state"] = holder;
+    ctx->saved_data["recorded"] = settings->blend_cache != nullptr;
     ctx->saved_data["sh_degree"] = sh_degree;
     ctx->saved_data["background"] = bg;
     ctx->saved_data["abs_grad"] = settings->mean2d_abs_grad;
@@ -188,8 +269,14 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
     } else {
     AT_DISPATCH_FLOATING_TYPES(means.scalar_type(), "rasterize_backward", [&] {
       using T = scalar_t;
-      const auto& state = *static_cast<const SplatForwardState<T>*>(state_ptr);
       const SplatInputs<T> in = make_inputs<T>(means, scales, quats, opacities, values, sh_degree, bg, index, channels);
+      if (ctx->saved_data["recorded"].toBool()) {  // frozen geometry: the features' gradient only
+        BlendCache& cache = **static_cast<const std::shared_ptr<BlendCache>*>(state_ptr);
+        if (ctx->needs_input_grad(4) && g_image.defined())
+          rasterize_backward_recorded_cpu(*cache.weights<T>(), in, g_image.data_ptr<T>(), d_values.data_ptr<T>());
+        return;
+      }
+      const auto& state = *static_cast<const SplatForwardState<T>*>(state_ptr);
       SplatGradients<T> g;
       fill(g, T{});
       auto ptr = [](const at::Tensor& t) -> const T* { return t.defined() ? t.data_ptr<T>() : nullptr; };
@@ -228,6 +315,14 @@ void check_inputs(const at::Tensor& means, const at::Tensor& scales, const at::T
     throw Error("rasterize: camera needs a positive size and focal lengths");
 }
 
+// Whether autograd will ask for a gradient of the geometry (or the densification statistic).
+bool geometry_grad(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
+                   const at::Tensor& opacities, const at::Tensor& means2d, const RasterizeSettings& s) {
+  return s.mean2d_abs_grad.defined() ||
+         (torch::GradMode::is_enabled() && (means.requires_grad() || scales.requires_grad() || quats.requires_grad() ||
+                                            opacities.requires_grad() || (means2d.defined() && means2d.requires_grad())));
+}
+
 // index: int32 N x K for sparse features (values N x K at channels of C), undefined otherwise.
 RasterizeOutput run(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
                     const at::Tensor& opacities, const at::Tensor& values, int sh_degree, const at::Tensor& means2d,
@@ -237,6 +332,14 @@ RasterizeOutput run(const at::Tensor& means, const at::Tensor& scales, const at:
     throw Error("rasterize: background must have " + std::to_string(C) + " values");
   if (s.mean2d_abs_grad.defined() && s.mean2d_abs_grad.sizes() != at::IntArrayRef({means.size(0), 2}))
     throw Error("rasterize: mean2d_abs_grad must be N x 2");
+  if (s.blend_cache) {
+    if (!means.device().is_cpu()) throw Error("rasterize: a blend cache is for CPU tensors");
+    if (sh_degree >= 0) throw Error("rasterize: a blend cache is for features, not SH colours");
+    if (geometry_grad(means, scales, quats, opacities, means2d, s))
+      throw Error("rasterize: a blend cache is for frozen Gaussians; a gradient to the geometry was asked for");
+    if (!means.is_contiguous() || !scales.is_contiguous() || !quats.is_contiguous() || !opacities.is_contiguous())
+      throw Error("rasterize: a blend cache needs contiguous geometry tensors (it knows them by their memory)");
+  }
   // An undefined means2d still needs a tensor slot in apply(); a zero-size one gets no gradient.
   const at::Tensor m2d = means2d.defined() ? means2d : torch::zeros({0}, means.options());
   const at::Tensor idx = index.defined() ? index.contiguous() : torch::zeros({0}, means.options().dtype(torch::kInt32));
@@ -321,11 +424,8 @@ RasterizeOutput rasterize_sparse_features(const at::Tensor& means, const at::Ten
   check_sparse_inputs("rasterize_sparse_features", means, weights, indices, channels);
   // The sparse CUDA kernels take up to kCudaSparseMaxNnz weights and give their gradient alone; with more, or
   // with geometry gradients, the weights scattered into N x C dense features (the same image and gradients).
-  const bool geometry_grad = settings.mean2d_abs_grad.defined() ||
-                             (torch::GradMode::is_enabled() &&
-                              (means.requires_grad() || scales.requires_grad() || quats.requires_grad() ||
-                               opacities.requires_grad() || (means2d.defined() && means2d.requires_grad())));
-  if (means.is_cuda() && (geometry_grad || weights.size(1) > kCudaSparseMaxNnz)) {
+  if (means.is_cuda() && (geometry_grad(means, scales, quats, opacities, means2d, settings) ||
+                          weights.size(1) > kCudaSparseMaxNnz)) {
     return rasterize_features(means, scales, quats, opacities, scatter_sparse_features(weights, indices, channels),
                               means2d, settings);
   }

@@ -9,9 +9,23 @@
 // GaussianModel supplies them (scales(), opacities(), quats, sh() / features).
 #include <ATen/core/Tensor.h>
 
+#include <cstddef>
+#include <memory>
+
 #include "scene/camera.h"
 
 namespace cls {
+
+// The blend weights of Gaussians that do not move, kept between calls (rasterize_cpu.h's BlendWeights): a loop
+// that trains features on frozen geometry (language training) keeps one per view in RasterizeSettings. The
+// first call given an empty one records into it; later calls read it instead of projecting, sorting and
+// blending. For CPU tensors, features dense or sparse, and no gradient to the geometry (cls::Error otherwise);
+// the same images and gradients as without it (to the bit on one thread). It remembers the geometry tensors
+// (their memory and version), the camera and the dtype it was recorded with: a call with others is a
+// cls::Error, not a silently wrong image.
+struct BlendCache;
+std::shared_ptr<BlendCache> make_blend_cache();
+std::size_t blend_cache_bytes(const BlendCache& cache);  // 0 until a call records it
 
 struct RasterizeSettings {
   PinholeCamera camera;
@@ -20,6 +34,8 @@ struct RasterizeSettings {
   // Densification statistics: when defined (N x 2, same dtype), the backward adds the per-pixel sum
   // of |dL/dmean2d| (AbsGS / gsplat absgrad) to it.
   at::Tensor mean2d_abs_grad;
+  // When set: the view's blend weights, recorded on the first call and read on later ones (BlendCache).
+  std::shared_ptr<BlendCache> blend_cache;
 };
 
 struct RasterizeOutput {

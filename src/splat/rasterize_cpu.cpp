@@ -178,18 +178,23 @@ struct ForwardTileJob : TileInputs<T> {
   T *image, *alpha_out, *depth_out, *final_T;
   int32_t* n_contrib;
   ChannelCosines<T> cosines;  // count > 0: the image holds these instead of the channels
+  BlendWeights<T>* record;    // non-null: the weights recorded here (tiles sized)
 };
 
+// Where the per-Gaussian sums of a tile go: each thread's own copy of the values' gradients (thread t's at
+// thread_value_grad + t * thread_stride; no geometry), or the global sums under striped locks.
+template <class T>
+struct GradientSink {
+  T *geom_grad, *value_grad;  // geom_grad null: only the values' gradients
+  StripedLocks& locks;
+  T* thread_value_grad;
+  size_t thread_stride;
+};
 // What every tile of a backward pass reads besides, and writes.
 template <class T>
 struct BackwardTileJob : TileInputs<T> {
   const T *dL_dimage, *dL_dalpha, *dL_ddepth;
-  T *geom_grad, *value_grad;  // geom_grad null: only the values' gradients (no alpha gradient)
-  StripedLocks& locks;
-  // Non-null: the values' gradients go to each thread's own copy of value_grad (thread t's at
-  // thread_value_grad + t * thread_stride), without the locks.
-  T* thread_value_grad;
-  size_t thread_stride;
+  GradientSink<T> sink;  // sink.geom_grad null: only the values' gradients (no alpha gradient)
 };
 
 // A thread's buffers, reused from tile to tile.
@@ -208,6 +213,7 @@ struct TileScratch {
   std::vector<T> buf;
   std::vector<LaneRow<T>> value_buf;  // the backward's value sums with a run-time channel count
   std::vector<uint8_t> touched;
+  std::vector<int32_t> slot_of;       // recording: a list entry's index in the tile's ids
   std::vector<TileGaussian<T>> list;
   SubTileLists sub;
 };
@@ -247,6 +253,90 @@ template <int kBytes, class T>
     for (int k = 0; k < n; ++k) lane_add_scaled<kBytes>(acc[c], w[k], values[k][c]);
 }
 
+// The forward's sum of a sub-tile's entries with a run-time channel count, acc[c] += w v[c] per entry (w: its
+// lanes' alpha T, 0 where it does not add): sparse values into their channels; many channels wait in a batch and
+// are added eight entries at a time (add_weighted_values; finish_value_sums adds the rest). The walk and the
+// recorded weights' forward share it, so their images agree to the bit.
+template <class T>
+struct ValueSums {
+  static constexpr int kBatch = 8;
+  ValueSums(Lanes<T>* acc_, int nc_, const T* values_, const int32_t* index_, int nv_)
+      : acc(acc_), nc(nc_), values(values_), index(index_), nv(nv_) {}
+  Lanes<T>* acc;
+  int nc;
+  const T* values;
+  const int32_t* index;  // sparse: the values' channels, else null
+  int nv;
+  Lanes<T> batch_w[kBatch];
+  const T* batch_v[kBatch];
+  int batched = 0;
+};
+template <int kBytes, class T>
+[[gnu::always_inline]] inline void add_value_sums(ValueSums<T>& a, const Lanes<T>& w, int32_t id) {
+  const T* v = a.values + static_cast<size_t>(id) * a.nv;
+  if (a.index) {
+    const int32_t* idx = a.index + static_cast<size_t>(id) * a.nv;
+    for (int k = 0; k < a.nv; ++k) lane_add_scaled<kBytes>(a.acc[idx[k]], w, v[k]);
+  } else {  // (a NaN value reaches the sub-tile's other lanes here: NaN features are an error upstream)
+    a.batch_w[a.batched] = w, a.batch_v[a.batched++] = v;
+    if (a.batched == ValueSums<T>::kBatch) add_weighted_values<kBytes>(a.acc, a.batch_w, a.batch_v, a.batched, a.nc), a.batched = 0;
+  }
+}
+template <int kBytes, class T>
+[[gnu::always_inline]] inline void finish_value_sums(ValueSums<T>& a) {
+  add_weighted_values<kBytes>(a.acc, a.batch_w, a.batch_v, a.batched, a.nc);
+  a.batched = 0;
+}
+
+// A sub-tile's pixels of the image from its blended channels acc and final transmittance Tr: the channels plus
+// Tr times the background, or their cosines (`blended`: anything was blended here, else the cosines are 0).
+template <int kBytes, class T>
+[[gnu::always_inline]] inline void write_subtile_image(const Lanes<T>* acc, int nc, const Lanes<T>& Tr, const T* bg,
+                                                       const ChannelCosines<T>& cosines, bool blended,
+                                                       TileScratch<T>& s, const int64_t* pixel, T* image) {
+  const int n_cos = cosines.count;
+  if (n_cos > 0) {
+    s.cosine.resize(n_cos);
+    if (blended)
+      lane_cosines<kBytes>(acc, nc, cosines, &s.cosine[0].v);
+    else
+      for (int q = 0; q < n_cos; ++q) s.cosine[q].v = Lanes<T>{};
+  }
+  for (int l = 0; l < kLanes; ++l) {
+    const int64_t pix = pixel[l];
+    if (pix < 0) continue;
+    if (n_cos > 0) {
+      T* out = image + pix * n_cos;
+      for (int q = 0; q < n_cos; ++q) out[q] = s.cosine[q].v[l];
+    } else {
+      T* out = image + pix * nc;
+      for (int c = 0; c < nc; ++c) out[c] = acc[c][l] + (bg ? Tr[l] * bg[c] : T(0));
+    }
+  }
+}
+
+// Recording: entry k of the tile's list adds w to the sub-tile's pixels (slot holds list indices until
+// finish_recorded_tile numbers them).
+template <class T>
+void record_entry(typename BlendWeights<T>::Tile& rec, int k, const Lanes<T>& w) {
+  rec.slot.push_back(k);
+  const size_t at = rec.weights.size();
+  rec.weights.resize(at + kLanes);
+  std::memcpy(rec.weights.data() + at, &w, sizeof(w));
+}
+
+// The tile's Gaussians that added (ids in list order) and each entry's slot among them.
+template <class T>
+void finish_recorded_tile(typename BlendWeights<T>::Tile& rec, const std::vector<TileGaussian<T>>& list,
+                          std::vector<int32_t>& slot_of) {
+  slot_of.assign(list.size(), -1);
+  for (int32_t k : rec.slot) slot_of[k] = 0;
+  rec.ids.clear();
+  for (size_t k = 0; k < list.size(); ++k)
+    if (slot_of[k] == 0) slot_of[k] = static_cast<int32_t>(rec.ids.size()), rec.ids.push_back(list[k].id);
+  for (int32_t& k : rec.slot) k = slot_of[k];
+}
+
 // Front-to-back blending of one tile (renderCUDA), a 4x4 sub-tile at a time with one lane per pixel
 // (blend_lanes.h). kC > 0 fixes the channel count at compile time (RGB), kC = 0 loops over C at run time.
 // Always inlined: the kernel builds below compile it once per instruction set.
@@ -264,12 +354,11 @@ template <class T, int kC, int kBytes>
   const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
   gather_tile(j.st, j.gaussians, tile, list);
   subtile_lists(list, x0, y0, s.sub);
+  typename BlendWeights<T>::Tile* const rec = j.record ? &j.record->tiles[tile] : nullptr;
   // fixed-size channels live on the stack (registers for RGB)
   V acc_fixed[kC > 0 ? kC : 1];
   if (kC == 0) s.acc.resize(nc);
   V* const acc = kC > 0 ? acc_fixed : &s.acc[0].v;
-  const int n_cos = kC > 0 ? 0 : j.cosines.count;
-  if (n_cos > 0) s.cosine.resize(n_cos);
   for (int sy = y0; sy < y1; sy += kSubTile)
   for (int sx = x0; sx < x1; sx += kSubTile) {
     const int q = (sy - y0) / kSubTile * kSubTilesPerSide + (sx - x0) / kSubTile;
@@ -277,16 +366,14 @@ template <class T, int kC, int kBytes>
     const int L = s.sub.count[q];
     V cx, cy;
     lane_centres<T>(sx, sy, cx, cy);
+    int64_t pixel[kLanes];
     M live;  // lanes inside the image that have not stopped
-    for (int l = 0; l < kLanes; ++l) live[l] = lane_pixel(sx, sy, l, x1, y1, cam.width) >= 0 ? -1 : 0;
+    for (int l = 0; l < kLanes; ++l) live[l] = (pixel[l] = lane_pixel(sx, sy, l, x1, y1, cam.width)) >= 0 ? -1 : 0;
     V Tr = V{} + T(1), d = V{};
     M last = M{};
     for (int c = 0; c < nc; ++c) acc[c] = V{};
-    // many channels: contributions wait here and are added to acc eight at a time
-    constexpr int kBatch = 8;
-    V batch_w[kBatch];
-    const T* batch_v[kBatch];
-    int batched = 0;
+    ValueSums<T> sums{acc, nc, values, j.index, j.nv};
+    if (rec) rec->begin[q] = static_cast<int32_t>(rec->slot.size());
     for (int k = 0; k < L; ++k) {
       const TileGaussian<T>& g = list[sub[k]];
       const V power = gaussian_power(g.mean2d, g.conic, cx, cy);
@@ -300,16 +387,13 @@ template <class T, int kC, int kBytes>
       const M stop = pass & lane_less<kBytes>(test_T, V{} + T(kTransmittanceMin));
       pass &= ~stop;
       const V w = lane_select<kBytes>(pass, a * Tr, V{});
-      const T* v = values + static_cast<size_t>(g.id) * j.nv;
       if (kC > 0) {
+        const T* v = values + static_cast<size_t>(g.id) * j.nv;
         for (int c = 0; c < nc; ++c) acc[c] += lane_select<kBytes>(pass, w * v[c], V{});
-      } else if (j.index) {  // sparse: w = 0 in the lanes that do not pass
-        const int32_t* idx = j.index + static_cast<size_t>(g.id) * j.nv;
-        for (int k = 0; k < j.nv; ++k) lane_add_scaled<kBytes>(acc[idx[k]], w, v[k]);
-      } else {  // (a NaN value reaches the sub-tile's other lanes here: NaN features are an error upstream)
-        batch_w[batched] = w, batch_v[batched++] = v;
-        if (batched == kBatch) add_weighted_values<kBytes>(acc, batch_w, batch_v, batched, nc), batched = 0;
+      } else {
+        add_value_sums<kBytes>(sums, w, g.id);
       }
+      if (rec && any_lane(pass)) record_entry<T>(*rec, sub[k], w);
       d += w * g.depth;
       Tr = lane_select<kBytes>(pass, test_T, Tr);
       last = lane_select<kBytes>(pass, M{} + (k + 1), last);
@@ -318,28 +402,63 @@ template <class T, int kC, int kBytes>
         if (!any_lane(live)) break;
       }
     }
-    add_weighted_values<kBytes>(acc, batch_w, batch_v, batched, nc);
-    if (n_cos > 0) {
-      if (L > 0)
-        lane_cosines<kBytes>(acc, nc, j.cosines, &s.cosine[0].v);
-      else  // nothing blended: cosine 0
-        for (int q = 0; q < n_cos; ++q) s.cosine[q].v = V{};
-    }
+    if (kC == 0) finish_value_sums<kBytes>(sums);
+    if (rec) rec->end[q] = static_cast<int32_t>(rec->slot.size());
+    write_subtile_image<kBytes>(acc, nc, Tr, j.bg, kC > 0 ? ChannelCosines<T>{} : j.cosines, L > 0, s, pixel, j.image);
     for (int l = 0; l < kLanes; ++l) {
-      const int64_t pix = lane_pixel(sx, sy, l, x1, y1, cam.width);
+      const int64_t pix = pixel[l];
       if (pix < 0) continue;
-      if (n_cos > 0) {
-        T* out = j.image + pix * n_cos;
-        for (int q = 0; q < n_cos; ++q) out[q] = s.cosine[q].v[l];
-      } else {
-        T* out = j.image + pix * nc;
-        for (int c = 0; c < nc; ++c) out[c] = acc[c][l] + (j.bg ? Tr[l] * j.bg[c] : T(0));
-      }
       j.alpha_out[pix] = T(1) - Tr[l];
       j.depth_out[pix] = d[l];
       j.final_T[pix] = Tr[l];
       j.n_contrib[pix] = static_cast<int32_t>(last[l]);  // entries of the sub-tile list walked
     }
+  }
+  if (rec) finish_recorded_tile<T>(*rec, list, s.slot_of);
+}
+
+// The forward of one tile from recorded weights (forward_tile's sums without the walk). Run-time channel
+// counts only.
+template <class T>
+struct RecordedForwardJob {
+  const BlendWeights<T>& bw;
+  const T* values;
+  int C;
+  const T* bg;
+  const int32_t* index;
+  int nv;
+  ChannelCosines<T> cosines;
+  T* image;
+};
+
+template <class T, int kBytes>
+[[gnu::always_inline]] inline void recorded_forward_tile(const RecordedForwardJob<T>& j, int tile, TileScratch<T>& s) {
+  using V = Lanes<T>;
+  const SplatCamera<T>& cam = j.bw.cam;
+  const typename BlendWeights<T>::Tile& rec = j.bw.tiles[tile];
+  const int tx = tile % cam.tiles_x(), ty = tile / cam.tiles_x();
+  const int x0 = tx * kTileSize, y0 = ty * kTileSize;
+  const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
+  s.acc.resize(j.C);
+  V* const acc = &s.acc[0].v;
+  for (int sy = y0; sy < y1; sy += kSubTile)
+  for (int sx = x0; sx < x1; sx += kSubTile) {
+    const int q = (sy - y0) / kSubTile * kSubTilesPerSide + (sx - x0) / kSubTile;
+    int64_t pixel[kLanes];
+    V Tr;
+    for (int l = 0; l < kLanes; ++l) {
+      pixel[l] = lane_pixel(sx, sy, l, x1, y1, cam.width);
+      Tr[l] = pixel[l] < 0 ? T(1) : j.bw.final_T[pixel[l]];
+    }
+    for (int c = 0; c < j.C; ++c) acc[c] = V{};
+    ValueSums<T> sums{acc, j.C, j.values, j.index, j.nv};
+    for (int e = rec.begin[q]; e < rec.end[q]; ++e) {
+      V w;
+      std::memcpy(&w, rec.weights.data() + static_cast<size_t>(e) * kLanes, sizeof(w));
+      add_value_sums<kBytes>(sums, w, rec.ids[rec.slot[e]]);
+    }
+    finish_value_sums<kBytes>(sums);
+    write_subtile_image<kBytes>(acc, j.C, Tr, j.bg, j.cosines, rec.end[q] > rec.begin[q], s, pixel, j.image);
   }
 }
 
@@ -382,6 +501,90 @@ template <int kBytes, class T>
     for (int k = 0; k < n; ++k) value_grad[c] += weights[k] * rows[k][c];
 }
 
+// dL/dimage of a sub-tile's pixels per channel across the lanes (dpix[c][l]), 0 in the pixels outside the
+// image or nothing was blended into (`covered`): the lane sums multiply by w = 0 there rather than select (a
+// select per sum costs the RGB backward ~20 %), and an inf or NaN there (a loss divided by alpha) would reach
+// the Gaussians of the other lanes.
+template <class T>
+[[gnu::always_inline]] inline void load_pixel_grads(const T* dL_dimage, int nc, int l, int64_t pix, bool covered,
+                                                    Lanes<T>* dpix) {
+  for (int c = 0; c < nc; ++c) dpix[c][l] = covered ? dL_dimage[pix * nc + c] : T(0);
+}
+
+// Where a backward's per-entry value sums go (run-time channel counts): value_buf rows per entry, each value's
+// lanes for sparse values (summed over the lanes once per entry and tile by finish_entry_value_grads), else
+// the sums themselves (add_lane_rows). The walk and the recorded weights' backward share these, so their
+// gradients agree to the bit on one thread.
+template <class T>
+struct EntryValueGrads {
+  const T* dL_dimage;
+  const int32_t* index;  // sparse: the values' channels, else null
+  int nv, nc;
+  LaneRow<T>* rows;      // TileScratch::value_buf
+  int VS;                // rows per entry
+  T* sums(int k) const { return reinterpret_cast<T*>(rows + static_cast<size_t>(k) * VS); }
+};
+template <class T>
+EntryValueGrads<T> entry_value_grads(const T* dL_dimage, const int32_t* index, int nv, int nc, int entries,
+                                     TileScratch<T>& s) {
+  const int VS = index ? nv : (nv + kLanes - 1) / kLanes;
+  if (index)  // an entry's rows are set when it is first touched
+    s.value_buf.resize(static_cast<size_t>(entries) * VS);
+  else
+    s.value_buf.assign(static_cast<size_t>(entries) * VS, LaneRow<T>{});
+  return {dL_dimage, index, nv, nc, s.value_buf.data(), VS};
+}
+// Entry k of Gaussian `id` with weights w (0 outside `pass`) in a sub-tile whose pixels' gradients are dpix.
+template <int kBytes, class T>
+[[gnu::always_inline]] inline void add_entry_value_grads(const EntryValueGrads<T>& g, int k, int32_t id, bool first,
+                                                         const Lanes<T>& w, const LaneMask<T>& pass,
+                                                         const Lanes<T>* dpix, const int64_t* pixel) {
+  if (g.index) {  // each value's channel per lane (w = 0 where not passing)
+    const int32_t* idx = g.index + static_cast<size_t>(id) * g.nv;
+    LaneRow<T>* rows = g.rows + static_cast<size_t>(k) * g.nv;
+    for (int c = 0; c < g.nv; ++c) rows[c].v = (first ? Lanes<T>{} : rows[c].v) + w * dpix[idx[c]];
+  } else {
+    add_lane_rows<kBytes>(w, pass, g.dL_dimage, pixel, g.nc, g.sums(k));
+  }
+}
+// Entry k's value gradients, summed over the lanes (sparse: each value's lanes, into the entry's first rows).
+template <class T>
+[[gnu::always_inline]] inline const T* finish_entry_value_grads(const EntryValueGrads<T>& g, int k) {
+  T* sums = g.sums(k);
+  if (g.index) {
+    const LaneRow<T>* rows = g.rows + static_cast<size_t>(k) * g.nv;
+    for (int c0 = 0; c0 < g.nv; c0 += kLanes) {
+      Lanes<T> r[kLanes] = {};
+      const int n = std::min(kLanes, g.nv - c0);
+      for (int c = 0; c < n; ++c) r[c] = rows[c0 + c].v;
+      const Lanes<T> total = lane_sums(r);
+      for (int c = 0; c < n; ++c) sums[c0 + c] = total[c];
+    }
+  }
+  return sums;
+}
+
+// Adds Gaussian id's sums: geometry (9; null without geometry gradients) and nv values.
+template <class T>
+[[gnu::always_inline]] inline void add_gaussian_grads(const GradientSink<T>& out, int32_t id, const T* geom, const T* values,
+                                                      int nv) {
+  if (out.thread_value_grad) {  // no geometry: this thread's own sums
+    T* vg = out.thread_value_grad + omp_get_thread_num() * out.thread_stride + static_cast<size_t>(id) * nv;
+#pragma omp simd
+    for (int c = 0; c < nv; ++c) vg[c] += values[c];
+    return;
+  }
+  out.locks.lock(id);
+  if (geom) {
+    T* gg = out.geom_grad + static_cast<size_t>(id) * 9;
+    for (int c = 0; c < 9; ++c) gg[c] += geom[c];
+  }
+  T* vg = out.value_grad + static_cast<size_t>(id) * nv;
+#pragma omp simd
+  for (int c = 0; c < nv; ++c) vg[c] += values[c];
+  out.locks.unlock(id);
+}
+
 template <class T, int kC, int kBytes>
 [[gnu::always_inline]] inline void backward_tile(const BackwardTileJob<T>& j, int tile, TileScratch<T>& s) {
   using V = Lanes<T>;
@@ -391,7 +594,7 @@ template <class T, int kC, int kBytes>
   const T* const values = j.values;
   const T* const dL_dimage = j.dL_dimage;
   const T* const bg = j.bg;
-  const bool geometry = j.geom_grad != nullptr;
+  const bool geometry = j.sink.geom_grad != nullptr;
   std::vector<T>& buf = s.buf;
   std::vector<uint8_t>& touched = s.touched;
   std::vector<TileGaussian<T>>& list = s.list;
@@ -399,9 +602,6 @@ template <class T, int kC, int kBytes>
   const int nc = kC > 0 ? kC : j.C;
   const int S = 9 + kC;
   const int nv = j.nv;
-  const bool sparse = kC == 0 && j.index;
-  // value_buf rows per entry: the sums, or a sparse entry's lanes per value
-  const int VS = kC > 0 ? 0 : sparse ? nv : (nv + kLanes - 1) / kLanes;
   const int tx = tile % cam.tiles_x(), ty = tile / cam.tiles_x();
   const int x0 = tx * kTileSize, y0 = ty * kTileSize;
   const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
@@ -410,12 +610,8 @@ template <class T, int kC, int kBytes>
   if (L == 0) return;
   subtile_lists(list, x0, y0, s.sub);
   buf.assign(static_cast<size_t>(L) * S, T(0));
-  if (sparse)  // an entry's rows are set when it is first touched
-    s.value_buf.resize(static_cast<size_t>(L) * VS);
-  else if (kC == 0)
-    s.value_buf.assign(static_cast<size_t>(L) * VS, LaneRow<T>{});
-  T* const value_sums = kC == 0 ? reinterpret_cast<T*>(s.value_buf.data()) : nullptr;
-  auto values_of = [&](int k) { return value_sums + static_cast<size_t>(k) * VS * kLanes; };  // entry k's sums
+  const EntryValueGrads<T> vgrads =
+      kC == 0 ? entry_value_grads(dL_dimage, j.index, nv, nc, L, s) : EntryValueGrads<T>{};
   touched.assign(L, 0);
   // dL/dimage per channel across the lanes (registers for RGB)
   V dpix_fixed[kC > 0 ? kC : 1];
@@ -433,20 +629,48 @@ template <class T, int kC, int kBytes>
       n_lane[l] = pix < 0 ? 0 : st.n_contrib[pix];
       n_max = std::max(n_max, static_cast<int>(n_lane[l]));
       T_final[l] = pix < 0 ? T(1) : st.final_T[pix];
-      // Pixels nothing was blended into read as 0: the lane sums below multiply by w = 0 rather than
-      // select (a select per sum costs the RGB backward ~20 %), and an inf or NaN there (a loss divided
-      // by alpha) would reach the Gaussians of the other lanes.
       const bool covered = n_lane[l] > 0;
       dA[l] = covered && j.dL_dalpha ? j.dL_dalpha[pix] : T(0);
       dD[l] = covered && j.dL_ddepth ? j.dL_ddepth[pix] : T(0);
+      load_pixel_grads(dL_dimage, nc, l, pix, covered, dpix);
       bg_dot[l] = T(0);
-      for (int c = 0; c < nc; ++c) {
-        dpix[c][l] = covered ? dL_dimage[pix * nc + c] : T(0);
-        if (bg) bg_dot[l] += bg[c] * dpix[c][l];
-      }
+      if (bg)
+        for (int c = 0; c < nc; ++c) bg_dot[l] += bg[c] * dpix[c][l];
     }
     if (n_max == 0) continue;
     const int32_t* const sub = s.sub.row((sy - y0) / kSubTile * kSubTilesPerSide + (sx - x0) / kSubTile);
+    // The values' part of entry k's gradients, w its lanes' alpha T (0 outside pass).
+    auto add_values = [&](int k, const TileGaussian<T>& g, const V& w, const M& pass, V* q) {
+      const bool first = !touched[k];
+      touched[k] = 1;
+      if (kC > 0) {  // summed over the lanes with the geometry's
+        for (int c = 0; c < kC; ++c) q[9 + c] = w * dpix[c];
+        const V sums = lane_sums(q);
+        T* e = buf.data() + static_cast<size_t>(k) * S;
+        for (int i = 0; i < 9 + kC; ++i) e[i] += sums[i];
+      } else {
+        add_entry_value_grads<kBytes>(vgrads, k, g.id, first, w, pass, dpix, pixel);
+      }
+    };
+    if (!geometry) {
+      // Only w = alpha T per lane: front to back as the forward blended, with its arithmetic (the same w, so
+      // recorded weights give the same gradients), to each lane's last contributor (no stop before it).
+      V Tr = V{} + T(1);
+      for (int jj = 0; jj < n_max; ++jj) {
+        const int k = sub[jj];
+        const TileGaussian<T>& g = list[k];
+        const V power = gaussian_power(g.mean2d, g.conic, cx, cy);
+        M pass = (jj - n_lane) >> 31;  // jj < n_lane (a sign bit: see below)
+        V G;
+        const V a = lane_alpha<kBytes>(power, g.opacity, pass, G);
+        if (!any_lane(pass)) continue;
+        const V w = lane_select<kBytes>(pass, a * Tr, V{});
+        Tr = lane_select<kBytes>(pass, Tr * (T(1) - a), Tr);
+        V q[kLanes] = {};
+        add_values(k, g, w, pass, q);
+      }
+      continue;
+    }
     V Tr = T_final, last_alpha = V{}, rec_d = V{}, last_d = V{}, rec_dot = V{}, last_v_dot = V{};
     for (int jj = n_max - 1; jj >= 0; --jj) {
       const int k = sub[jj];
@@ -463,89 +687,100 @@ template <class T, int kC, int kBytes>
       const V inv_one_minus_a = T(1) / one_minus_a;
       Tr = Tr * inv_one_minus_a;
       const V w = a * Tr;
-      T* e = buf.data() + static_cast<size_t>(k) * S;
-      const bool first = !touched[k];
-      touched[k] = 1;
       V q[kLanes] = {};  // this entry's gradients per lane in buf's order (a few channels included)
-      if (geometry) {
-        const T* v = values + static_cast<size_t>(g.id) * nv;
-        // dC/dalpha_i . dL/dC = T_i (v_i - rec_i) . dpix, where rec_i = sum over later contributors j of
-        // v_j alpha_j prod_{i<l<j} (1 - alpha_l). rec is linear in the values, so only its dot product
-        // with dpix is carried: rec_dot_i = a_{i+1} (v_{i+1} . dpix) + (1 - a_{i+1}) rec_dot_{i+1}.
-        V v_dot = V{};
-        if (kC > 0) {
-          for (int c = 0; c < nc; ++c) lane_add_scaled<kBytes>(v_dot, dpix[c], v[c]);
-        } else if (j.index) {
-          const int32_t* idx = j.index + static_cast<size_t>(g.id) * nv;
-          for (int c = 0; c < nv; ++c) lane_add_scaled<kBytes>(v_dot, dpix[idx[c]], v[c]);
-        } else {  // four partial sums: one would wait on the previous multiply-add every channel
-          V part[4] = {};
-          int c = 0;
-          for (; c + 4 <= nc; c += 4)
-            for (int q = 0; q < 4; ++q) lane_add_scaled<kBytes>(part[q], dpix[c + q], v[c + q]);
-          for (; c < nc; ++c) lane_add_scaled<kBytes>(part[0], dpix[c], v[c]);
-          v_dot = (part[0] + part[1]) + (part[2] + part[3]);
-        }
-        rec_dot = lane_select<kBytes>(pass, last_alpha * last_v_dot + (T(1) - last_alpha) * rec_dot, rec_dot);
-        last_v_dot = lane_select<kBytes>(pass, v_dot, last_v_dot);
-        V dL_da = v_dot - rec_dot;
-        rec_d = lane_select<kBytes>(pass, last_alpha * last_d + (T(1) - last_alpha) * rec_d, rec_d);
-        last_d = lane_select<kBytes>(pass, V{} + g.depth, last_d);
-        dL_da += (g.depth - rec_d) * dD;
-        dL_da *= Tr;
-        // alpha = 1 - T_final and the background term T_final * bg: dT_final/dalpha = -T_final/(1-alpha)
-        dL_da += (dA - bg_dot) * T_final * inv_one_minus_a;
-        last_alpha = lane_select<kBytes>(pass, a, last_alpha);
-        lane_alpha_backward<kBytes>(g.mean2d, g.conic, g.opacity, cx, cy, G, dL_da, pass, q);
-        q[8] = w * dD;  // w = 0 where the lane does not contribute
-      }
-      // summed over the lanes
-      for (int c = 0; c < kC; ++c) q[9 + c] = w * dpix[c];
-      if (geometry || kC > 0) {
-        const V sums = lane_sums(q);
-        for (int i = 0; i < 9 + kC; ++i) e[i] += sums[i];
-      }
-      if (sparse) {  // sparse: each value's channel per lane (w = 0 where not passing)
+      const T* v = values + static_cast<size_t>(g.id) * nv;
+      // dC/dalpha_i . dL/dC = T_i (v_i - rec_i) . dpix, where rec_i = sum over later contributors j of
+      // v_j alpha_j prod_{i<l<j} (1 - alpha_l). rec is linear in the values, so only its dot product
+      // with dpix is carried: rec_dot_i = a_{i+1} (v_{i+1} . dpix) + (1 - a_{i+1}) rec_dot_{i+1}.
+      V v_dot = V{};
+      if (kC > 0) {
+        for (int c = 0; c < nc; ++c) lane_add_scaled<kBytes>(v_dot, dpix[c], v[c]);
+      } else if (j.index) {
         const int32_t* idx = j.index + static_cast<size_t>(g.id) * nv;
-        LaneRow<T>* rows = s.value_buf.data() + static_cast<size_t>(k) * nv;
-        for (int c = 0; c < nv; ++c) rows[c].v = (first ? V{} : rows[c].v) + w * dpix[idx[c]];
-      } else if (kC == 0) {
-        add_lane_rows<kBytes>(w, pass, dL_dimage, pixel, nc, values_of(k));
+        for (int c = 0; c < nv; ++c) lane_add_scaled<kBytes>(v_dot, dpix[idx[c]], v[c]);
+      } else {  // four partial sums: one would wait on the previous multiply-add every channel
+        V part[4] = {};
+        int c = 0;
+        for (; c + 4 <= nc; c += 4)
+          for (int q = 0; q < 4; ++q) lane_add_scaled<kBytes>(part[q], dpix[c + q], v[c + q]);
+        for (; c < nc; ++c) lane_add_scaled<kBytes>(part[0], dpix[c], v[c]);
+        v_dot = (part[0] + part[1]) + (part[2] + part[3]);
       }
+      rec_dot = lane_select<kBytes>(pass, last_alpha * last_v_dot + (T(1) - last_alpha) * rec_dot, rec_dot);
+      last_v_dot = lane_select<kBytes>(pass, v_dot, last_v_dot);
+      V dL_da = v_dot - rec_dot;
+      rec_d = lane_select<kBytes>(pass, last_alpha * last_d + (T(1) - last_alpha) * rec_d, rec_d);
+      last_d = lane_select<kBytes>(pass, V{} + g.depth, last_d);
+      dL_da += (g.depth - rec_d) * dD;
+      dL_da *= Tr;
+      // alpha = 1 - T_final and the background term T_final * bg: dT_final/dalpha = -T_final/(1-alpha)
+      dL_da += (dA - bg_dot) * T_final * inv_one_minus_a;
+      last_alpha = lane_select<kBytes>(pass, a, last_alpha);
+      lane_alpha_backward<kBytes>(g.mean2d, g.conic, g.opacity, cx, cy, G, dL_da, pass, q);
+      q[8] = w * dD;  // w = 0 where the lane does not contribute
+      if (kC == 0) {  // the geometry's sums; the values' below
+        const V sums = lane_sums(q);
+        T* e = buf.data() + static_cast<size_t>(k) * S;
+        for (int i = 0; i < 9; ++i) e[i] += sums[i];
+      }
+      add_values(k, g, w, pass, q);
     }
   }
   for (int k = 0; k < L; ++k) {
     if (!touched[k]) continue;
-    if (sparse) {  // each value's lanes summed, into the entry's first rows
-      LaneRow<T>* rows = s.value_buf.data() + static_cast<size_t>(k) * nv;
-      T* sums = values_of(k);
-      for (int c0 = 0; c0 < nv; c0 += kLanes) {
-        V r[kLanes] = {};
-        const int n = std::min(kLanes, nv - c0);
-        for (int c = 0; c < n; ++c) r[c] = rows[c0 + c].v;
-        const V total = lane_sums(r);
-        for (int c = 0; c < n; ++c) sums[c0 + c] = total[c];
-      }
-    }
-    const int id = list[k].id;
     const T* e = buf.data() + static_cast<size_t>(k) * S;
-    const T* ev = kC > 0 ? e + 9 : values_of(k);
-    if (j.thread_value_grad) {  // no geometry: this thread's own sums
-      T* vg = j.thread_value_grad + omp_get_thread_num() * j.thread_stride + static_cast<size_t>(id) * nv;
-#pragma omp simd
-      for (int c = 0; c < nv; ++c) vg[c] += ev[c];
-      continue;
-    }
-    j.locks.lock(id);
-    if (geometry) {
-      T* gg = j.geom_grad + static_cast<size_t>(id) * 9;
-      for (int c = 0; c < 9; ++c) gg[c] += e[c];
-    }
-    T* vg = j.value_grad + static_cast<size_t>(id) * nv;
-#pragma omp simd
-    for (int c = 0; c < nv; ++c) vg[c] += ev[c];
-    j.locks.unlock(id);
+    add_gaussian_grads(j.sink, list[k].id, geometry ? e : nullptr, kC > 0 ? e + 9 : finish_entry_value_grads(vgrads, k),
+                       nv);
   }
+}
+
+// The backward of one tile from recorded weights (backward_tile's value gradients without the walk). Run-time
+// channel counts only.
+template <class T>
+struct RecordedBackwardJob {
+  const BlendWeights<T>& bw;
+  int C;
+  const int32_t* index;
+  int nv;
+  const T* dL_dimage;
+  GradientSink<T> sink;
+};
+
+template <class T, int kBytes>
+[[gnu::always_inline]] inline void recorded_backward_tile(const RecordedBackwardJob<T>& j, int tile, TileScratch<T>& s) {
+  using V = Lanes<T>;
+  const SplatCamera<T>& cam = j.bw.cam;
+  const typename BlendWeights<T>::Tile& rec = j.bw.tiles[tile];
+  const int n_ids = static_cast<int>(rec.ids.size());
+  if (n_ids == 0) return;
+  const int tx = tile % cam.tiles_x(), ty = tile / cam.tiles_x();
+  const int x0 = tx * kTileSize, y0 = ty * kTileSize;
+  const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
+  const EntryValueGrads<T> vgrads = entry_value_grads(j.dL_dimage, j.index, j.nv, j.C, n_ids, s);
+  s.touched.assign(n_ids, 0);
+  s.dpix.resize(j.C);
+  V* const dpix = &s.dpix.data()->v;
+  for (int sy = y0; sy < y1; sy += kSubTile)
+  for (int sx = x0; sx < x1; sx += kSubTile) {
+    const int q = (sy - y0) / kSubTile * kSubTilesPerSide + (sx - x0) / kSubTile;
+    if (rec.end[q] == rec.begin[q]) continue;
+    int64_t pixel[kLanes];
+    for (int l = 0; l < kLanes; ++l) {
+      const int64_t pix = pixel[l] = lane_pixel(sx, sy, l, x1, y1, cam.width);
+      // blended into (the walk's n_contrib > 0): each entry that adds lowers T below 1
+      load_pixel_grads(j.dL_dimage, j.C, l, pix, pix >= 0 && j.bw.final_T[pix] < T(1), dpix);
+    }
+    for (int e = rec.begin[q]; e < rec.end[q]; ++e) {
+      V w;
+      std::memcpy(&w, rec.weights.data() + static_cast<size_t>(e) * kLanes, sizeof(w));
+      const int k = rec.slot[e];
+      const bool first = !s.touched[k];
+      s.touched[k] = 1;
+      add_entry_value_grads<kBytes>(vgrads, k, rec.ids[k], first, w, lane_less<kBytes>(V{}, w), dpix, pixel);
+    }
+  }
+  for (int k = 0; k < n_ids; ++k) add_gaussian_grads(j.sink, rec.ids[k], static_cast<const T*>(nullptr),
+                                                     finish_entry_value_grads(vgrads, k), j.nv);
 }
 
 // The tile kernels per instruction set. The 16 pixel lanes run as 4 registers in the x86-64 baseline (SSE2),
@@ -565,6 +800,14 @@ using BackwardTileFn = void (*)(const BackwardTileJob<T>&, int, TileScratch<T>&)
   template <class T, int kC>                                                                             \
   ATTRIBUTE void backward_tile_##NAME(const BackwardTileJob<T>& j, int tile, TileScratch<T>& s) {        \
     backward_tile<T, kC, REGISTER_BYTES>(j, tile, s);                                                    \
+  }                                                                                                      \
+  template <class T>                                                                                     \
+  ATTRIBUTE void recorded_forward_tile_##NAME(const RecordedForwardJob<T>& j, int tile, TileScratch<T>& s) { \
+    recorded_forward_tile<T, REGISTER_BYTES>(j, tile, s);                                                \
+  }                                                                                                      \
+  template <class T>                                                                                     \
+  ATTRIBUTE void recorded_backward_tile_##NAME(const RecordedBackwardJob<T>& j, int tile, TileScratch<T>& s) { \
+    recorded_backward_tile<T, REGISTER_BYTES>(j, tile, s);                                               \
   }
 CLS_TILE_KERNELS(baseline, , 16)
 #if CLS_X86_KERNELS
@@ -581,6 +824,21 @@ std::pair<ForwardTileFn<T>, BackwardTileFn<T>> tile_kernels_for(CpuKernels k) {
 #endif
   (void)k;
   return {&forward_tile_baseline<T, kC>, &backward_tile_baseline<T, kC>};
+}
+
+template <class T>
+using RecordedForwardFn = void (*)(const RecordedForwardJob<T>&, int, TileScratch<T>&);
+template <class T>
+using RecordedBackwardFn = void (*)(const RecordedBackwardJob<T>&, int, TileScratch<T>&);
+
+template <class T>
+std::pair<RecordedForwardFn<T>, RecordedBackwardFn<T>> recorded_tile_kernels() {
+#if CLS_X86_KERNELS
+  const CpuKernels k = cpu_kernels();
+  if (k == CpuKernels::X86_64_V4) return {&recorded_forward_tile_v4<T>, &recorded_backward_tile_v4<T>};
+  if (k == CpuKernels::X86_64_V3) return {&recorded_forward_tile_v3<T>, &recorded_backward_tile_v3<T>};
+#endif
+  return {&recorded_forward_tile_baseline<T>, &recorded_backward_tile_baseline<T>};
 }
 
 // RGB and one channel have their own fixed-size builds; other counts loop at run time.
@@ -734,7 +992,7 @@ SplatCamera<T> make_splat_camera(const PinholeCamera& cam, const Pose& pose) {
 
 template <class T>
 void rasterize_forward_cpu(const SplatCamera<T>& cam, const SplatInputs<T>& in, T* image, T* alpha, T* depth,
-                           SplatForwardState<T>& st) {
+                           SplatForwardState<T>& st, BlendWeights<T>* record) {
   const int N = in.n;
   const bool sh = in.use_sh();
   const int C = sh ? 3 : in.channels;
@@ -771,10 +1029,94 @@ void rasterize_forward_cpu(const SplatCamera<T>& cam, const SplatInputs<T>& in, 
   st.n_contrib.resize(n_pix);
   const T* values = sh ? st.colors.data() : in.features;
   const std::vector<TileGaussian<T>> gaussians = tile_gaussians(st, in.opacities);
+  if (record) {
+    record->cam = cam;
+    record->n = N;
+    record->tiles.assign(static_cast<size_t>(cam.tiles_x()) * cam.tiles_y(), {});
+  }
   const ForwardTileJob<T> job{{cam, st, gaussians.data(), values, C, in.background, in.feature_index, value_count(in)},
-                              image, alpha, depth, st.final_T.data(), st.n_contrib.data(), in.cosines};
+                              image, alpha, depth, st.final_T.data(), st.n_contrib.data(), in.cosines, record};
   const ForwardTileFn<T> forward_tile_fn = tile_kernels<T>(in.feature_index || in.cosines.count > 0 ? 0 : C).first;
   run_tiles(cam, forward_tile_fn, job);
+  if (record) {
+    record->final_T = st.final_T;
+    record->depth.assign(depth, depth + n_pix);
+    record->radii.resize(N);
+    for (int i = 0; i < N; ++i) record->radii[i] = st.proj[i].visible ? st.proj[i].radius : 0;
+  }
+}
+
+template <class T>
+size_t BlendWeights<T>::bytes() const {
+  size_t b = (final_T.size() + depth.size()) * sizeof(T) + radii.size() * sizeof(int32_t) + tiles.size() * sizeof(Tile);
+  for (const Tile& t : tiles) b += (t.ids.size() + t.slot.size()) * sizeof(int32_t) + t.weights.size() * sizeof(T);
+  return b;
+}
+
+namespace {
+
+// The inputs recorded weights can serve: features of the recorded Gaussians.
+template <class T>
+void check_recorded(const BlendWeights<T>& bw, const SplatInputs<T>& in, const char* what) {
+  static_assert(BlendWeights<T>::kLanes == kLanes && BlendWeights<T>::kSubTiles == kSubTilesPerTile,
+                "recorded lanes are the tile kernels' lanes");
+  if (in.use_sh() || !in.features) throw std::invalid_argument(std::string(what) + ": features only, not SH");
+  if (in.n != bw.n)
+    throw std::invalid_argument(std::string(what) + ": the weights were recorded for " + std::to_string(bw.n) +
+                                " Gaussians, not " + std::to_string(in.n));
+}
+
+// Where a backward without geometry gradients sums sparse values: a copy of the values' gradients per thread.
+// Taking a striped lock per entry and tile took a fifth of the sparse backward (not the flags' sharing of
+// cache lines: a cache line per flag ran no faster, docs/benchmarks.md). Up to kThreadCopiesBytes of copies
+// (2M Gaussians of K 4 on 2 threads): their memory, zeroing and sum grow with threads x Gaussians, the locks'
+// cost with the entries (beyond it the locks, not measured against copies). Empty: the locks.
+template <class T>
+std::vector<T> thread_value_copies(bool geometry, const SplatInputs<T>& in) {
+  constexpr size_t kThreadCopiesBytes = size_t(64) << 20;
+  const size_t value_rows = static_cast<size_t>(in.n) * value_count(in);
+  const int threads = omp_get_max_threads();
+  const bool copies = !geometry && in.feature_index && threads > 1 &&
+                      threads * value_rows * sizeof(T) <= kThreadCopiesBytes;
+  return std::vector<T>(copies ? threads * value_rows : 0, T(0));
+}
+
+// value_grad += the threads' copies.
+template <class T>
+void add_thread_copies(const std::vector<T>& copies, size_t value_rows, T* value_grad) {
+  if (copies.empty()) return;
+  const int threads = static_cast<int>(copies.size() / value_rows);
+#pragma omp parallel for schedule(static)
+  for (size_t i = 0; i < value_rows; ++i)
+    for (int t = 0; t < threads; ++t) value_grad[i] += copies[t * value_rows + i];
+}
+
+}  // namespace
+
+template <class T>
+void rasterize_forward_recorded_cpu(const BlendWeights<T>& bw, const SplatInputs<T>& in, T* image, T* alpha,
+                                    T* depth) {
+  check_recorded(bw, in, "rasterize_forward_recorded_cpu");
+  const size_t n_pix = bw.final_T.size();
+  for (size_t p = 0; p < n_pix; ++p) alpha[p] = T(1) - bw.final_T[p];
+  std::copy(bw.depth.begin(), bw.depth.end(), depth);
+  const RecordedForwardJob<T> job{bw, in.features, in.channels, in.background, in.feature_index, value_count(in),
+                                  in.cosines, image};
+  run_tiles(bw.cam, recorded_tile_kernels<T>().first, job);
+}
+
+template <class T>
+void rasterize_backward_recorded_cpu(const BlendWeights<T>& bw, const SplatInputs<T>& in, const T* dL_dimage,
+                                     T* features_grad) {
+  check_recorded(bw, in, "rasterize_backward_recorded_cpu");
+  if (in.cosines.count > 0) throw std::invalid_argument("rasterize_backward_recorded_cpu: cosines have no backward");
+  StripedLocks locks;
+  std::vector<T> copies = thread_value_copies(false, in);
+  const size_t value_rows = static_cast<size_t>(in.n) * value_count(in);
+  const RecordedBackwardJob<T> job{bw, in.channels, in.feature_index, value_count(in), dL_dimage,
+                                   {nullptr, features_grad, locks, copies.empty() ? nullptr : copies.data(), value_rows}};
+  run_tiles(bw.cam, recorded_tile_kernels<T>().second, job);
+  add_thread_copies(copies, value_rows, features_grad);
 }
 
 template <class T>
@@ -806,28 +1148,16 @@ void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>
   }
   const T* values = sh ? st.colors.data() : in.features;
   StripedLocks locks;
-  // Sparse values on frozen geometry (a sparse language field) sum into a copy of the values' gradients per
-  // thread: taking a striped lock per entry and tile took a fifth of that backward (not the flags' sharing of
-  // cache lines: a cache line per flag ran no faster, docs/benchmarks.md). Up to kThreadCopiesBytes of copies
-  // (2M Gaussians of K 4 on 2 threads): their memory, zeroing and sum grow with threads x Gaussians, the locks'
-  // cost with the entries (beyond it the locks, not measured against copies).
-  constexpr size_t kThreadCopiesBytes = size_t(64) << 20;
+  std::vector<T> copies = thread_value_copies(geometry, in);
   const size_t value_rows = static_cast<size_t>(N) * value_count(in);
-  const int threads = omp_get_max_threads();
-  const bool copies = !geometry && in.feature_index && threads > 1 &&
-                      threads * value_rows * sizeof(T) <= kThreadCopiesBytes;
-  std::vector<T> thread_values(copies ? threads * value_rows : 0, T(0));
   const std::vector<TileGaussian<T>> gaussians = tile_gaussians(st, in.opacities);
   const BackwardTileJob<T> job{{cam, st, gaussians.data(), values, C, in.background, in.feature_index, value_count(in)},
-                               dL_dimage, dL_dalpha, dL_ddepth, geometry ? geom.data() : nullptr, value_grad, locks,
-                               thread_values.empty() ? nullptr : thread_values.data(), value_rows};
+                               dL_dimage, dL_dalpha, dL_ddepth,
+                               {geometry ? geom.data() : nullptr, value_grad, locks,
+                                copies.empty() ? nullptr : copies.data(), value_rows}};
   const BackwardTileFn<T> backward_tile_fn = tile_kernels<T>(in.feature_index ? 0 : C).second;
   run_tiles(cam, backward_tile_fn, job);
-  if (!thread_values.empty()) {
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < value_rows; ++i)
-      for (int t = 0; t < threads; ++t) value_grad[i] += thread_values[t * value_rows + i];
-  }
+  add_thread_copies(copies, value_rows, value_grad);
   // per Gaussian: screen-space gradients -> 3D parameters (preprocess backward)
   const Vec3<T> campos = cam.center();
 #pragma omp parallel for schedule(static)
@@ -864,7 +1194,10 @@ void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>
 #define CLS_INSTANTIATE_SPLAT(T)                                                                         \
   template SplatCamera<T> make_splat_camera<T>(const PinholeCamera&, const Pose&);                       \
   template void rasterize_forward_cpu<T>(const SplatCamera<T>&, const SplatInputs<T>&, T*, T*, T*,       \
-                                         SplatForwardState<T>&);                                         \
+                                         SplatForwardState<T>&, BlendWeights<T>*);                       \
+  template struct BlendWeights<T>;                                                                       \
+  template void rasterize_forward_recorded_cpu<T>(const BlendWeights<T>&, const SplatInputs<T>&, T*, T*, T*); \
+  template void rasterize_backward_recorded_cpu<T>(const BlendWeights<T>&, const SplatInputs<T>&, const T*, T*); \
   template void rasterize_backward_cpu<T>(const SplatInputs<T>&, const SplatForwardState<T>&, const T*, \
                                           const T*, const T*, SplatGradients<T>&);
 CLS_INSTANTIATE_SPLAT(float)

@@ -14,8 +14,9 @@ struct TorchScene {
   bool sh = true;
 };
 
-inline TorchScene torch_scene(bool use_sh, int channels, unsigned seed, torch::Dtype dtype) {
-  const auto s = test::random_scene(10, 36, 34, channels, use_sh, seed, 0.7);
+inline TorchScene torch_scene(bool use_sh, int channels, unsigned seed, torch::Dtype dtype, int gaussians = 10, int width = 36,
+                              int height = 34) {
+  const auto s = test::random_scene(gaussians, width, height, channels, use_sh, seed, 0.7);
   TorchScene t;
   t.sh = use_sh;
   t.settings.camera = PinholeCamera{s.cam.fx, s.cam.fy, s.cam.cx, s.cam.cy, s.cam.width, s.cam.height};

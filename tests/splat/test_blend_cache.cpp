@@ -1,0 +1,210 @@
+// Recorded blend weights (rasterize.h's BlendCache, rasterize_cpu.h's BlendWeights): the forward and the
+// features' backward read from them equal the walk's, to the bit on one thread (the recorded weights are the
+// forward's own and the walk's backward without geometry takes them front to back with the same arithmetic),
+// within rounding on more threads (the order in which threads add a Gaussian's sums); and a cache refuses the
+// calls it was not recorded for.
+#include <gtest/gtest.h>
+#include <torch/torch.h>
+
+#include <string>
+
+#include "core/error.h"
+#include "omp_threads.h"
+#include "splat/rasterize.h"
+#include "splat/rasterize_cpu.h"
+#include "splat/reference_render.h"
+#include "splat/view_blend_caches.h"
+#include "splat_scene.h"
+#include "torch_scene.h"
+
+namespace cls {
+namespace {
+
+// A scene with many overlapping Gaussians (transmittance stops included) over several tiles, edge tiles too.
+TorchScene crowded_scene(int channels, torch::Dtype dtype) { return torch_scene(false, channels, 61, dtype, 90, 70, 45); }
+
+struct Rendered {
+  RasterizeOutput out;
+  torch::Tensor grad;  // the features' (dense N x C or sparse N x K)
+};
+
+// One forward and backward of `values` (sparse with `indices`) under `settings`, the loss <image, w>.
+Rendered render(const TorchScene& t, const torch::Tensor& values, const torch::Tensor& indices, int channels,
+                const torch::Tensor& w, const RasterizeSettings& settings) {
+  const torch::Tensor v = values.detach().requires_grad_(true);
+  Rendered r;
+  r.out = indices.defined()
+              ? rasterize_sparse_features(t.means, t.scales, t.quats, t.opacities, v, indices, channels, {}, settings)
+              : rasterize_features(t.means, t.scales, t.quats, t.opacities, v, {}, settings);
+  (r.out.image * w).sum().backward();
+  r.grad = v.grad();
+  return r;
+}
+
+TEST(BlendCache, RecordedWeightsGiveTheWalksImagesAndGradients) {
+  for (CpuKernels k : available_cpu_kernels())
+  for (torch::Dtype dtype : {torch::kFloat64, torch::kFloat32})
+  for (const char* kind : {"dense", "sparse", "rgb"})
+  for (int threads : {1, 2, 3}) {
+    const test::ScopedCpuKernels use(k);
+    const test::ScopedOmpThreads use_threads(threads);
+    const std::string what = std::string(cpu_kernels_name(k)) + (dtype == torch::kFloat64 ? " double " : " float ") + kind;
+    const bool sparse = std::string(kind) == "sparse", rgb = std::string(kind) == "rgb";
+    const int C = rgb ? 3 : 24;
+    TorchScene t = crowded_scene(C, dtype);
+    torch::manual_seed(62);
+    const int64_t n = t.means.size(0);
+    const int K = 3;
+    torch::Tensor indices;
+    if (sparse) indices = torch::randint(0, C, {n, K}, torch::kInt32);
+    auto values = [&] { return torch::randn({n, sparse ? K : C}, torch::kFloat64).to(dtype); };
+    const torch::Tensor w = torch::randn({t.settings.camera.height, t.settings.camera.width, C}, torch::kFloat64).to(dtype);
+    RasterizeSettings cached = t.settings;
+    if (sparse) cached.background = torch::Tensor();  // (with one, as dense features have: both kinds covered)
+    RasterizeSettings walked = cached;
+    cached.blend_cache = make_blend_cache();
+    ASSERT_EQ(blend_cache_bytes(*cached.blend_cache), 0u);
+    // The first call records (and blends as the walk does), the later ones read: each of other values.
+    for (int call = 0; call < 3; ++call) {
+      const torch::Tensor x = values();
+      const Rendered a = render(t, x, indices, C, w, walked), b = render(t, x, indices, C, w, cached);
+      const std::string which = what + (call == 0 ? ", recording call" : ", recorded call");
+      ASSERT_GT(a.out.alpha.max().item<double>(), 0.5) << "the scene must cover pixels";
+      ASSERT_GT(a.grad.abs().max().item<double>(), 0.0);
+      EXPECT_TRUE(torch::equal(a.out.alpha, b.out.alpha)) << which;
+      EXPECT_TRUE(torch::equal(a.out.depth, b.out.depth)) << which;
+      EXPECT_TRUE(torch::equal(a.out.radii, b.out.radii)) << which;
+      // RGB's walk has its own fixed-channel build; run-time channel counts share the sums to the bit.
+      const double tol = rgb || threads > 1 ? (dtype == torch::kFloat64 ? 1e-12 : 1e-5) : 0.0;
+      const double image_tol = rgb ? tol : 0.0;
+      EXPECT_LE((a.out.image - b.out.image).abs().max().item<double>(), image_tol) << which;
+      EXPECT_LE((a.grad - b.grad).abs().max().item<double>(), tol * a.grad.abs().max().item<double>()) << which;
+    }
+    EXPECT_GT(blend_cache_bytes(*cached.blend_cache), 0u) << what;
+  }
+}
+
+// The recorded weights against the double reference renderer (every pixel blends all Gaussians): with
+// Gaussian g's features the unit vector e_g its image holds each pixel's weight alpha_g T_g at channel g. Each
+// (Gaussian, pixel) the reference blends is one lane of one recorded entry, of the same weight.
+TEST(BlendCache, RecordedWeightsAreTheReferencesBlendWeights) {
+  const test::RandomScene s = test::random_scene(90, 70, 45, 1, false, 61, 0.7);
+  test::SceneArrays<double> arrays = test::scene_arrays<double>(s);
+  arrays.features.assign(size_t(s.n) * s.n, 0.0);
+  for (int g = 0; g < s.n; ++g) arrays.features[size_t(g) * s.n + g] = 1.0;
+  SplatInputs<double> in = arrays.inputs(s, false);
+  in.channels = s.n;
+  const ReferenceImage ref = reference_render(s.cam, in);
+  const size_t n_pix = size_t(s.cam.width) * s.cam.height;
+  std::vector<double> image(n_pix * s.n), alpha(n_pix), depth(n_pix);
+  SplatForwardState<double> st;
+  BlendWeights<double> bw;
+  rasterize_forward_cpu(s.cam, in, image.data(), alpha.data(), depth.data(), st, &bw);
+  std::vector<double> recorded(n_pix * s.n, 0.0);  // pixel x Gaussian
+  std::vector<int> seen(n_pix * s.n, 0);
+  const int L = BlendWeights<double>::kLanes, tiles_x = s.cam.tiles_x();
+  ASSERT_EQ(bw.tiles.size(), size_t(tiles_x) * s.cam.tiles_y());
+  for (size_t tile = 0; tile < bw.tiles.size(); ++tile) {
+    const auto& rec = bw.tiles[tile];
+    for (int q = 0; q < BlendWeights<double>::kSubTiles; ++q)
+      for (int e = rec.begin[q]; e < rec.end[q]; ++e)
+        for (int l = 0; l < L; ++l) {
+          const double w = rec.weights[size_t(e) * L + l];
+          if (w == 0) continue;
+          const int x = int(tile) % tiles_x * 16 + q % 4 * 4 + l % 4, y = int(tile) / tiles_x * 16 + q / 4 * 4 + l / 4;
+          ASSERT_TRUE(x < s.cam.width && y < s.cam.height) << "a weight outside the image";
+          const size_t at = (size_t(y) * s.cam.width + x) * s.n + rec.ids[rec.slot[e]];
+          recorded[at] = w;
+          ++seen[at];
+        }
+  }
+  size_t blended = 0;
+  for (size_t i = 0; i < recorded.size(); ++i) {
+    blended += ref.image[i] != 0;
+    EXPECT_LE(seen[i], 1) << "pixel " << i / s.n << ", Gaussian " << i % s.n << " recorded twice";
+    EXPECT_NEAR(recorded[i], ref.image[i], 1e-12) << "pixel " << i / s.n << ", Gaussian " << i % s.n;
+  }
+  EXPECT_GT(blended, 10 * n_pix / 16) << "a crowded scene";
+  for (size_t p = 0; p < n_pix; ++p) {
+    EXPECT_EQ(1.0 - bw.final_T[p], alpha[p]);
+    EXPECT_EQ(bw.depth[p], depth[p]);
+  }
+}
+
+TEST(BlendCache, RefusesWhatItWasNotRecordedFor) {
+  TorchScene t = crowded_scene(5, torch::kFloat32);
+  RasterizeSettings settings = t.settings;
+  settings.background = torch::Tensor();  // (of the features' width, not SH's)
+  settings.blend_cache = make_blend_cache();
+  auto draw = [&](const TorchScene& scene, const RasterizeSettings& s) {
+    return rasterize_features(scene.means, scene.scales, scene.quats, scene.opacities, scene.values, {}, s);
+  };
+  auto refused = [&](auto&& call, const std::string& expected) {
+    try {
+      call();
+      ADD_FAILURE() << "accepted; expected an error saying " << expected;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+  };
+  {  // a geometry gradient, before anything is recorded
+    TorchScene g = t;
+    g.means = g.means.detach().requires_grad_(true);
+    refused([&] { draw(g, settings); }, "frozen Gaussians");
+  }
+  {  // geometry it could not recognise by its memory
+    TorchScene g = t;
+    g.means = t.means.t().contiguous().t();
+    refused([&] { draw(g, settings); }, "contiguous");
+  }
+  refused([&] { rasterize_sh(t.means, t.scales, t.quats, t.opacities, torch::zeros({t.means.size(0), 16, 3}), 3, {}, settings); },
+          "not SH");
+  draw(t, settings);  // records
+  EXPECT_NO_THROW(draw(t, settings));
+  RasterizeSettings moved = settings;
+  moved.pose.t.x += 0.01;
+  refused([&] { draw(t, moved); }, "another camera");
+  TorchScene copy = t;
+  copy.means = t.means.clone();
+  refused([&] { draw(copy, settings); }, "other Gaussians");
+  TorchScene as_double = t;
+  for (torch::Tensor* p : {&as_double.means, &as_double.scales, &as_double.quats, &as_double.opacities, &as_double.values})
+    *p = p->to(torch::kFloat64);
+  refused([&] { draw(as_double, settings); }, "another dtype");
+  t.scales.mul_(1.0f);  // in place: the Gaussians may have changed
+  refused([&] { draw(t, settings); }, "changed since");
+}
+
+// The budget: a view's cache is kept while the kept ones fit in it, and a view that did not fit gets no cache
+// from then on (it blends every iteration); a budget of 0 gives no caches.
+TEST(ViewBlendCaches, KeepWhatFitsTheBudgetFirstComeFirstKept) {
+  TorchScene t = crowded_scene(4, torch::kFloat32);
+  auto iterate = [&](ViewBlendCaches& caches, int view) {
+    RasterizeSettings s = t.settings;
+    s.pose.t.x += 0.05 * view;  // each view its own camera
+    s.blend_cache = caches.settings_for(view);
+    const bool had = s.blend_cache != nullptr;
+    rasterize_features(t.means, t.scales, t.quats, t.opacities, t.values, {}, s);
+    caches.recorded(view);
+    return had;
+  };
+  ViewBlendCaches probe(1, size_t(1) << 40);
+  iterate(probe, 0);
+  const size_t one = probe.bytes();
+  ASSERT_GT(one, 0u);
+  ViewBlendCaches caches(3, one + one / 2);  // room for one view's weights (the views' sizes are alike)
+  EXPECT_TRUE(iterate(caches, 0));
+  EXPECT_EQ(caches.kept_views(), 1);
+  EXPECT_TRUE(iterate(caches, 1));  // recorded, then dropped: it does not fit
+  EXPECT_EQ(caches.kept_views(), 1);
+  EXPECT_LE(caches.bytes(), one + one / 2);
+  EXPECT_FALSE(iterate(caches, 1)) << "a view that did not fit blends from then on";
+  EXPECT_TRUE(iterate(caches, 0));
+  EXPECT_TRUE(caches.settings_for(0) && blend_cache_bytes(*caches.settings_for(0)) > 0) << "kept, recorded";
+  ViewBlendCaches none(2, 0);
+  EXPECT_FALSE(iterate(none, 0));
+  EXPECT_EQ(none.kept_views(), 0);
+}
+
+}  // namespace
+}  // namespace cls
