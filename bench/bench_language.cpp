@@ -1,7 +1,8 @@
 // Language-field costs (docs/benchmarks.md):
 // 1. training, ms per iteration with 128 channels: rasterize_features forward + a loss (--loss: L1 against a
 //    random latent map, or the paper's loss from seg maps) + backward into the per-Gaussian latents
-//    (geometry frozen, paper 3.3);
+//    (geometry frozen, paper 3.3); --blend-cache on reads the view's recorded blend weights (rasterize.h's
+//    BlendCache, recorded in the warm-up iteration) as train-language does on the CPU, off blends every iteration;
 // 2. querying, relevance maps per second at 1080p: render 128 channels, then every pixel's cosine of its
 //    decoded feature (shared autoencoder, 128 -> 256 -> 512) with one query feature, as `query` takes it
 //    (DecodedCosines: the hidden layer, then the last layer's triangular factor; src/query/relevance.h).
@@ -77,7 +78,14 @@ double median(std::vector<double> v) {
 
 struct Timing {
   double wall_ms = 0, cpu_ms = 0;  // medians per iteration
+  double cache_mb = 0;             // the blend cache's memory (--blend-cache on)
 };
+
+// `t` with the memory of the scene's blend cache, if any.
+Timing with_cache_size(Timing t, const Scene& s) {
+  if (s.settings.blend_cache) t.cache_mb = double(blend_cache_bytes(*s.settings.blend_cache)) / (1 << 20);
+  return t;
+}
 
 template <class F>
 Timing time_it(int repeats, const at::Device& device, const F& body) {
@@ -148,9 +156,10 @@ SegTargets make_seg_targets(int width, int height, int channels, at::Generator& 
 // L x 512 codebook, the paper's loss from seg maps against 512-d targets, backward into logits and codebook)
 // and "sparse-warmup" (its first iterations: the softmax over all L bases splatted densely); "sparse-cosine" and
 // "sparse-cosine-warmup": the same with the cosine distance (sparse_loss.h, --sparse-distance cosine).
-Timing bench_sparse_training(const SceneSpec& spec, int bases, int top_k, bool warmup, bool cosine, int repeats,
-                             const at::Device& device) {
-  const Scene s = make_scene(spec.gaussians, spec.width, spec.height, 42, device);
+Timing bench_sparse_training(const SceneSpec& spec, int bases, int top_k, bool warmup, bool cosine, bool blend_cache,
+                             int repeats, const at::Device& device) {
+  Scene s = make_scene(spec.gaussians, spec.width, spec.height, 42, device);
+  if (blend_cache) s.settings.blend_cache = make_blend_cache();
   at::Generator gen = at::detail::createCPUGenerator(7);
   const at::Tensor logits = at::rand({spec.gaussians, bases}, gen).to(device).requires_grad_(true);
   const at::Tensor codebook = at::rand({bases, 512}, gen).to(device).requires_grad_(true);
@@ -159,7 +168,7 @@ Timing bench_sparse_training(const SceneSpec& spec, int bases, int top_k, bool w
     return at::from_blob(const_cast<int32_t*>(ids.data()), {spec.height, spec.width}, at::kInt);
   };
   const LanguageLossWeights weights;
-  return time_it(repeats, device, [&] {
+  return with_cache_size(time_it(repeats, device, [&] {
     at::Tensor map;
     if (warmup) {
       map = rasterize_features(s.means, s.scales, s.quats, s.opacities, at::softmax(logits, 1), at::Tensor(), s.settings).image;
@@ -174,12 +183,13 @@ Timing bench_sparse_training(const SceneSpec& spec, int bases, int top_k, bool w
         .total.backward();
     logits.mutable_grad().zero_();
     codebook.mutable_grad().zero_();
-  });
+  }), s);
 }
 
-Timing bench_training(const SceneSpec& spec, int channels, const std::string& loss_kind, int repeats,
+Timing bench_training(const SceneSpec& spec, int channels, const std::string& loss_kind, bool blend_cache, int repeats,
                       const at::Device& device) {
-  const Scene s = make_scene(spec.gaussians, spec.width, spec.height, 42, device);
+  Scene s = make_scene(spec.gaussians, spec.width, spec.height, 42, device);
+  if (blend_cache) s.settings.blend_cache = make_blend_cache();
   at::Generator gen = at::detail::createCPUGenerator(7);
   const at::Tensor latents = at::rand({spec.gaussians, channels}, gen).to(device).requires_grad_(true);
   const at::Tensor target = loss_kind == "l1" ? at::rand({spec.height, spec.width, channels}, gen).to(device) : at::Tensor();
@@ -188,7 +198,7 @@ Timing bench_training(const SceneSpec& spec, int channels, const std::string& lo
     return at::from_blob(const_cast<int32_t*>(ids.data()), {spec.height, spec.width}, at::kInt);
   };
   const LanguageLossWeights weights;
-  return time_it(repeats, device, [&] {
+  return with_cache_size(time_it(repeats, device, [&] {
     const RasterizeOutput out =
         rasterize_features(s.means, s.scales, s.quats, s.opacities, latents, at::Tensor(), s.settings);
     if (loss_kind == "l1") {
@@ -206,7 +216,7 @@ Timing bench_training(const SceneSpec& spec, int channels, const std::string& lo
       language_loss(in, weights).total.backward();
     }
     latents.mutable_grad().zero_();
-  });
+  }), s);
 }
 
 int bench_main(int argc, char** argv) {
@@ -214,13 +224,15 @@ int bench_main(int argc, char** argv) {
   int threads = 2, channels = 128, chunk_pixels = 65536, repeats = 3, bases = 64, top_k = 4;
   std::string train_scene_text = "200000@800x600,50000@480x360", query_scene_text = "200000@1920x1080";
   std::string device_name = "cpu";
-  std::vector<std::string> losses = {"l1"}, precisions = {"highest"};
+  std::vector<std::string> losses = {"l1"}, precisions = {"highest"}, blend_caches = {"off", "on"};
   args.bind("threads", threads, "OpenMP / ATen threads")
       .bind("channels", channels, "latent channels")
       .bind("train-scenes", train_scene_text, "training scenes, N@WxH comma-separated, or none")
       .bind("loss", losses, "training losses to time, comma-separated: l1, seg (train-language's), dense; sparse, "
                             "sparse-warmup (the sparse field's iterations, 512-d targets), sparse-cosine, "
                             "sparse-cosine-warmup (the same with --sparse-distance cosine)")
+      .bind("blend-cache", blend_caches, "training: off (blend every iteration), on (read the blend weights recorded "
+                                         "in the warm-up: train-language's CPU default), or both, comma-separated")
       .bind("codebook-size", bases, "sparse: bases L")
       .bind("top-k", top_k, "sparse: weights per Gaussian K")
       .bind("query-scene", query_scene_text, "the relevance-map scene, N@WxH, or none")
@@ -241,6 +253,10 @@ int bench_main(int argc, char** argv) {
         l != "sparse-cosine-warmup")
       throw UsageError("bench_language: --loss takes l1, seg, dense, sparse, sparse-warmup, sparse-cosine or "
                        "sparse-cosine-warmup, got '" + l + "'");
+  for (const std::string& b : blend_caches)
+    if (b != "off" && b != "on") throw UsageError("bench_language: --blend-cache takes off and on, got '" + b + "'");
+  if (device.is_cuda() && std::find(blend_caches.begin(), blend_caches.end(), "on") != blend_caches.end())
+    throw UsageError("bench_language: --blend-cache on is for the CPU (pass --blend-cache off on CUDA)");
   for (const std::string& p : precisions)
     if (p != "highest" && p != "high" && p != "medium")
       throw UsageError("bench_language: --matmul-precision takes highest, high or medium, got '" + p + "'");
@@ -248,17 +264,21 @@ int bench_main(int argc, char** argv) {
   std::printf("device %s, threads %d, %d channels, median of %d repeats after one warm-up\n", device.str().c_str(),
               threads, channels, repeats);
   for (const SceneSpec& spec : train_scenes)
-    for (const std::string& loss : losses) {
-      const Timing t = loss.rfind("sparse", 0) == 0
-                           ? bench_sparse_training(spec, bases, top_k, loss.find("warmup") != std::string::npos,
-                                                   loss.find("cosine") != std::string::npos, repeats, device)
-                           : bench_training(spec, channels, loss, repeats, device);
-      std::printf("training  %7lld Gaussians %4dx%-4d  %9.1f ms/iteration (wall)  CPU %9.1f ms  CPU/threads %9.1f ms"
-                  "  loss %s\n",
-                  static_cast<long long>(spec.gaussians), spec.width, spec.height, t.wall_ms, t.cpu_ms,
-                  t.cpu_ms / threads, loss.c_str());
-      std::fflush(stdout);
-    }
+    for (const std::string& loss : losses)
+      for (const std::string& cache : blend_caches) {
+        const bool on = cache == "on";
+        const Timing t = loss.rfind("sparse", 0) == 0
+                             ? bench_sparse_training(spec, bases, top_k, loss.find("warmup") != std::string::npos,
+                                                     loss.find("cosine") != std::string::npos, on, repeats, device)
+                             : bench_training(spec, channels, loss, on, repeats, device);
+        char size[32] = "";
+        if (on) std::snprintf(size, sizeof size, " (%.1f MiB)", t.cache_mb);
+        std::printf("training  %7lld Gaussians %4dx%-4d  %9.1f ms/iteration (wall)  CPU %9.1f ms  CPU/threads %9.1f ms"
+                    "  loss %s, blend cache %s%s\n",
+                    static_cast<long long>(spec.gaussians), spec.width, spec.height, t.wall_ms, t.cpu_ms,
+                    t.cpu_ms / threads, loss.c_str(), cache.c_str(), size);
+        std::fflush(stdout);
+      }
 
   // Relevance map: render, decode per pixel (chunks), cosine with a query feature.
   if (query_scenes.empty()) return 0;

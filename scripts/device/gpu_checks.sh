@@ -93,7 +93,7 @@ for s in "${steps[@]}"; do
           --threads 16
       done ;;
     bench_language)
-      step "$s" 180 "$B/bench/bench_language" --device cuda --threads 16 --repeats 10 \
+      step "$s" 180 "$B/bench/bench_language" --device cuda --threads 16 --repeats 10 --blend-cache off \
         --train-scenes 50000@480x360,200000@800x600,1000000@1600x1000 --loss l1,dense,seg,sparse,sparse-warmup,sparse-cosine,sparse-cosine-warmup \
         --query-scene 200000@1920x1080 --matmul-precision highest,high
       step bench_language_chunk256k 60 "$B/bench/bench_language" --device cuda --threads 16 --repeats 10 \
@@ -147,7 +147,7 @@ for s in "${steps[@]}"; do
         args=(bench/bench_query --device cuda --threads 16 --sizes 1920x1080 --iters 1)
       else
         args=(bench/bench_language --device cuda --threads 16 --repeats 1 --train-scenes 200000@800x600 --loss seg
-              --query-scene 200000@1920x1080)
+              --blend-cache off --query-scene 200000@1920x1080)
       fi
       step "$s" 240 "$NCU" --clock-control none --metrics gpu__time_duration.sum --csv --log-file "${OUT:-/tmp}/ncu_$s.csv" \
         "$B/${args[0]}" "${args[@]:1}" ;;

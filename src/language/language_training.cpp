@@ -51,6 +51,7 @@
 #include "splat/checkpoint.h"
 #include "splat/ply_gaussians.h"
 #include "splat/rasterize.h"
+#include "splat/view_blend_caches.h"
 
 namespace cls {
 namespace fs = std::filesystem;
@@ -325,7 +326,12 @@ const OptionList<LanguageTrainOptions>& language_train_options() {
         .add("test-every", &O::test_every,
              "leave every this-th view (sorted by name) out of training, as train-rgb: the views `evaluate` scores in "
              "2D (0 = train on all)")
-        .add("device", &O::device, "auto, cpu or cuda", R::Control);
+        .add("device", &O::device, "auto, cpu or cuda", R::Control)
+        .add("blend-cache-mb", &O::blend_cache_mb,
+             "CPU: memory (MiB) for the frozen Gaussians' blend weights per view, recorded on a view's first iteration "
+             "and read on its later ones instead of blending (the same results; views beyond it blend every "
+             "iteration; 0: all do)",
+             R::Control);
     return o;
   }();
   return list;
@@ -336,6 +342,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
   if (o.iterations < 1) throw UsageError("--iterations must be at least 1");
   if (o.lr <= 0) throw UsageError("--lr must be positive");
   if (!(o.sparse_warmup >= 0 && o.sparse_warmup <= 1)) throw UsageError("--sparse-warmup must lie in [0, 1]");
+  if (o.blend_cache_mb < 0) throw UsageError("--blend-cache-mb must be 0 or more");
   if (!(o.logit_lr > 0)) throw UsageError("--logit-lr must be positive");
   if (!(o.lift_temperature >= 0)) throw UsageError("--lift-temperature must be 0 (off) or positive");
   if (o.sparse_distance != "l1" && o.sparse_distance != "cosine")
@@ -439,6 +446,8 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
 
   LanguageTrainReport report;
   const LanguageLossWeights weights{o.lambda_sam, o.lambda_citygml, o.baseline};
+  // The geometry is frozen: on the CPU each view's blend weights are recorded once and read by every level.
+  ViewBlendCaches blend_caches(nviews, device.is_cpu() ? size_t(o.blend_cache_mb) << 20 : 0);
   for (int level = s.level; level <= kLevels; ++level) {
     if (level != s.level) {  // a new level
       s.level = level;
@@ -487,8 +496,10 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
     while (s.iteration < o.iterations) {
       const int64_t epoch = s.iteration / nviews;
       if (epoch != order_epoch) order = epoch_order(o.seed, level, epoch, nviews), order_epoch = epoch;
-      const ViewTargets& v = views[order[s.iteration % nviews]];
-      const RasterizeSettings settings = view_settings(scene.views[v.view]);
+      const int view_index = order[s.iteration % nviews];
+      const ViewTargets& v = views[view_index];
+      RasterizeSettings settings = view_settings(scene.views[v.view]);
+      settings.blend_cache = blend_caches.settings_for(view_index);
       const SegMapTarget sam_target{v.sam_map(level), v.sam_latents}, gml_target{v.gml_map(level), v.gml_latents};
       LanguageLoss loss;
       if (sparse) {  // the rendered weights times the codebook: the features the targets are compared with
@@ -516,6 +527,7 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
       loss.total.backward();
       adam.step();
       adam.zero_grad();
+      blend_caches.recorded(view_index);
 
       const double value = loss.total.item<double>();
       s.ema_loss = s.iteration == 0 ? value : 0.4 * value + 0.6 * s.ema_loss;  // 3DGS's ema_loss_for_log
@@ -556,6 +568,9 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
       }
     }
     progress.finish();
+    if (device.is_cpu())
+      log_verbose(cat("blend weights kept for ", blend_caches.kept_views(), " of ", nviews, " views, ",
+                      (blend_caches.bytes() + (1 << 19)) >> 20, " MiB (--blend-cache-mb ", o.blend_cache_mb, ")"));
     s.final_loss[level - 1] = s.ema_loss;
     latents = latents.detach();
     if (sparse) codebook = codebook.detach();
