@@ -329,8 +329,8 @@ const OptionList<LanguageTrainOptions>& language_train_options() {
         .add("device", &O::device, "auto, cpu or cuda", R::Control)
         .add("blend-cache-mb", &O::blend_cache_mb,
              "CPU: memory (MiB) for the frozen Gaussians' blend weights per view, recorded on a view's first iteration "
-             "and read on its later ones instead of blending (the same results; views beyond it blend every "
-             "iteration; 0: all do)",
+             "and read on its later ones instead of blending (the same results, within float rounding; views beyond it "
+             "blend every iteration; 0: all do)",
              R::Control);
     return o;
   }();

@@ -22,8 +22,9 @@ namespace cls {
 struct BlendCache {
   std::unique_ptr<BlendWeights<float>> weights_float;
   std::unique_ptr<BlendWeights<double>> weights_double;
-  // The geometry recorded: each tensor's memory and version (means, scales, quats, opacities).
-  std::array<const void*, 4> data{};
+  // The geometry recorded (means, scales, quats, opacities), held so that its memory cannot pass to other
+  // tensors while the cache lives, and each tensor's version then.
+  std::array<at::Tensor, 4> geometry;
   std::array<int64_t, 4> version{};
 
   template <class T>
@@ -69,12 +70,15 @@ SplatInputs<T> make_inputs(const at::Tensor& means, const at::Tensor& scales, co
   return in;
 }
 
-// The geometry's identity as a BlendCache keeps it.
-std::array<const void*, 4> geometry_data(const std::array<const at::Tensor*, 4>& g) {
-  return {g[0]->data_ptr(), g[1]->data_ptr(), g[2]->data_ptr(), g[3]->data_ptr()};
+using Geometry = std::array<at::Tensor, 4>;  // means, scales, quats, opacities
+
+std::array<int64_t, 4> geometry_version(const Geometry& g) {
+  return {g[0]._version(), g[1]._version(), g[2]._version(), g[3]._version()};
 }
-std::array<int64_t, 4> geometry_version(const std::array<const at::Tensor*, 4>& g) {
-  return {g[0]->_version(), g[1]->_version(), g[2]->_version(), g[3]->_version()};
+bool same_memory(const Geometry& a, const Geometry& b) {
+  for (int i = 0; i < 4; ++i)
+    if (a[i].data_ptr() != b[i].data_ptr() || a[i].sizes() != b[i].sizes()) return false;
+  return true;
 }
 
 template <class T>
@@ -86,20 +90,29 @@ bool same_camera(const SplatCamera<T>& a, const SplatCamera<T>& b) {
          a.cy == b.cy && a.width == b.width && a.height == b.height;
 }
 
-// The cache's weights for this call: recorded ones (checked to be of this geometry and camera), or null when it
-// is empty (this call records).
+// The forward of `in` through the cache: from its recorded weights (checked to be of this geometry and camera),
+// or, when it is empty, the walk, recording them. Returns the weights, for the backward and the radii.
 template <class T>
-const BlendWeights<T>* recorded_weights(BlendCache& cache, const std::array<const at::Tensor*, 4>& geometry,
-                                        const SplatCamera<T>& cam) {
-  if (!cache.weights_float && !cache.weights_double) return nullptr;
-  const BlendWeights<T>* bw = cache.weights<T>().get();
-  if (!bw) throw Error("rasterize: the blend cache was recorded for another dtype");
-  if (cache.data != geometry_data(geometry) || bw->n != static_cast<int>(geometry[0]->size(0)))
-    throw Error("rasterize: the blend cache was recorded for other Gaussians (keep one cache per view and geometry)");
-  if (cache.version != geometry_version(geometry))
-    throw Error("rasterize: the Gaussians changed since the blend cache was recorded (it is for frozen geometry)");
-  if (!same_camera(bw->cam, cam)) throw Error("rasterize: the blend cache was recorded for another camera (keep one per view)");
-  return bw;
+const BlendWeights<T>& forward_through_cache(BlendCache& cache, const Geometry& geometry, const SplatCamera<T>& cam,
+                                             const SplatInputs<T>& in, T* image, T* alpha, T* depth) {
+  if (cache.weights_float || cache.weights_double) {
+    const BlendWeights<T>* bw = cache.weights<T>().get();
+    if (!bw) throw Error("rasterize: the blend cache was recorded for another dtype");
+    if (!same_memory(cache.geometry, geometry))
+      throw Error("rasterize: the blend cache was recorded for other Gaussians (keep one cache per view and geometry)");
+    if (cache.version != geometry_version(geometry))
+      throw Error("rasterize: the Gaussians changed since the blend cache was recorded (it is for frozen geometry)");
+    if (!same_camera(bw->cam, cam))
+      throw Error("rasterize: the blend cache was recorded for another camera (keep one per view)");
+    rasterize_forward_recorded_cpu(*bw, in, image, alpha, depth);
+    return *bw;
+  }
+  auto recorded = std::make_unique<BlendWeights<T>>();
+  SplatForwardState<T> state;
+  rasterize_forward_cpu(cam, in, image, alpha, depth, state, recorded.get());
+  cache.geometry = geometry;
+  cache.version = geometry_version(geometry);
+  return *(cache.weights<T>() = std::move(recorded));
 }
 
 // radii[i]: Gaussian i's screen radius from the forward's projection, 0 where culled.
@@ -185,21 +198,10 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
       const SplatInputs<T> in = make_inputs<T>(means, scales, quats, opacities, values, int(sh_degree), bg, index, C);
       const SplatCamera<T> splat_cam = make_splat_camera<T>(cam, settings->pose);
       if (settings->blend_cache) {  // recorded weights, or this call records them; the backward reads them
-        BlendCache& cache = *settings->blend_cache;
-        const std::array<const at::Tensor*, 4> geometry{&means, &scales, &quats, &opacities};
-        const BlendWeights<T>* bw = recorded_weights(cache, geometry, splat_cam);
-        if (bw) {
-          rasterize_forward_recorded_cpu(*bw, in, image.data_ptr<T>(), alpha.data_ptr<T>(), depth.data_ptr<T>());
-        } else {
-          auto recorded = std::make_unique<BlendWeights<T>>();
-          SplatForwardState<T> state;
-          rasterize_forward_cpu(splat_cam, in, image.data_ptr<T>(), alpha.data_ptr<T>(), depth.data_ptr<T>(), state,
-                                recorded.get());
-          cache.data = geometry_data(geometry);
-          cache.version = geometry_version(geometry);
-          bw = (cache.weights<T>() = std::move(recorded)).get();
-        }
-        std::copy(bw->radii.begin(), bw->radii.end(), radii.data_ptr<int32_t>());
+        const BlendWeights<T>& bw =
+            forward_through_cache(*settings->blend_cache, {means, scales, quats, opacities}, splat_cam, in,
+                                  image.data_ptr<T>(), alpha.data_ptr<T>(), depth.data_ptr<T>());
+        std::copy(bw.radii.begin(), bw.radii.end(), radii.data_ptr<int32_t>());
         auto* keep = new std::shared_ptr<BlendCache>(settings->blend_cache);
         holder = torch::from_blob(keep, {1}, [](void* p) { delete static_cast<std::shared_ptr<BlendCache>*>(p); },
                                   torch::TensorOptions().dtype(torch::kUInt8));
@@ -315,6 +317,14 @@ void check_inputs(const at::Tensor& means, const at::Tensor& scales, const at::T
     throw Error("rasterize: camera needs a positive size and focal lengths");
 }
 
+// What any call with a blend cache needs.
+void check_cache_inputs(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
+                        const at::Tensor& opacities) {
+  if (!means.device().is_cpu()) throw Error("rasterize: a blend cache is for CPU tensors");
+  if (!means.is_contiguous() || !scales.is_contiguous() || !quats.is_contiguous() || !opacities.is_contiguous())
+    throw Error("rasterize: a blend cache needs contiguous geometry tensors (it knows them by their memory)");
+}
+
 // Whether autograd will ask for a gradient of the geometry (or the densification statistic).
 bool geometry_grad(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
                    const at::Tensor& opacities, const at::Tensor& means2d, const RasterizeSettings& s) {
@@ -333,12 +343,10 @@ RasterizeOutput run(const at::Tensor& means, const at::Tensor& scales, const at:
   if (s.mean2d_abs_grad.defined() && s.mean2d_abs_grad.sizes() != at::IntArrayRef({means.size(0), 2}))
     throw Error("rasterize: mean2d_abs_grad must be N x 2");
   if (s.blend_cache) {
-    if (!means.device().is_cpu()) throw Error("rasterize: a blend cache is for CPU tensors");
     if (sh_degree >= 0) throw Error("rasterize: a blend cache is for features, not SH colours");
     if (geometry_grad(means, scales, quats, opacities, means2d, s))
       throw Error("rasterize: a blend cache is for frozen Gaussians; a gradient to the geometry was asked for");
-    if (!means.is_contiguous() || !scales.is_contiguous() || !quats.is_contiguous() || !opacities.is_contiguous())
-      throw Error("rasterize: a blend cache needs contiguous geometry tensors (it knows them by their memory)");
+    check_cache_inputs(means, scales, quats, opacities);
   }
   // An undefined means2d still needs a tensor slot in apply(); a zero-size one gets no gradient.
   const at::Tensor m2d = means2d.defined() ? means2d : torch::zeros({0}, means.options());
@@ -466,9 +474,18 @@ RasterizeOutput rasterize_sparse_cosines(const at::Tensor& means, const at::Tens
     using T = scalar_t;
     SplatInputs<T> in = make_inputs<T>(m, s, q, o, w, -1, at::Tensor(), idx, channels);
     in.cosines = {a.data_ptr<T>(), r.data_ptr<T>(), static_cast<int>(a.size(0)), static_cast<int>(r.size(0))};
+    const SplatCamera<T> splat_cam = make_splat_camera<T>(cam, settings.pose);
+    if (settings.blend_cache) {
+      check_cache_inputs(means, scales, quats, opacities);
+      const BlendWeights<T>& bw = forward_through_cache(*settings.blend_cache, {m, s, q, o}, splat_cam, in,
+                                                        out.image.data_ptr<T>(), out.alpha.data_ptr<T>(),
+                                                        out.depth.data_ptr<T>());
+      std::copy(bw.radii.begin(), bw.radii.end(), out.radii.data_ptr<int32_t>());
+      return;
+    }
     SplatForwardState<T> state;
-    rasterize_forward_cpu(make_splat_camera<T>(cam, settings.pose), in, out.image.data_ptr<T>(),
-                          out.alpha.data_ptr<T>(), out.depth.data_ptr<T>(), state);
+    rasterize_forward_cpu(splat_cam, in, out.image.data_ptr<T>(), out.alpha.data_ptr<T>(), out.depth.data_ptr<T>(),
+                          state);
     fill_radii(state, out.radii);
   });
   return out;

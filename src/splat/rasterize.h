@@ -20,9 +20,9 @@ namespace cls {
 // that trains features on frozen geometry (language training) keeps one per view in RasterizeSettings. The
 // first call given an empty one records into it; later calls read it instead of projecting, sorting and
 // blending. For CPU tensors, features dense or sparse, and no gradient to the geometry (cls::Error otherwise);
-// the same images and gradients as without it (to the bit on one thread). It remembers the geometry tensors
-// (their memory and version), the camera and the dtype it was recorded with: a call with others is a
-// cls::Error, not a silently wrong image.
+// the same images and gradients as without it (to the bit on one thread, but within rounding for dense features
+// of 1 or 3 channels). It holds the geometry tensors it was recorded with and remembers their versions, the
+// camera and the dtype: a call with others is a cls::Error, not a silently wrong image.
 struct BlendCache;
 std::shared_ptr<BlendCache> make_blend_cache();
 std::size_t blend_cache_bytes(const BlendCache& cache);  // 0 until a call records it
@@ -75,6 +75,7 @@ RasterizeOutput rasterize_sparse_features(const at::Tensor& means, const at::Ten
 // |w B| = |R w| (rasterize_cpu.h's ChannelCosines). What a relevance map needs, C^2 / 2 + P C multiply-adds per
 // pixel taken while the pixel's w is in registers, without the C-channel image. No background, no gradients.
 // CPU tensors only (cls::Error on others: a GPU renders the weights and takes their cosines with LibTorch).
+// settings.blend_cache, when set, is read or recorded as by rasterize_sparse_features.
 RasterizeOutput rasterize_sparse_cosines(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
                                          const at::Tensor& opacities, const at::Tensor& weights,
                                          const at::Tensor& indices, int channels, const at::Tensor& directions,

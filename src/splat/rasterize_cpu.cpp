@@ -335,6 +335,10 @@ void finish_recorded_tile(typename BlendWeights<T>::Tile& rec, const std::vector
   for (size_t k = 0; k < list.size(); ++k)
     if (slot_of[k] == 0) slot_of[k] = static_cast<int32_t>(rec.ids.size()), rec.ids.push_back(list[k].id);
   for (int32_t& k : rec.slot) k = slot_of[k];
+  // kept for many iterations: no spare capacity (BlendWeights::bytes counts sizes)
+  rec.ids.shrink_to_fit();
+  rec.slot.shrink_to_fit();
+  rec.weights.shrink_to_fit();
 }
 
 // Front-to-back blending of one tile (renderCUDA), a 4x4 sub-tile at a time with one lane per pixel
@@ -767,8 +771,9 @@ template <class T, int kBytes>
     int64_t pixel[kLanes];
     for (int l = 0; l < kLanes; ++l) {
       const int64_t pix = pixel[l] = lane_pixel(sx, sy, l, x1, y1, cam.width);
-      // blended into (the walk's n_contrib > 0): each entry that adds lowers T below 1
-      load_pixel_grads(j.dL_dimage, j.C, l, pix, pix >= 0 && j.bw.final_T[pix] < T(1), dpix);
+      // blended into (the walk's n_contrib > 0): each entry that adds lowers T below 1; dense values' sums read
+      // dL/dimage's rows themselves (add_lane_rows)
+      if (j.index) load_pixel_grads(j.dL_dimage, j.C, l, pix, pix >= 0 && j.bw.final_T[pix] < T(1), dpix);
     }
     for (int e = rec.begin[q]; e < rec.end[q]; ++e) {
       V w;
@@ -867,12 +872,26 @@ void run_tiles(const SplatCamera<T>& cam, void (*tile_fn)(const Job&, int, TileS
     for (int x = 0; x < tiles_x; ++x)
       for (int y = y0; y < std::min(y0 + kStripTiles, tiles_y); ++y) order.push_back(y * tiles_x + x);
   const int n = static_cast<int>(order.size());
+  // An exception may not leave a parallel region (std::terminate): the first one (e.g. std::bad_alloc of a
+  // recording or a scratch buffer) is kept, the remaining tiles are skipped, and it is thrown after.
+  std::exception_ptr failed;
+  std::atomic<bool> stop{false};
 #pragma omp parallel
   {
     TileScratch<T> scratch;
 #pragma omp for schedule(dynamic, 1)
-    for (int t = 0; t < n; ++t) tile_fn(job, order[t], scratch);
+    for (int t = 0; t < n; ++t) {
+      if (stop.load(std::memory_order_relaxed)) continue;
+      try {
+        tile_fn(job, order[t], scratch);
+      } catch (...) {
+#pragma omp critical(cls_run_tiles_failed)
+        if (!failed) failed = std::current_exception();
+        stop = true;
+      }
+    }
   }
+  if (failed) std::rethrow_exception(failed);
 }
 
 // Step 2 of the forward: st.ids grouped by tile (st.tile_begin/end), each tile's ids front to back (by
@@ -1061,6 +1080,8 @@ void check_recorded(const BlendWeights<T>& bw, const SplatInputs<T>& in, const c
   static_assert(BlendWeights<T>::kLanes == kLanes && BlendWeights<T>::kSubTiles == kSubTilesPerTile,
                 "recorded lanes are the tile kernels' lanes");
   if (in.use_sh() || !in.features) throw std::invalid_argument(std::string(what) + ": features only, not SH");
+  if (in.cosines.count > 0 && in.background)
+    throw std::invalid_argument(std::string(what) + ": cosines are of features on a zero background only");
   if (in.n != bw.n)
     throw std::invalid_argument(std::string(what) + ": the weights were recorded for " + std::to_string(bw.n) +
                                 " Gaussians, not " + std::to_string(in.n));

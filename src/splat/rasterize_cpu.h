@@ -73,7 +73,8 @@ struct SplatForwardState {
 // forward records them (rasterize_forward_cpu's `record`); forwards and backwards of other features on the same
 // Gaussians and camera then read them (rasterize_*_recorded_cpu) instead of projecting, sorting and testing
 // every entry of every list: bench_language's 480x360 view of 50k Gaussians walks 130 list entries per pixel, of
-// which 66 add. Same image and gradients as the walk, to the bit on one thread (tests); 4 + 16 sizeof(T) bytes
+// which 66 add. The walk's image and gradients, to the bit on one thread (tests), but for dense features of 1 or 3
+// channels (the walk's fixed-channel builds: within rounding); 4 + 16 sizeof(T) bytes
 // per entry (64 % of the lanes non-zero there): 74 MiB for that view, 337 MiB for 1080p with 200k Gaussians.
 template <class T>
 struct BlendWeights {

@@ -44,13 +44,14 @@ Rendered render(const TorchScene& t, const torch::Tensor& values, const torch::T
 TEST(BlendCache, RecordedWeightsGiveTheWalksImagesAndGradients) {
   for (CpuKernels k : available_cpu_kernels())
   for (torch::Dtype dtype : {torch::kFloat64, torch::kFloat32})
-  for (const char* kind : {"dense", "sparse", "rgb"})
+  for (const char* kind : {"dense", "sparse", "rgb", "one"})
   for (int threads : {1, 2, 3}) {
     const test::ScopedCpuKernels use(k);
     const test::ScopedOmpThreads use_threads(threads);
     const std::string what = std::string(cpu_kernels_name(k)) + (dtype == torch::kFloat64 ? " double " : " float ") + kind;
-    const bool sparse = std::string(kind) == "sparse", rgb = std::string(kind) == "rgb";
-    const int C = rgb ? 3 : 24;
+    // RGB and one channel: the walk's fixed-channel builds
+    const bool sparse = std::string(kind) == "sparse", fixed = std::string(kind) == "rgb" || std::string(kind) == "one";
+    const int C = std::string(kind) == "rgb" ? 3 : std::string(kind) == "one" ? 1 : 24;
     TorchScene t = crowded_scene(C, dtype);
     torch::manual_seed(62);
     const int64_t n = t.means.size(0);
@@ -74,9 +75,9 @@ TEST(BlendCache, RecordedWeightsGiveTheWalksImagesAndGradients) {
       EXPECT_TRUE(torch::equal(a.out.alpha, b.out.alpha)) << which;
       EXPECT_TRUE(torch::equal(a.out.depth, b.out.depth)) << which;
       EXPECT_TRUE(torch::equal(a.out.radii, b.out.radii)) << which;
-      // RGB's walk has its own fixed-channel build; run-time channel counts share the sums to the bit.
-      const double tol = rgb || threads > 1 ? (dtype == torch::kFloat64 ? 1e-12 : 1e-5) : 0.0;
-      const double image_tol = rgb ? tol : 0.0;
+      // Run-time channel counts share the walk's sums to the bit; fixed ones differ by rounding.
+      const double tol = fixed || threads > 1 ? (dtype == torch::kFloat64 ? 1e-12 : 1e-5) : 0.0;
+      const double image_tol = fixed ? tol : 0.0;
       EXPECT_LE((a.out.image - b.out.image).abs().max().item<double>(), image_tol) << which;
       EXPECT_LE((a.grad - b.grad).abs().max().item<double>(), tol * a.grad.abs().max().item<double>()) << which;
     }
@@ -173,6 +174,57 @@ TEST(BlendCache, RefusesWhatItWasNotRecordedFor) {
   refused([&] { draw(as_double, settings); }, "another dtype");
   t.scales.mul_(1.0f);  // in place: the Gaussians may have changed
   refused([&] { draw(t, settings); }, "changed since");
+}
+
+// Pixels nothing is blended into carry no gradient to any Gaussian, even an infinite one (a loss divided by
+// alpha), on the recorded path as on the walk.
+TEST(BlendCache, UncoveredPixelsReachNoGaussian) {
+  for (bool sparse : {false, true}) {
+    TorchScene t = torch_scene(false, 6, 63, torch::kFloat32);  // few Gaussians: uncovered pixels
+    RasterizeSettings walked = t.settings;
+    walked.background = torch::Tensor();
+    RasterizeSettings cached = walked;
+    cached.blend_cache = make_blend_cache();
+    const int64_t n = t.means.size(0);
+    torch::manual_seed(64);
+    const torch::Tensor indices = sparse ? torch::randint(0, 6, {n, 2}, torch::kInt32) : torch::Tensor();
+    const torch::Tensor x = sparse ? torch::randn({n, 2}) : t.values;
+    const torch::Tensor alpha = render(t, x, indices, 6, torch::zeros({34, 36, 6}), walked).out.alpha;
+    const torch::Tensor uncovered = (alpha == 0).unsqueeze(2).expand({-1, -1, 6});
+    ASSERT_GT(uncovered.sum().item<int64_t>(), 0) << "the scene must leave pixels uncovered";
+    const torch::Tensor w = torch::where(uncovered, torch::full_like(uncovered, INFINITY, torch::kFloat),
+                                         torch::randn({34, 36, 6}));
+    render(t, x, indices, 6, w, cached);  // records
+    const Rendered a = render(t, x, indices, 6, w, walked), b = render(t, x, indices, 6, w, cached);
+    EXPECT_TRUE(torch::isfinite(a.grad).all().item<bool>()) << (sparse ? "sparse" : "dense");
+    EXPECT_TRUE(torch::equal(a.grad, b.grad)) << (sparse ? "sparse" : "dense");
+  }
+}
+
+// The cosines of the sparse field's relevance maps (rasterize_sparse_cosines) read from the cache: the walk's.
+TEST(BlendCache, CosinesFromRecordedWeightsAreTheWalks) {
+  constexpr int C = 20, P = 3, K = 3;
+  TorchScene t = crowded_scene(C, torch::kFloat32);
+  torch::manual_seed(65);
+  const int64_t n = t.means.size(0);
+  const torch::Tensor weights = torch::rand({n, K}), indices = torch::randint(0, C, {n, K}, torch::kInt32);
+  const torch::Tensor directions = torch::randn({P, C}), factor = torch::randn({C, C}).triu();
+  RasterizeSettings walked = t.settings;
+  walked.background = torch::Tensor();
+  RasterizeSettings cached = walked;
+  cached.blend_cache = make_blend_cache();
+  auto cosines = [&](const RasterizeSettings& s) {
+    return rasterize_sparse_cosines(t.means, t.scales, t.quats, t.opacities, weights, indices, C, directions, factor, s);
+  };
+  const RasterizeOutput a = cosines(walked);
+  ASSERT_GT(a.image.abs().max().item<double>(), 0.1);
+  for (int call = 0; call < 2; ++call) {  // recording, then recorded
+    const RasterizeOutput b = cosines(cached);
+    EXPECT_TRUE(torch::equal(a.image, b.image)) << "call " << call;
+    EXPECT_TRUE(torch::equal(a.alpha, b.alpha)) << "call " << call;
+    EXPECT_TRUE(torch::equal(a.depth, b.depth)) << "call " << call;
+    EXPECT_TRUE(torch::equal(a.radii, b.radii)) << "call " << call;
+  }
 }
 
 // The budget: a view's cache is kept while the kept ones fit in it, and a view that did not fit gets no cache
