@@ -19,6 +19,9 @@
 
 #include <ATen/ATen.h>
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdint>
@@ -330,7 +333,7 @@ const OptionList<LanguageTrainOptions>& language_train_options() {
         .add("blend-cache-mb", &O::blend_cache_mb,
              "CPU: memory (MiB) for the frozen Gaussians' blend weights per view, recorded on a view's first iteration "
              "and read on its later ones instead of blending (the same results, within float rounding; views beyond it "
-             "blend every iteration; 0: all do)",
+             "blend every iteration; 0: all do; at most a quarter of the machine's memory)",
              R::Control);
     return o;
   }();
@@ -446,8 +449,12 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
 
   LanguageTrainReport report;
   const LanguageLossWeights weights{o.lambda_sam, o.lambda_citygml, o.baseline};
-  // The geometry is frozen: on the CPU each view's blend weights are recorded once and read by every level.
-  ViewBlendCaches blend_caches(nviews, device.is_cpu() ? size_t(o.blend_cache_mb) << 20 : 0);
+  // The geometry is frozen: on the CPU each view's blend weights are recorded once and read by every level,
+  // within --blend-cache-mb and at most a quarter of the machine's memory (a default that fits a workstation
+  // must not push a small machine into swap).
+  const size_t physical = size_t(std::max(0L, sysconf(_SC_PHYS_PAGES))) * size_t(std::max(0L, sysconf(_SC_PAGE_SIZE)));
+  const size_t blend_budget = std::min(size_t(o.blend_cache_mb) << 20, physical > 0 ? physical / 4 : SIZE_MAX);
+  ViewBlendCaches blend_caches(nviews, device.is_cpu() ? blend_budget : 0);
   for (int level = s.level; level <= kLevels; ++level) {
     if (level != s.level) {  // a new level
       s.level = level;
@@ -570,7 +577,8 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
     progress.finish();
     if (device.is_cpu())
       log_verbose(cat("blend weights kept for ", blend_caches.kept_views(), " of ", nviews, " views, ",
-                      (blend_caches.bytes() + (1 << 19)) >> 20, " MiB (--blend-cache-mb ", o.blend_cache_mb, ")"));
+                      (blend_caches.bytes() + (1 << 19)) >> 20, " MiB of ", blend_budget >> 20,
+                      " (--blend-cache-mb ", o.blend_cache_mb, ", at most a quarter of the memory)"));
     s.final_loss[level - 1] = s.ema_loss;
     latents = latents.detach();
     if (sparse) codebook = codebook.detach();

@@ -50,8 +50,9 @@ struct LanguageTrainOptions {
   int test_every = 0;
   std::string device = "auto";  // "auto" (CUDA when the build and machine have it), "cpu", "cuda"
   // CPU: memory (MiB) for the frozen Gaussians' blend weights, kept per view (rasterize.h's BlendCache): a view's
-  // first iteration records them, its later ones (all levels) read them instead of blending. Views whose
-  // weights no longer fit blend every iteration; 0: every view does. The results are the same either way.
+  // first iteration records them, its later ones (all levels) read them instead of blending. At most a quarter
+  // of the machine's memory. Views whose weights no longer fit blend every iteration; 0: every view does. The
+  // results are the same either way (within float rounding).
   int blend_cache_mb = 4096;
   // Stop as if interrupted (checkpoint, report.interrupted) once this many iterations have run in
   // total over all levels, counting those before a resume; 0 = never. For tests and time budgets.
