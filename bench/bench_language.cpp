@@ -2,7 +2,9 @@
 // 1. training, ms per iteration with 128 channels: rasterize_features forward + a loss (--loss: L1 against a
 //    random latent map, or the paper's loss from seg maps) + backward into the per-Gaussian latents
 //    (geometry frozen, paper 3.3); --blend-cache on reads the view's recorded blend weights (rasterize.h's
-//    BlendCache, recorded in the warm-up iteration) as train-language does on the CPU, off blends every iteration;
+//    BlendCache, recorded in the warm-up iteration) as train-language does on the CPU (the sparse field's cosine
+//    loss in one pass with its map: sparse_cosine_loss_recorded), separate the same with the map made and
+//    taken by the loss in passes of their own, off blends every iteration;
 // 2. querying, relevance maps per second at 1080p: render 128 channels, then every pixel's cosine of its
 //    decoded feature (shared autoencoder, 128 -> 256 -> 512) with one query feature, as `query` takes it
 //    (DecodedCosines: the hidden layer, then the last layer's triangular factor; src/query/relevance.h).
@@ -157,7 +159,7 @@ SegTargets make_seg_targets(int width, int height, int channels, at::Generator& 
 // and "sparse-warmup" (its first iterations: the softmax over all L bases splatted densely); "sparse-cosine" and
 // "sparse-cosine-warmup": the same with the cosine distance (sparse_loss.h, --sparse-distance cosine).
 Timing bench_sparse_training(const SceneSpec& spec, int bases, int top_k, bool warmup, bool cosine, bool blend_cache,
-                             int repeats, const at::Device& device) {
+                             bool fused, int repeats, const at::Device& device) {
   Scene s = make_scene(spec.gaussians, spec.width, spec.height, 42, device);
   if (blend_cache) s.settings.blend_cache = make_blend_cache();
   at::Generator gen = at::detail::createCPUGenerator(7);
@@ -169,18 +171,24 @@ Timing bench_sparse_training(const SceneSpec& spec, int bases, int top_k, bool w
   };
   const LanguageLossWeights weights;
   return with_cache_size(time_it(repeats, device, [&] {
+    const SegMapTarget sam{seg_map(seg.sam), seg.sam_table}, gml{seg_map(seg.gml), seg.gml_table};
     at::Tensor map;
+    LanguageLoss loss;
     if (warmup) {
       map = rasterize_features(s.means, s.scales, s.quats, s.opacities, at::softmax(logits, 1), at::Tensor(), s.settings).image;
     } else {
       const SparseWeights w = top_k_softmax(logits, top_k);
-      map = rasterize_sparse_features(s.means, s.scales, s.quats, s.opacities, w.weights, w.indices, bases, at::Tensor(),
-                                      s.settings).image;
+      if (fused && cosine && blend_cache_bytes(*s.settings.blend_cache) > 0)  // as train-language
+        loss = sparse_cosine_loss_recorded(s.means, s.scales, s.quats, s.opacities, w.weights, w.indices, s.settings,
+                                           codebook, sam, gml, seg.coverage, weights);
+      else
+        map = rasterize_sparse_features(s.means, s.scales, s.quats, s.opacities, w.weights, w.indices, bases,
+                                        at::Tensor(), s.settings).image;
     }
-    const SegMapTarget sam{seg_map(seg.sam), seg.sam_table}, gml{seg_map(seg.gml), seg.gml_table};
-    (cosine ? sparse_cosine_loss(map, codebook, sam, gml, seg.coverage, weights)
-            : language_loss_from_seg(at::matmul(map, codebook), sam, gml, seg.coverage, weights))
-        .total.backward();
+    if (map.defined())
+      loss = cosine ? sparse_cosine_loss(map, codebook, sam, gml, seg.coverage, weights)
+                    : language_loss_from_seg(at::matmul(map, codebook), sam, gml, seg.coverage, weights);
+    loss.total.backward();
     logits.mutable_grad().zero_();
     codebook.mutable_grad().zero_();
   }), s);
@@ -231,8 +239,10 @@ int bench_main(int argc, char** argv) {
       .bind("loss", losses, "training losses to time, comma-separated: l1, seg (train-language's), dense; sparse, "
                             "sparse-warmup (the sparse field's iterations, 512-d targets), sparse-cosine, "
                             "sparse-cosine-warmup (the same with --sparse-distance cosine)")
-      .bind("blend-cache", blend_caches, "training: off (blend every iteration), on (read the blend weights recorded "
-                                         "in the warm-up: train-language's CPU default), or both, comma-separated")
+      .bind("blend-cache", blend_caches, "training, comma-separated: off (blend every iteration), on (read the blend "
+                                         "weights recorded in the warm-up as train-language does on the CPU: the "
+                                         "sparse cosine loss in one pass with its map), separate (the same, map and "
+                                         "loss in passes of their own)")
       .bind("codebook-size", bases, "sparse: bases L")
       .bind("top-k", top_k, "sparse: weights per Gaussian K")
       .bind("query-scene", query_scene_text, "the relevance-map scene, N@WxH, or none")
@@ -254,9 +264,11 @@ int bench_main(int argc, char** argv) {
       throw UsageError("bench_language: --loss takes l1, seg, dense, sparse, sparse-warmup, sparse-cosine or "
                        "sparse-cosine-warmup, got '" + l + "'");
   for (const std::string& b : blend_caches)
-    if (b != "off" && b != "on") throw UsageError("bench_language: --blend-cache takes off and on, got '" + b + "'");
-  if (device.is_cuda() && std::find(blend_caches.begin(), blend_caches.end(), "on") != blend_caches.end())
-    throw UsageError("bench_language: --blend-cache on is for the CPU (pass --blend-cache off on CUDA)");
+    if (b != "off" && b != "on" && b != "separate")
+      throw UsageError("bench_language: --blend-cache takes off, on and separate, got '" + b + "'");
+  for (const std::string& b : blend_caches)
+    if (device.is_cuda() && b != "off")
+      throw UsageError("bench_language: --blend-cache " + b + " is for the CPU (pass --blend-cache off on CUDA)");
   for (const std::string& p : precisions)
     if (p != "highest" && p != "high" && p != "medium")
       throw UsageError("bench_language: --matmul-precision takes highest, high or medium, got '" + p + "'");
@@ -266,10 +278,11 @@ int bench_main(int argc, char** argv) {
   for (const SceneSpec& spec : train_scenes)
     for (const std::string& loss : losses)
       for (const std::string& cache : blend_caches) {
-        const bool on = cache == "on";
+        const bool on = cache != "off";
         const Timing t = loss.rfind("sparse", 0) == 0
                              ? bench_sparse_training(spec, bases, top_k, loss.find("warmup") != std::string::npos,
-                                                     loss.find("cosine") != std::string::npos, on, repeats, device)
+                                                     loss.find("cosine") != std::string::npos, on, cache == "on",
+                                                     repeats, device)
                              : bench_training(spec, channels, loss, on, repeats, device);
         char size[32] = "";
         if (on) std::snprintf(size, sizeof size, " (%.1f MiB)", t.cache_mb);

@@ -511,6 +511,8 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
       LanguageLoss loss;
       if (sparse) {  // the rendered weights times the codebook: the features the targets are compared with
         const at::Tensor& logits = adam.group(adam_name(level)).param;
+        const at::Tensor& book = adam.group(codebook_name(level)).param;
+        const bool cosine = o.sparse_distance == "cosine";
         // The first iterations splat the softmax over all bases, so that every logit learns which bases fit
         // before the top K are kept (from random logits a Gaussian's K would hold the right basis by chance).
         at::Tensor map;
@@ -518,13 +520,16 @@ LanguageTrainReport train_language(const Scene& scene, const LanguageTrainOption
           map = rasterize_features(means, scales, quats, opacities, at::softmax(logits, 1), at::Tensor(), settings).image;
         } else {
           const SparseWeights w = top_k_softmax(logits, o.top_k);
-          map = rasterize_sparse_features(means, scales, quats, opacities, w.weights, w.indices, latent, at::Tensor(),
-                                          settings).image;
+          if (cosine && settings.blend_cache && blend_cache_bytes(*settings.blend_cache) > 0)  // the view's weights:
+            loss = sparse_cosine_loss_recorded(means, scales, quats, opacities, w.weights, w.indices, settings, book,
+                                               sam_target, gml_target, v.coverage, weights);  // map and loss at once
+          else
+            map = rasterize_sparse_features(means, scales, quats, opacities, w.weights, w.indices, latent,
+                                            at::Tensor(), settings).image;
         }
-        const at::Tensor& book = adam.group(codebook_name(level)).param;
-        loss = o.sparse_distance == "cosine"
-                   ? sparse_cosine_loss(map, book, sam_target, gml_target, v.coverage, weights)
-                   : language_loss_from_seg(at::matmul(map, book), sam_target, gml_target, v.coverage, weights);
+        if (map.defined())
+          loss = cosine ? sparse_cosine_loss(map, book, sam_target, gml_target, v.coverage, weights)
+                        : language_loss_from_seg(at::matmul(map, book), sam_target, gml_target, v.coverage, weights);
       } else {
         const at::Tensor rendered = rasterize_features(means, scales, quats, opacities,
                                                        splatted(adam.group(adam_name(level)).param, o), at::Tensor(),

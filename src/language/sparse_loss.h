@@ -16,6 +16,7 @@
 #include <ATen/core/Tensor.h>
 
 #include "language/language_loss.h"
+#include "splat/rasterize.h"
 
 namespace cls {
 
@@ -30,6 +31,20 @@ namespace cls {
 // sparse_cosine_loss_reference, whose LibTorch operations make a dozen H W x L tensors and their backward.
 LanguageLoss sparse_cosine_loss(const at::Tensor& weight_map, const at::Tensor& codebook, const SegMapTarget& sam,
                                 const SegMapTarget& gml, const at::Tensor& coverage, const LanguageLossWeights& weights);
+
+// sparse_cosine_loss of the weight map rasterize_sparse_features(means, scales, quats, opacities, weights, indices,
+// L, {}, settings) renders (L: the codebook's rows), taken from the blend weights settings.blend_cache recorded
+// (recorded_blend_weights) in one pass over the tiles with the rendering and its backward
+// (rasterize_recorded_loss_cpu): the H x W x L map and its gradient are never made. `total` is differentiable with
+// respect to `weights` (N x K) and the codebook; the same loss and gradients as rendering, then
+// sparse_cosine_loss, within rounding. CPU tensors, geometry as the cache recorded it (contiguous); cls::Error
+// when the cache holds no weights yet (record them with a call of rasterize_sparse_features), when they are not
+// of these Gaussians or this view, and as sparse_cosine_loss.
+LanguageLoss sparse_cosine_loss_recorded(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
+                                         const at::Tensor& opacities, const at::Tensor& weights,
+                                         const at::Tensor& indices, const RasterizeSettings& settings,
+                                         const at::Tensor& codebook, const SegMapTarget& sam, const SegMapTarget& gml,
+                                         const at::Tensor& coverage, const LanguageLossWeights& loss_weights);
 
 // The same loss as LibTorch operations, every term differentiable: the GPU's path and the CPU pass's reference.
 LanguageLoss sparse_cosine_loss_reference(const at::Tensor& weight_map, const at::Tensor& codebook,

@@ -90,20 +90,27 @@ bool same_camera(const SplatCamera<T>& a, const SplatCamera<T>& b) {
          a.cy == b.cy && a.width == b.width && a.height == b.height;
 }
 
-// The forward of `in` through the cache: from its recorded weights (checked to be of this geometry and camera),
-// or, when it is empty, the walk, recording them. Returns the weights, for the backward and the radii.
+// The cache's weights, checked to be of this geometry, camera and dtype, or null when nothing was recorded.
+template <class T>
+const BlendWeights<T>* checked_weights(BlendCache& cache, const Geometry& geometry, const SplatCamera<T>& cam) {
+  if (!cache.weights_float && !cache.weights_double) return nullptr;
+  const BlendWeights<T>* bw = cache.weights<T>().get();
+  if (!bw) throw Error("rasterize: the blend cache was recorded for another dtype");
+  if (!same_memory(cache.geometry, geometry))
+    throw Error("rasterize: the blend cache was recorded for other Gaussians (keep one cache per view and geometry)");
+  if (cache.version != geometry_version(geometry))
+    throw Error("rasterize: the Gaussians changed since the blend cache was recorded (it is for frozen geometry)");
+  if (!same_camera(bw->cam, cam))
+    throw Error("rasterize: the blend cache was recorded for another camera (keep one per view)");
+  return bw;
+}
+
+// The forward of `in` through the cache: from its recorded weights (checked_weights), or, when it is empty,
+// the walk, recording them. Returns the weights, for the backward and the radii.
 template <class T>
 const BlendWeights<T>& forward_through_cache(BlendCache& cache, const Geometry& geometry, const SplatCamera<T>& cam,
                                              const SplatInputs<T>& in, T* image, T* alpha, T* depth) {
-  if (cache.weights_float || cache.weights_double) {
-    const BlendWeights<T>* bw = cache.weights<T>().get();
-    if (!bw) throw Error("rasterize: the blend cache was recorded for another dtype");
-    if (!same_memory(cache.geometry, geometry))
-      throw Error("rasterize: the blend cache was recorded for other Gaussians (keep one cache per view and geometry)");
-    if (cache.version != geometry_version(geometry))
-      throw Error("rasterize: the Gaussians changed since the blend cache was recorded (it is for frozen geometry)");
-    if (!same_camera(bw->cam, cam))
-      throw Error("rasterize: the blend cache was recorded for another camera (keep one per view)");
+  if (const BlendWeights<T>* bw = checked_weights(cache, geometry, cam)) {
     rasterize_forward_recorded_cpu(*bw, in, image, alpha, depth);
     return *bw;
   }
@@ -490,5 +497,24 @@ RasterizeOutput rasterize_sparse_cosines(const at::Tensor& means, const at::Tens
   });
   return out;
 }
+
+template <class T>
+const BlendWeights<T>* recorded_blend_weights(const at::Tensor& means, const at::Tensor& scales,
+                                              const at::Tensor& quats, const at::Tensor& opacities,
+                                              const RasterizeSettings& settings) {
+  if (!settings.blend_cache) return nullptr;
+  check_inputs(means, scales, quats, opacities, settings);
+  check_cache_inputs(means, scales, quats, opacities);
+  if (means.scalar_type() != c10::CppTypeToScalarType<T>::value)
+    throw Error("recorded_blend_weights: the Gaussians' dtype is not the one asked for");
+  return checked_weights<T>(*settings.blend_cache, {means, scales, quats, opacities},
+                            make_splat_camera<T>(settings.camera, settings.pose));
+}
+template const BlendWeights<float>* recorded_blend_weights<float>(const at::Tensor&, const at::Tensor&,
+                                                                  const at::Tensor&, const at::Tensor&,
+                                                                  const RasterizeSettings&);
+template const BlendWeights<double>* recorded_blend_weights<double>(const at::Tensor&, const at::Tensor&,
+                                                                    const at::Tensor&, const at::Tensor&,
+                                                                    const RasterizeSettings&);
 
 }  // namespace cls

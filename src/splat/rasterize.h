@@ -38,6 +38,16 @@ struct RasterizeSettings {
   std::shared_ptr<BlendCache> blend_cache;
 };
 
+// The weights settings.blend_cache holds (rasterize_cpu.h), checked to be of these Gaussians (CPU, contiguous, dtype
+// T), this camera and pose as a call through the cache checks them (cls::Error otherwise); null without a cache
+// or before a call recorded it. For passes of their own over the weights (rasterize_recorded_loss_cpu).
+template <class T>
+struct BlendWeights;
+template <class T>
+const BlendWeights<T>* recorded_blend_weights(const at::Tensor& means, const at::Tensor& scales,
+                                              const at::Tensor& quats, const at::Tensor& opacities,
+                                              const RasterizeSettings& settings);
+
 struct RasterizeOutput {
   at::Tensor image;  // H x W x C (channel-last)
   at::Tensor alpha;  // H x W, 1 - final transmittance

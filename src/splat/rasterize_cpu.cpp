@@ -216,12 +216,21 @@ struct TileScratch {
   std::vector<int32_t> slot_of;       // recording: a list entry's index in the tile's ids
   std::vector<TileGaussian<T>> list;
   SubTileLists sub;
+  std::vector<int64_t> tile_pixels;      // rasterize_recorded_loss_cpu: the tile's pixels,
+  std::vector<T> tile_image, tile_grad;  // its image and dL/dimage (TileLoss's rows)
 };
 
 // The pixel of lane l of the sub-tile whose first pixel is (sx, sy), or -1 outside the image.
 [[gnu::always_inline]] inline int64_t lane_pixel(const int sx, const int sy, const int l, const int x1, const int y1, const int width) {
   const int px = sx + l % kLaneSide, py = sy + l / kLaneSide;
   return px < x1 && py < y1 ? static_cast<int64_t>(py) * width + px : -1;
+}
+
+// Lane l's row among a tile's own pixels, row by row (TileLoss's rows), or -1 outside the image.
+[[gnu::always_inline]] inline int64_t lane_tile_row(const int sx, const int sy, const int l, const int x0, const int y0,
+                                                    const int x1, const int y1) {
+  const int px = sx + l % kLaneSide, py = sy + l / kLaneSide;
+  return px < x1 && py < y1 ? static_cast<int64_t>(py - y0) * (x1 - x0) + (px - x0) : -1;
 }
 
 // Pixel centres of the sub-tile's lanes.
@@ -421,8 +430,8 @@ template <class T, int kC, int kBytes>
   if (rec) finish_recorded_tile<T>(*rec, list, s.slot_of);
 }
 
-// The forward of one tile from recorded weights (forward_tile's sums without the walk). Run-time channel
-// counts only.
+// The forward of one tile from recorded weights (forward_tile's sums without the walk) into j.image, or with
+// `tile_image` into the tile's own rows (lane_tile_row). Run-time channel counts only.
 template <class T>
 struct RecordedForwardJob {
   const BlendWeights<T>& bw;
@@ -436,7 +445,8 @@ struct RecordedForwardJob {
 };
 
 template <class T, int kBytes>
-[[gnu::always_inline]] inline void recorded_forward_tile(const RecordedForwardJob<T>& j, int tile, TileScratch<T>& s) {
+[[gnu::always_inline]] inline void recorded_forward_tile(const RecordedForwardJob<T>& j, int tile, TileScratch<T>& s,
+                                                        T* tile_image = nullptr) {
   using V = Lanes<T>;
   const SplatCamera<T>& cam = j.bw.cam;
   const typename BlendWeights<T>::Tile& rec = j.bw.tiles[tile];
@@ -448,10 +458,11 @@ template <class T, int kBytes>
   for (int sy = y0; sy < y1; sy += kSubTile)
   for (int sx = x0; sx < x1; sx += kSubTile) {
     const int q = (sy - y0) / kSubTile * kSubTilesPerSide + (sx - x0) / kSubTile;
-    int64_t pixel[kLanes];
+    int64_t pixel[kLanes], row[kLanes];
     V Tr;
     for (int l = 0; l < kLanes; ++l) {
       pixel[l] = lane_pixel(sx, sy, l, x1, y1, cam.width);
+      row[l] = tile_image ? lane_tile_row(sx, sy, l, x0, y0, x1, y1) : pixel[l];
       Tr[l] = pixel[l] < 0 ? T(1) : j.bw.final_T[pixel[l]];
     }
     for (int c = 0; c < j.C; ++c) acc[c] = V{};
@@ -462,7 +473,8 @@ template <class T, int kBytes>
       add_value_sums<kBytes>(sums, w, rec.ids[rec.slot[e]]);
     }
     finish_value_sums<kBytes>(sums);
-    write_subtile_image<kBytes>(acc, j.C, Tr, j.bg, j.cosines, rec.end[q] > rec.begin[q], s, pixel, j.image);
+    write_subtile_image<kBytes>(acc, j.C, Tr, j.bg, j.cosines, rec.end[q] > rec.begin[q], s, row,
+                                tile_image ? tile_image : j.image);
   }
 }
 
@@ -587,6 +599,17 @@ template <class T>
 #pragma omp simd
   for (int c = 0; c < nv; ++c) vg[c] += values[c];
   out.locks.unlock(id);
+}
+
+// A thread's own sums of Gaussian id (GradientSink::thread_value_grad), fetched ahead of add_gaussian_grads: read
+// by Gaussian id, scattered over N rows, they missed the cache (a fifth of rasterize_recorded_loss_cpu waited for
+// them; prefetching the forward's values the same way gained nothing). Backwards prefetch kPrefetchAhead
+// Gaussians ahead.
+constexpr int kPrefetchAhead = 8;
+template <class T>
+[[gnu::always_inline]] inline void prefetch_gaussian_grads(const GradientSink<T>& out, int32_t id, int nv) {
+  if (out.thread_value_grad)
+    __builtin_prefetch(out.thread_value_grad + omp_get_thread_num() * out.thread_stride + static_cast<size_t>(id) * nv, 1);
 }
 
 template <class T, int kC, int kBytes>
@@ -731,6 +754,7 @@ template <class T, int kC, int kBytes>
     }
   }
   for (int k = 0; k < L; ++k) {
+    if (k + kPrefetchAhead < L) prefetch_gaussian_grads(j.sink, list[k + kPrefetchAhead].id, nv);
     if (!touched[k]) continue;
     const T* e = buf.data() + static_cast<size_t>(k) * S;
     add_gaussian_grads(j.sink, list[k].id, geometry ? e : nullptr, kC > 0 ? e + 9 : finish_entry_value_grads(vgrads, k),
@@ -738,8 +762,8 @@ template <class T, int kC, int kBytes>
   }
 }
 
-// The backward of one tile from recorded weights (backward_tile's value gradients without the walk). Run-time
-// channel counts only.
+// The backward of one tile from recorded weights (backward_tile's value gradients without the walk) of
+// j.dL_dimage, or with `tile_grad` of the tile's own rows (lane_tile_row). Run-time channel counts only.
 template <class T>
 struct RecordedBackwardJob {
   const BlendWeights<T>& bw;
@@ -751,7 +775,8 @@ struct RecordedBackwardJob {
 };
 
 template <class T, int kBytes>
-[[gnu::always_inline]] inline void recorded_backward_tile(const RecordedBackwardJob<T>& j, int tile, TileScratch<T>& s) {
+[[gnu::always_inline]] inline void recorded_backward_tile(const RecordedBackwardJob<T>& j, int tile, TileScratch<T>& s,
+                                                         const T* tile_grad = nullptr) {
   using V = Lanes<T>;
   const SplatCamera<T>& cam = j.bw.cam;
   const typename BlendWeights<T>::Tile& rec = j.bw.tiles[tile];
@@ -760,7 +785,8 @@ template <class T, int kBytes>
   const int tx = tile % cam.tiles_x(), ty = tile / cam.tiles_x();
   const int x0 = tx * kTileSize, y0 = ty * kTileSize;
   const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
-  const EntryValueGrads<T> vgrads = entry_value_grads(j.dL_dimage, j.index, j.nv, j.C, n_ids, s);
+  const T* const dL_dimage = tile_grad ? tile_grad : j.dL_dimage;
+  const EntryValueGrads<T> vgrads = entry_value_grads(dL_dimage, j.index, j.nv, j.C, n_ids, s);
   s.touched.assign(n_ids, 0);
   s.dpix.resize(j.C);
   V* const dpix = &s.dpix.data()->v;
@@ -768,12 +794,13 @@ template <class T, int kBytes>
   for (int sx = x0; sx < x1; sx += kSubTile) {
     const int q = (sy - y0) / kSubTile * kSubTilesPerSide + (sx - x0) / kSubTile;
     if (rec.end[q] == rec.begin[q]) continue;
-    int64_t pixel[kLanes];
+    int64_t row[kLanes];
     for (int l = 0; l < kLanes; ++l) {
-      const int64_t pix = pixel[l] = lane_pixel(sx, sy, l, x1, y1, cam.width);
+      const int64_t pix = lane_pixel(sx, sy, l, x1, y1, cam.width);
+      row[l] = tile_grad ? lane_tile_row(sx, sy, l, x0, y0, x1, y1) : pix;
       // blended into (the walk's n_contrib > 0): each entry that adds lowers T below 1; dense values' sums read
       // dL/dimage's rows themselves (add_lane_rows)
-      if (j.index) load_pixel_grads(j.dL_dimage, j.C, l, pix, pix >= 0 && j.bw.final_T[pix] < T(1), dpix);
+      if (j.index) load_pixel_grads(dL_dimage, j.C, l, row[l], pix >= 0 && j.bw.final_T[pix] < T(1), dpix);
     }
     for (int e = rec.begin[q]; e < rec.end[q]; ++e) {
       V w;
@@ -781,11 +808,38 @@ template <class T, int kBytes>
       const int k = rec.slot[e];
       const bool first = !s.touched[k];
       s.touched[k] = 1;
-      add_entry_value_grads<kBytes>(vgrads, k, rec.ids[k], first, w, lane_less<kBytes>(V{}, w), dpix, pixel);
+      add_entry_value_grads<kBytes>(vgrads, k, rec.ids[k], first, w, lane_less<kBytes>(V{}, w), dpix, row);
     }
   }
-  for (int k = 0; k < n_ids; ++k) add_gaussian_grads(j.sink, rec.ids[k], static_cast<const T*>(nullptr),
-                                                     finish_entry_value_grads(vgrads, k), j.nv);
+  for (int k = 0; k < n_ids; ++k) {
+    if (k + kPrefetchAhead < n_ids) prefetch_gaussian_grads(j.sink, rec.ids[k + kPrefetchAhead], j.nv);
+    add_gaussian_grads(j.sink, rec.ids[k], static_cast<const T*>(nullptr), finish_entry_value_grads(vgrads, k), j.nv);
+  }
+}
+
+// rasterize_recorded_loss_cpu's tile: its forward into the tile's rows, the loss, its backward from them.
+template <class T>
+struct RecordedLossJob {
+  RecordedForwardJob<T> forward;    // image: none
+  RecordedBackwardJob<T> backward;  // dL_dimage: none
+  TileLoss<T>& loss;
+};
+
+template <class T, int kBytes>
+[[gnu::always_inline]] inline void recorded_loss_tile(const RecordedLossJob<T>& j, int tile, TileScratch<T>& s) {
+  const SplatCamera<T>& cam = j.forward.bw.cam;
+  const int tx = tile % cam.tiles_x(), ty = tile / cam.tiles_x();
+  const int x0 = tx * kTileSize, y0 = ty * kTileSize;
+  const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
+  const int rows = (x1 - x0) * (y1 - y0);
+  s.tile_pixels.resize(rows);
+  for (int y = y0, r = 0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) s.tile_pixels[r++] = static_cast<int64_t>(y) * cam.width + x;
+  s.tile_image.resize(static_cast<size_t>(rows) * j.forward.C);
+  s.tile_grad.resize(s.tile_image.size());
+  recorded_forward_tile<T, kBytes>(j.forward, tile, s, s.tile_image.data());
+  j.loss.tile(s.tile_pixels.data(), rows, s.tile_image.data(), s.tile_grad.data());
+  recorded_backward_tile<T, kBytes>(j.backward, tile, s, s.tile_grad.data());
 }
 
 // The tile kernels per instruction set. The 16 pixel lanes run as 4 registers in the x86-64 baseline (SSE2),
@@ -813,6 +867,10 @@ using BackwardTileFn = void (*)(const BackwardTileJob<T>&, int, TileScratch<T>&)
   template <class T>                                                                                     \
   ATTRIBUTE void recorded_backward_tile_##NAME(const RecordedBackwardJob<T>& j, int tile, TileScratch<T>& s) { \
     recorded_backward_tile<T, REGISTER_BYTES>(j, tile, s);                                               \
+  }                                                                                                      \
+  template <class T>                                                                                     \
+  ATTRIBUTE void recorded_loss_tile_##NAME(const RecordedLossJob<T>& j, int tile, TileScratch<T>& s) {   \
+    recorded_loss_tile<T, REGISTER_BYTES>(j, tile, s);                                                   \
   }
 CLS_TILE_KERNELS(baseline, , 16)
 #if CLS_X86_KERNELS
@@ -832,18 +890,22 @@ std::pair<ForwardTileFn<T>, BackwardTileFn<T>> tile_kernels_for(CpuKernels k) {
 }
 
 template <class T>
-using RecordedForwardFn = void (*)(const RecordedForwardJob<T>&, int, TileScratch<T>&);
-template <class T>
-using RecordedBackwardFn = void (*)(const RecordedBackwardJob<T>&, int, TileScratch<T>&);
+struct RecordedTileKernels {
+  void (*forward)(const RecordedForwardJob<T>&, int, TileScratch<T>&);
+  void (*backward)(const RecordedBackwardJob<T>&, int, TileScratch<T>&);
+  void (*loss)(const RecordedLossJob<T>&, int, TileScratch<T>&);
+};
 
 template <class T>
-std::pair<RecordedForwardFn<T>, RecordedBackwardFn<T>> recorded_tile_kernels() {
+RecordedTileKernels<T> recorded_tile_kernels() {
 #if CLS_X86_KERNELS
   const CpuKernels k = cpu_kernels();
-  if (k == CpuKernels::X86_64_V4) return {&recorded_forward_tile_v4<T>, &recorded_backward_tile_v4<T>};
-  if (k == CpuKernels::X86_64_V3) return {&recorded_forward_tile_v3<T>, &recorded_backward_tile_v3<T>};
+  if (k == CpuKernels::X86_64_V4)
+    return {&recorded_forward_tile_v4<T>, &recorded_backward_tile_v4<T>, &recorded_loss_tile_v4<T>};
+  if (k == CpuKernels::X86_64_V3)
+    return {&recorded_forward_tile_v3<T>, &recorded_backward_tile_v3<T>, &recorded_loss_tile_v3<T>};
 #endif
-  return {&recorded_forward_tile_baseline<T>, &recorded_backward_tile_baseline<T>};
+  return {&recorded_forward_tile_baseline<T>, &recorded_backward_tile_baseline<T>, &recorded_loss_tile_baseline<T>};
 }
 
 // RGB and one channel have their own fixed-size builds; other counts loop at run time.
@@ -1123,7 +1185,7 @@ void rasterize_forward_recorded_cpu(const BlendWeights<T>& bw, const SplatInputs
   std::copy(bw.depth.begin(), bw.depth.end(), depth);
   const RecordedForwardJob<T> job{bw, in.features, in.channels, in.background, in.feature_index, value_count(in),
                                   in.cosines, image};
-  run_tiles(bw.cam, recorded_tile_kernels<T>().first, job);
+  run_tiles(bw.cam, recorded_tile_kernels<T>().forward, job);
 }
 
 template <class T>
@@ -1136,7 +1198,25 @@ void rasterize_backward_recorded_cpu(const BlendWeights<T>& bw, const SplatInput
   const size_t value_rows = static_cast<size_t>(in.n) * value_count(in);
   const RecordedBackwardJob<T> job{bw, in.channels, in.feature_index, value_count(in), dL_dimage,
                                    {nullptr, features_grad, locks, copies.empty() ? nullptr : copies.data(), value_rows}};
-  run_tiles(bw.cam, recorded_tile_kernels<T>().second, job);
+  run_tiles(bw.cam, recorded_tile_kernels<T>().backward, job);
+  add_thread_copies(copies, value_rows, features_grad);
+}
+
+template <class T>
+void rasterize_recorded_loss_cpu(const BlendWeights<T>& bw, const SplatInputs<T>& in, TileLoss<T>& loss,
+                                 T* features_grad) {
+  check_recorded(bw, in, "rasterize_recorded_loss_cpu");
+  if (in.cosines.count > 0 || in.background)
+    throw std::invalid_argument("rasterize_recorded_loss_cpu: a loss of the features on a zero background only");
+  StripedLocks locks;
+  std::vector<T> copies = thread_value_copies(false, in);
+  const size_t value_rows = static_cast<size_t>(in.n) * value_count(in);
+  const RecordedLossJob<T> job{
+      {bw, in.features, in.channels, nullptr, in.feature_index, value_count(in), {}, nullptr},
+      {bw, in.channels, in.feature_index, value_count(in), nullptr,
+       {nullptr, features_grad, locks, copies.empty() ? nullptr : copies.data(), value_rows}},
+      loss};
+  run_tiles(bw.cam, recorded_tile_kernels<T>().loss, job);
   add_thread_copies(copies, value_rows, features_grad);
 }
 
@@ -1219,6 +1299,7 @@ void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>
   template struct BlendWeights<T>;                                                                       \
   template void rasterize_forward_recorded_cpu<T>(const BlendWeights<T>&, const SplatInputs<T>&, T*, T*, T*); \
   template void rasterize_backward_recorded_cpu<T>(const BlendWeights<T>&, const SplatInputs<T>&, const T*, T*); \
+  template void rasterize_recorded_loss_cpu<T>(const BlendWeights<T>&, const SplatInputs<T>&, TileLoss<T>&, T*); \
   template void rasterize_backward_cpu<T>(const SplatInputs<T>&, const SplatForwardState<T>&, const T*, \
                                           const T*, const T*, SplatGradients<T>&);
 CLS_INSTANTIATE_SPLAT(float)

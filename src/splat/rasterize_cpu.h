@@ -115,6 +115,27 @@ template <class T>
 void rasterize_backward_recorded_cpu(const BlendWeights<T>& weights, const SplatInputs<T>& in, const T* dL_dimage,
                                      T* features_grad);
 
+// A loss of the image, taken a tile at a time inside rasterize_recorded_loss_cpu: for a tile's `rows` pixels
+// (pixels[r]: row r's index in the H x W image, the tile's pixels row by row) their image rows x C in, their
+// dL/dimage rows x C out. Called for every tile, from several threads at once (omp_get_thread_num() tells
+// them apart; the calls of one thread do not overlap).
+template <class T>
+struct TileLoss {
+  virtual ~TileLoss() = default;
+  virtual void tile(const int64_t* pixels, int rows, const T* image, T* dL_dimage) = 0;
+};
+
+// rasterize_forward_recorded_cpu, `loss` on its image and rasterize_backward_recorded_cpu of the loss's
+// dL/dimage in one pass over the tiles: each tile's image and gradient stay in the thread's cache and its
+// recorded weights are read a second time from there (separately, the H x W x C image and its gradient are
+// written and read back through memory, and every weight is read from memory twice). The same features'
+// gradient (zero-initialised by the caller, N x C or N x nnz) as the three steps, within rounding (the loss
+// sees tiles, not the whole image, so sums it keeps over pixels may add in another order). Features without
+// background or cosines; std::invalid_argument as rasterize_forward_recorded_cpu, or for those.
+template <class T>
+void rasterize_recorded_loss_cpu(const BlendWeights<T>& weights, const SplatInputs<T>& in, TileLoss<T>& loss,
+                                 T* features_grad);
+
 // Gradients (each zero-initialised by the caller, shapes as the inputs): means, scales, quats,
 // opacities, sh or features; mean2d N x 2 (screen space, pixels) and its absolute per-pixel sum.
 template <class T>

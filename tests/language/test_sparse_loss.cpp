@@ -13,6 +13,8 @@
 #include "error_of.h"
 #include "language/sparse_loss.h"
 #include "omp_threads.h"
+#include "splat/rasterize.h"
+#include "splat/torch_scene.h"
 
 namespace cls {
 namespace {
@@ -186,6 +188,67 @@ TEST(SparseCosineLoss, PixelsNoGaussianReachesStayFinite) {
   loss.total.backward();
   EXPECT_TRUE(torch::isfinite(weights.grad()).all().item<bool>());
   EXPECT_TRUE(torch::isfinite(codebook.grad()).all().item<bool>());
+}
+
+// The loss taken in one pass with the map from a view's recorded blend weights (sparse_cosine_loss_recorded) against
+// the map rendered from them, then the one-pass loss: the terms and the gradients of the splatted weights and the
+// codebook, double and float, one and two threads, both weightings; uncovered pixels included (few Gaussians at
+// the edges). Before a call recorded the weights, and for another view, an error.
+TEST(SparseCosineLoss, RecordedPassEqualsTheRenderedMapsLoss) {
+  constexpr int L = 8, D = 12, K = 3;
+  for (const torch::Dtype dtype : {torch::kFloat64, torch::kFloat32})
+  for (const int threads : {1, 2})
+  for (const LanguageLossWeights lw : {LanguageLossWeights{1.0, 0.5, false}, LanguageLossWeights{1.0, 0.5, true}}) {
+    const test::ScopedOmpThreads use(threads);
+    const std::string what = std::string(dtype == torch::kFloat64 ? "double" : "float") + (lw.baseline ? ", baseline" : "");
+    TorchScene t = torch_scene(false, L, 72, dtype, 40, 70, 50);
+    t.settings.background = torch::Tensor();
+    t.settings.blend_cache = make_blend_cache();
+    torch::manual_seed(73);
+    const int64_t n = t.means.size(0), h = t.settings.camera.height, w = t.settings.camera.width;
+    const at::Tensor weights = torch::rand({n, K}, torch::kFloat64).to(dtype) + 0.05;
+    const at::Tensor indices = torch::randint(0, L, {n, K}, torch::kInt32);
+    const at::Tensor codebook = torch::randn({L, D}, torch::kFloat64).to(dtype);
+    const SegMapTarget sam{torch::randint(-1, 6, {h, w}, torch::kInt), torch::randn({6, D}, torch::kFloat64).to(dtype)};
+    const SegMapTarget gml{torch::randint(-1, 4, {h, w}, torch::kInt), torch::randn({4, D}, torch::kFloat64).to(dtype)};
+    const at::Tensor coverage = torch::randint(0, 2, {h, w}, torch::kFloat64).to(dtype);
+    auto recorded = [&](const at::Tensor& x, const at::Tensor& book, const RasterizeSettings& s) {
+      return sparse_cosine_loss_recorded(t.means, t.scales, t.quats, t.opacities, x, indices, s, book, sam, gml,
+                                         coverage, lw);
+    };
+    EXPECT_NE(test::error_of([&] { recorded(weights, codebook, t.settings); }).find("holds no weights yet"),
+              std::string::npos) << what;
+    LanguageLoss losses[2];
+    at::Tensor grads[2][2];
+    for (int f = 0; f < 2; ++f) {  // the map rendered (and the weights recorded), then the pass
+      const at::Tensor x = weights.clone().requires_grad_(true), book = codebook.clone().requires_grad_(true);
+      if (f == 0) {
+        const at::Tensor map = rasterize_sparse_features(t.means, t.scales, t.quats, t.opacities, x, indices, L, {},
+                                                         t.settings).image;
+        ASSERT_GT((map.abs().sum(2) == 0).sum().item<int64_t>(), 0) << "the scene must leave pixels uncovered";
+        losses[f] = sparse_cosine_loss(map, book, sam, gml, coverage, lw);
+      } else {
+        losses[f] = recorded(x, book, t.settings);
+      }
+      losses[f].total.backward();
+      grads[f][0] = x.grad(), grads[f][1] = book.grad();
+    }
+    const double tol = dtype == torch::kFloat64 ? 1e-12 : 1e-5;
+    EXPECT_NEAR(losses[1].total.item<double>(), losses[0].total.item<double>(), tol) << what;
+    EXPECT_NEAR(losses[1].sam.item<double>(), losses[0].sam.item<double>(), tol) << what;
+    EXPECT_NEAR(losses[1].sam_gml.item<double>(), losses[0].sam_gml.item<double>(), tol) << what;
+    EXPECT_NEAR(losses[1].citygml.item<double>(), losses[0].citygml.item<double>(), tol) << what;
+    for (int g = 0; g < 2; ++g) {
+      const double scale = grads[0][g].abs().max().item<double>();
+      ASSERT_GT(scale, 0.0) << what;
+      EXPECT_LT((grads[1][g] - grads[0][g]).abs().max().item<double>(), tol * scale * 10)
+          << what << (g ? ", codebook" : ", weights");
+    }
+    RasterizeSettings moved = t.settings;
+    moved.pose.t.x += 0.1;
+    EXPECT_NE(test::error_of([&] { recorded(weights, codebook, moved); }).find("another camera"), std::string::npos)
+        << what;
+  }
 }
 
 TEST(SparseCosineLoss, BadInputsAreErrorsNamingWhat) {

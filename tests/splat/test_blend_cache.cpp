@@ -6,7 +6,13 @@
 #include <gtest/gtest.h>
 #include <torch/torch.h>
 
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <random>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 #include "core/error.h"
 #include "omp_threads.h"
@@ -224,6 +230,83 @@ TEST(BlendCache, CosinesFromRecordedWeightsAreTheWalks) {
     EXPECT_TRUE(torch::equal(a.alpha, b.alpha)) << "call " << call;
     EXPECT_TRUE(torch::equal(a.depth, b.depth)) << "call " << call;
     EXPECT_TRUE(torch::equal(a.radii, b.radii)) << "call " << call;
+  }
+}
+
+// A loss taken tile by tile (rasterize_recorded_loss_cpu): 1/2 |image - target|^2, so dL/dimage = image - target
+// depends on the image the pass gave it. Counts the calls per pixel and keeps the image rows it was given.
+template <class T>
+struct SquaredLoss : TileLoss<T> {
+  SquaredLoss(const std::vector<T>& target_, int channels) : target(target_), C(channels), image(target_.size()),
+                                                             calls(target_.size() / channels) {}
+  void tile(const int64_t* pixels, int rows, const T* rows_image, T* dL_dimage) override {
+    for (int r = 0; r < rows; ++r) {
+      const int64_t p = pixels[r];
+      ++calls[p];
+      for (int c = 0; c < C; ++c) {
+        image[p * C + c] = rows_image[r * C + c];
+        dL_dimage[r * C + c] = rows_image[r * C + c] - target[p * C + c];
+      }
+    }
+  }
+  const std::vector<T>& target;
+  int C;
+  std::vector<T> image;
+  std::vector<std::atomic<int>> calls;
+};
+
+// The pass of forward, loss and backward over each tile in turn gives every pixel to the loss once, with the
+// recorded forward's image row, and the recorded backward's gradient of the loss's dL/dimage: to the bit on one
+// thread, within rounding on more (the order threads add a Gaussian's sums). Dense and sparse features.
+template <class T>
+void check_loss_pass(bool sparse, int threads) {
+  const test::ScopedOmpThreads use_threads(threads);
+  constexpr int C = 12, K = 3;
+  const test::RandomScene s = test::random_scene(45, 90, 70, C, false, 66, 0.7);
+  test::SceneArrays<T> arrays = test::scene_arrays<T>(s);
+  SplatInputs<T> in = arrays.inputs(s, false);
+  std::mt19937 rng(67);
+  std::normal_distribution<double> normal;
+  std::vector<int32_t> index;
+  std::vector<T> values;
+  if (sparse) {
+    for (int i = 0; i < s.n * K; ++i) index.push_back(int32_t(rng() % C)), values.push_back(T(normal(rng)));
+    in.features = values.data(), in.feature_index = index.data(), in.nnz = K;
+  }
+  const size_t n_pix = size_t(s.cam.width) * s.cam.height, n_values = size_t(s.n) * (sparse ? K : C);
+  std::vector<T> image(n_pix * C), alpha(n_pix), depth(n_pix), target(n_pix * C);
+  for (T& t : target) t = T(normal(rng));
+  SplatForwardState<T> st;
+  BlendWeights<T> bw;
+  const SplatCamera<T> cam = test::cast_camera<T>(s.cam);
+  rasterize_forward_cpu(cam, in, image.data(), alpha.data(), depth.data(), st, &bw);
+  // the three steps
+  rasterize_forward_recorded_cpu(bw, in, image.data(), alpha.data(), depth.data());
+  std::vector<T> dL_dimage(n_pix * C), separate(n_values, T(0)), fused(n_values, T(0));
+  for (size_t i = 0; i < dL_dimage.size(); ++i) dL_dimage[i] = image[i] - target[i];
+  rasterize_backward_recorded_cpu(bw, in, dL_dimage.data(), separate.data());
+  // the pass
+  SquaredLoss<T> loss(target, C);
+  rasterize_recorded_loss_cpu(bw, in, loss, fused.data());
+  for (size_t p = 0; p < n_pix; ++p) ASSERT_EQ(loss.calls[p], 1) << "pixel " << p;
+  EXPECT_EQ(loss.image, image) << "the loss is given the recorded forward's image";
+  T largest = 0, error = 0;
+  for (size_t i = 0; i < n_values; ++i)
+    largest = std::max(largest, std::abs(separate[i])), error = std::max(error, std::abs(fused[i] - separate[i]));
+  ASSERT_GT(largest, T(0));
+  const T tol = threads == 1 ? T(0) : (std::is_same_v<T, double> ? T(1e-12) : T(1e-5));
+  EXPECT_LE(error, tol * largest) << (sparse ? "sparse" : "dense");
+  in.background = arrays.background.data();
+  EXPECT_THROW(rasterize_recorded_loss_cpu(bw, in, loss, fused.data()), std::invalid_argument) << "a background";
+}
+
+TEST(BlendCache, LossPassIsTheRecordedForwardTheLossAndTheRecordedBackward) {
+  for (CpuKernels k : available_cpu_kernels())
+  for (bool sparse : {false, true})
+  for (int threads : {1, 3}) {
+    const test::ScopedCpuKernels use(k);
+    check_loss_pass<double>(sparse, threads);
+    check_loss_pass<float>(sparse, threads);
   }
 }
 
