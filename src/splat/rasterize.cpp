@@ -122,13 +122,6 @@ const BlendWeights<T>& forward_through_cache(BlendCache& cache, const Geometry& 
   return *(cache.weights<T>() = std::move(recorded));
 }
 
-// radii[i]: Gaussian i's screen radius from the forward's projection, 0 where culled.
-template <class T>
-void fill_radii(const SplatForwardState<T>& state, at::Tensor& radii) {
-  int32_t* r = radii.data_ptr<int32_t>();
-  for (size_t i = 0; i < state.proj.size(); ++i) r[i] = state.proj[i].visible ? state.proj[i].radius : 0;
-}
-
 #ifdef CLS_WITH_CUDA
 // What a CUDA forward keeps for its backward.
 struct CudaSavedState {
@@ -219,7 +212,7 @@ class RasterizeFunction : public torch::autograd::Function<RasterizeFunction> {
       holder = torch::from_blob(state, {1}, [](void* p) { delete static_cast<SplatForwardState<T>*>(p); },
                                 torch::TensorOptions().dtype(torch::kUInt8));
       rasterize_forward_cpu(splat_cam, in, image.data_ptr<T>(), alpha.data_ptr<T>(), depth.data_ptr<T>(), *state);
-      fill_radii(*state, radii);
+      screen_radii(*state, radii.data_ptr<int32_t>());
     });
     }
     ctx->save_for_backward({means, scales, quats, opacities, values, index});
@@ -493,7 +486,7 @@ RasterizeOutput rasterize_sparse_cosines(const at::Tensor& means, const at::Tens
     SplatForwardState<T> state;
     rasterize_forward_cpu(splat_cam, in, out.image.data_ptr<T>(), out.alpha.data_ptr<T>(), out.depth.data_ptr<T>(),
                           state);
-    fill_radii(state, out.radii);
+    screen_radii(state, out.radii.data_ptr<int32_t>());
   });
   return out;
 }

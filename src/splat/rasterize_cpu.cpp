@@ -226,6 +226,16 @@ struct TileScratch {
   return px < x1 && py < y1 ? static_cast<int64_t>(py) * width + px : -1;
 }
 
+// The pixels of a tile: [x0, x1) x [y0, y1), clipped to the image.
+struct TileRect {
+  int x0, y0, x1, y1;
+};
+template <class T>
+TileRect tile_rect(const SplatCamera<T>& cam, int tile) {
+  const int x0 = tile % cam.tiles_x() * kTileSize, y0 = tile / cam.tiles_x() * kTileSize;
+  return {x0, y0, std::min(x0 + kTileSize, cam.width), std::min(y0 + kTileSize, cam.height)};
+}
+
 // Lane l's row among a tile's own pixels, row by row (TileLoss's rows), or -1 outside the image.
 [[gnu::always_inline]] inline int64_t lane_tile_row(const int sx, const int sy, const int l, const int x0, const int y0,
                                                     const int x1, const int y1) {
@@ -362,9 +372,7 @@ template <class T, int kC, int kBytes>
   const T* const values = j.values;
   std::vector<TileGaussian<T>>& list = s.list;
   const int nc = kC > 0 ? kC : j.C;
-  const int tx = tile % cam.tiles_x(), ty = tile / cam.tiles_x();
-  const int x0 = tx * kTileSize, y0 = ty * kTileSize;
-  const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
+  const auto [x0, y0, x1, y1] = tile_rect(cam, tile);
   gather_tile(j.st, j.gaussians, tile, list);
   subtile_lists(list, x0, y0, s.sub);
   typename BlendWeights<T>::Tile* const rec = j.record ? &j.record->tiles[tile] : nullptr;
@@ -450,9 +458,7 @@ template <class T, int kBytes>
   using V = Lanes<T>;
   const SplatCamera<T>& cam = j.bw.cam;
   const typename BlendWeights<T>::Tile& rec = j.bw.tiles[tile];
-  const int tx = tile % cam.tiles_x(), ty = tile / cam.tiles_x();
-  const int x0 = tx * kTileSize, y0 = ty * kTileSize;
-  const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
+  const auto [x0, y0, x1, y1] = tile_rect(cam, tile);
   s.acc.resize(j.C);
   V* const acc = &s.acc[0].v;
   for (int sy = y0; sy < y1; sy += kSubTile)
@@ -629,9 +635,7 @@ template <class T, int kC, int kBytes>
   const int nc = kC > 0 ? kC : j.C;
   const int S = 9 + kC;
   const int nv = j.nv;
-  const int tx = tile % cam.tiles_x(), ty = tile / cam.tiles_x();
-  const int x0 = tx * kTileSize, y0 = ty * kTileSize;
-  const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
+  const auto [x0, y0, x1, y1] = tile_rect(cam, tile);
   gather_tile(st, j.gaussians, tile, list);
   const int L = static_cast<int>(list.size());
   if (L == 0) return;
@@ -661,7 +665,7 @@ template <class T, int kC, int kBytes>
       dD[l] = covered && j.dL_ddepth ? j.dL_ddepth[pix] : T(0);
       load_pixel_grads(dL_dimage, nc, l, pix, covered, dpix);
       bg_dot[l] = T(0);
-      if (bg)
+      if (bg && geometry)  // the background's part of dL/dalpha (only the geometry's gradients read it)
         for (int c = 0; c < nc; ++c) bg_dot[l] += bg[c] * dpix[c][l];
     }
     if (n_max == 0) continue;
@@ -782,9 +786,7 @@ template <class T, int kBytes>
   const typename BlendWeights<T>::Tile& rec = j.bw.tiles[tile];
   const int n_ids = static_cast<int>(rec.ids.size());
   if (n_ids == 0) return;
-  const int tx = tile % cam.tiles_x(), ty = tile / cam.tiles_x();
-  const int x0 = tx * kTileSize, y0 = ty * kTileSize;
-  const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
+  const auto [x0, y0, x1, y1] = tile_rect(cam, tile);
   const T* const dL_dimage = tile_grad ? tile_grad : j.dL_dimage;
   const EntryValueGrads<T> vgrads = entry_value_grads(dL_dimage, j.index, j.nv, j.C, n_ids, s);
   s.touched.assign(n_ids, 0);
@@ -828,9 +830,7 @@ struct RecordedLossJob {
 template <class T, int kBytes>
 [[gnu::always_inline]] inline void recorded_loss_tile(const RecordedLossJob<T>& j, int tile, TileScratch<T>& s) {
   const SplatCamera<T>& cam = j.forward.bw.cam;
-  const int tx = tile % cam.tiles_x(), ty = tile / cam.tiles_x();
-  const int x0 = tx * kTileSize, y0 = ty * kTileSize;
-  const int x1 = std::min(x0 + kTileSize, cam.width), y1 = std::min(y0 + kTileSize, cam.height);
+  const auto [x0, y0, x1, y1] = tile_rect(cam, tile);
   const int rows = (x1 - x0) * (y1 - y0);
   s.tile_pixels.resize(rows);
   for (int y = y0, r = 0; y < y1; ++y)
@@ -1123,8 +1123,13 @@ void rasterize_forward_cpu(const SplatCamera<T>& cam, const SplatInputs<T>& in, 
     record->final_T = st.final_T;
     record->depth.assign(depth, depth + n_pix);
     record->radii.resize(N);
-    for (int i = 0; i < N; ++i) record->radii[i] = st.proj[i].visible ? st.proj[i].radius : 0;
+    screen_radii(st, record->radii.data());
   }
+}
+
+template <class T>
+void screen_radii(const SplatForwardState<T>& state, int32_t* radii) {
+  for (size_t i = 0; i < state.proj.size(); ++i) radii[i] = state.proj[i].visible ? state.proj[i].radius : 0;
 }
 
 template <class T>
@@ -1297,6 +1302,7 @@ void rasterize_backward_cpu(const SplatInputs<T>& in, const SplatForwardState<T>
   template void rasterize_forward_cpu<T>(const SplatCamera<T>&, const SplatInputs<T>&, T*, T*, T*,       \
                                          SplatForwardState<T>&, BlendWeights<T>*);                       \
   template struct BlendWeights<T>;                                                                       \
+  template void screen_radii<T>(const SplatForwardState<T>&, int32_t*);                                  \
   template void rasterize_forward_recorded_cpu<T>(const BlendWeights<T>&, const SplatInputs<T>&, T*, T*, T*); \
   template void rasterize_backward_recorded_cpu<T>(const BlendWeights<T>&, const SplatInputs<T>&, const T*, T*); \
   template void rasterize_recorded_loss_cpu<T>(const BlendWeights<T>&, const SplatInputs<T>&, TileLoss<T>&, T*); \

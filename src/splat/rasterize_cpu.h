@@ -101,6 +101,10 @@ template <class T>
 void rasterize_forward_cpu(const SplatCamera<T>& cam, const SplatInputs<T>& in, T* image, T* alpha, T* depth,
                            SplatForwardState<T>& state, BlendWeights<T>* record = nullptr);
 
+// radii[i]: Gaussian i's screen radius in pixels from a forward's projection, 0 where culled (N values).
+template <class T>
+void screen_radii(const SplatForwardState<T>& state, int32_t* radii);
+
 // The forward of features (dense or sparse, optional background and cosines; no SH) from recorded blend
 // weights: image, alpha and depth as rasterize_forward_cpu's. std::invalid_argument for SH or another
 // Gaussian count than recorded.
