@@ -1,3 +1,6 @@
+// The sparse cosine loss (sparse_loss.h). -Wpsabi: see splat/blend_lanes.h (row_products.h's register vectors
+// never cross a call: its functions are inlined into the per-build kernels).
+#pragma GCC diagnostic ignored "-Wpsabi"
 #include "language/sparse_loss.h"
 
 #include <ATen/ATen.h>
@@ -15,6 +18,7 @@
 
 #include "core/blas_threads.h"
 #include "core/error.h"
+#include "language/row_products.h"
 #include "splat/rasterize.h"
 #include "splat/rasterize_cpu.h"
 
@@ -54,16 +58,18 @@ struct CosineSums {
   double sam = 0, sam_gml = 0, citygml = 0;
 };
 
-// Pixels at a time: a chunk's W (B B^T) and its beta W^T W are one-thread GEMMs on rows still in cache.
+// Pixels at a time: a chunk's W (B B^T) and its beta W^T W are products on rows still in cache.
 constexpr int64_t kChunkRows = 1024;
 
-// One call's rows of the pass (CosinePass::rows): W, W G and beta W (rows x L), their pixels, and where the
-// gradients and sums go.
+// One call's rows of the pass (CosinePass::rows): W (rows x L), G (L x L), their pixels, the calling thread's
+// buffers and where the gradients and sums go.
 template <class T>
 struct CosineRows {
   const T* w;
-  const T* wg;
-  T* wb;  // out: beta W
+  const T* gram;
+  T* wg;  // W G (rows x L)
+  T* wb;  // beta W (rows x L)
+  T* outer;  // out: += beta W^T W (L x L)
   const int64_t* pixels;
   int64_t rows, l;
   T* grad;  // out: dL/dW
@@ -75,10 +81,12 @@ struct CosineRows {
   CosineSums* sums;
 };
 
-// Per pixel: the cosines with its targets, 1 - cos into the sums, dL/dW, dL/d(B t) and beta W (CosinePass).
-template <class T>
+// W G, then per pixel the cosines with its targets, 1 - cos into the sums, dL/dW, dL/d(B t) and beta W, then
+// beta W^T W (CosinePass).
+template <int kBytes, class T>
 [[gnu::always_inline]] inline void cosine_rows(const CosineRows<T>& a) {
   const int64_t l = a.l;
+  rows_times_matrix<kBytes>(a.w, a.rows, l, a.gram, a.wg);
   for (int64_t r = 0; r < a.rows; ++r) {
     const int64_t p = a.pixels[r];
     const T* wp = a.w + r * l;
@@ -118,17 +126,18 @@ template <class T>
     a.sums->sam += double((1 - m) * distance[0]), a.sums->sam_gml += double(m * distance[0]);
     a.sums->citygml += double(m * distance[1]);
   }
+  add_transposed_product<kBytes>(a.wb, a.w, a.rows, l, a.outer);
 }
 
-// Instruction-set builds of cosine_rows, as the rasterizer's tile kernels (rasterize_cpu.h): its L-long loops
-// vectorise per build (the AVX-512 build took 2 ms less of a 67 ms sparse iteration than the baseline's).
-#define CLS_COSINE_ROWS(NAME, ATTRIBUTE) \
-  template <class T>                     \
-  ATTRIBUTE void cosine_rows_##NAME(const CosineRows<T>& a) { cosine_rows(a); }
-CLS_COSINE_ROWS(baseline, )
+// Instruction-set builds of cosine_rows, as the rasterizer's tile kernels (rasterize_cpu.h): its products and
+// L-long loops vectorise per build.
+#define CLS_COSINE_ROWS(NAME, ATTRIBUTE, REGISTER_BYTES) \
+  template <class T>                                     \
+  ATTRIBUTE void cosine_rows_##NAME(const CosineRows<T>& a) { cosine_rows<REGISTER_BYTES>(a); }
+CLS_COSINE_ROWS(baseline, , 16)
 #if CLS_X86_KERNELS
-CLS_COSINE_ROWS(v3, [[gnu::target("arch=x86-64-v3")]])
-CLS_COSINE_ROWS(v4, [[gnu::target("arch=x86-64-v4,prefer-vector-width=512")]])
+CLS_COSINE_ROWS(v3, [[gnu::target("arch=x86-64-v3")]], 32)
+CLS_COSINE_ROWS(v4, [[gnu::target("arch=x86-64-v4,prefer-vector-width=512")]], 64)
 #endif
 #undef CLS_COSINE_ROWS
 
@@ -150,8 +159,7 @@ void (*cosine_rows_kernel())(const CosineRows<T>&) {
 //   dL/dG      = sum over the pixels of beta W W^T, beta = sum_t [d not floored] w_t cos / (2 |F|^2)
 //                                                                             (grad_gram, L x L)
 // with G = B B^T, |F|^2 = W^T G W and d = max(|F| |t|, 1e-8). Per-thread sums (omp_get_thread_num()), added in
-// thread order by finish. The GEMMs run on the calling thread, OpenBLAS held to it (the caller's
-// ScopedBlasThreads).
+// thread order by finish.
 template <class T>
 class CosinePass {
  public:
@@ -164,18 +172,14 @@ class CosinePass {
   void rows(const T* w, const int64_t* pixels, int64_t rows, T* grad) {
     const int64_t l = gram_.size(0);
     Thread& me = threads_[static_cast<size_t>(omp_get_thread_num())];
-    if (!me.outer.defined()) {
+    if (me.outer.empty()) {
       for (int k = 0; k < 2; ++k) me.grad_projected[k].assign(static_cast<size_t>(maps_[k].rows * l), T(0));
-      me.outer = at::zeros({l, l}, gram_.options());
-      me.wg_rows = at::empty({kChunkRows, l}, gram_.options());
-      me.wb_rows = at::empty({kChunkRows, l}, gram_.options());
+      me.outer.assign(static_cast<size_t>(l * l), T(0));
+      me.wg.resize(static_cast<size_t>(kChunkRows * l));
+      me.wb.resize(static_cast<size_t>(kChunkRows * l));
     }
-    const at::Tensor w_rows = at::from_blob(const_cast<T*>(w), {rows, l}, gram_.options());
-    at::Tensor wg = me.wg_rows.slice(0, 0, rows), wb = me.wb_rows.slice(0, 0, rows);
-    at::mm_out(wg, w_rows, gram_);
-    kernel_({w, wg.data_ptr<T>(), wb.data_ptr<T>(), pixels, rows, l, grad, coverage_, maps_, &lw_, inv_,
-             {me.grad_projected[0].data(), me.grad_projected[1].data()}, &me.sums});
-    me.outer.addmm_(wb.t(), w_rows);
+    kernel_({w, gram_.data_ptr<T>(), me.wg.data(), me.wb.data(), me.outer.data(), pixels, rows, l, grad, coverage_,
+             maps_, &lw_, inv_, {me.grad_projected[0].data(), me.grad_projected[1].data()}, &me.sums});
   }
 
   // The threads' sums, in thread order (the same sums on every run with the same rows per thread).
@@ -183,10 +187,11 @@ class CosinePass {
     const int64_t l = gram_.size(0);
     for (int k = 0; k < 2; ++k) grad_projected[k].assign(static_cast<size_t>(maps_[k].rows * l), T(0));
     grad_gram = at::zeros({l, l}, gram_.options());
+    T* const gg = grad_gram.data_ptr<T>();
     for (const Thread& t : threads_) {
-      if (!t.outer.defined()) continue;  // no rows
+      if (t.outer.empty()) continue;  // no rows
       sums.sam += t.sums.sam, sums.sam_gml += t.sums.sam_gml, sums.citygml += t.sums.citygml;
-      grad_gram += t.outer;
+      for (size_t i = 0; i < t.outer.size(); ++i) gg[i] += t.outer[i];
       for (int k = 0; k < 2; ++k)
         for (size_t i = 0; i < t.grad_projected[k].size(); ++i) grad_projected[k][i] += t.grad_projected[k][i];
     }
@@ -195,7 +200,7 @@ class CosinePass {
  private:
   struct Thread {
     std::vector<T> grad_projected[2];
-    at::Tensor outer, wg_rows, wb_rows;  // beta W^T W; W G and beta W of the rows
+    std::vector<T> outer, wg, wb;  // beta W^T W; W G and beta W of the rows
     CosineSums sums;
   };
   const at::Tensor gram_;
@@ -251,8 +256,8 @@ class SparseCosineLossFunction : public torch::autograd::Function<SparseCosineLo
                             const SegMapTarget* sam, const SegMapTarget* gml, const at::Tensor& coverage,
                             LanguageLossWeights weights, const RecordedMap* recorded, std::array<double, 3>* terms) {
     // OpenBLAS held to the calling thread (core/blas_threads.h): its pool and the OpenMP one took turns
-    // spinning, 40 % of a 2-core loss went to their spins and yields; the large GEMMs are split over the
-    // pass's threads, the others are small.
+    // spinning, 40 % of a 2-core loss went to their spins and yields; its products here are small (the pass's
+    // own are row_products.h's, on the pass's threads).
     const ScopedBlasThreads blas(1);
     const at::Tensor xd = x.detach().contiguous(), book = codebook.detach().contiguous();
     const int64_t n = coverage.numel(), l = book.size(0);

@@ -120,13 +120,17 @@ TEST(SparseCosineLoss, EqualsTheDefinitionAndItsDifferences) {
 
 // The one pass against the reference on a view of many pixels (three chunks of the pass, the last one short;
 // on one, two and three threads: every thread's share of the per-target sums and of the Gram term), float32
-// and both weightings: the terms and both gradients.
+// and both weightings, every CPU build: the terms and both gradients. L 70: the pass's products
+// (row_products.h) in register panels and the columns and rows after them.
 TEST(SparseCosineLoss, OnePassEqualsTheReferenceOnALargerView) {
-  const CosineCase c = cosine_case(53, 47, 16, 24, 9, 5);
+  for (CpuKernels kernels : available_cpu_kernels())
+  for (const int64_t l : {16, 70})
   for (const int threads : {1, 2, 3})
   for (const torch::Dtype dtype : {torch::kFloat64, torch::kFloat32})
   for (const LanguageLossWeights lw : {LanguageLossWeights{1.0, 0.5, false}, LanguageLossWeights{1.0, 0.5, true}}) {
+    const test::ScopedCpuKernels use_kernels(kernels);
     const test::ScopedOmpThreads use(threads);
+    const CosineCase c = cosine_case(53, 47, l, 24, 9, 5);
     const SegMapTarget sam{c.sam.ids, c.sam.table.to(dtype)}, gml{c.gml.ids, c.gml.table.to(dtype)};
     at::Tensor grads[2][2];
     LanguageLoss losses[2];
@@ -138,7 +142,8 @@ TEST(SparseCosineLoss, OnePassEqualsTheReferenceOnALargerView) {
       grads[f][0] = weights.grad(), grads[f][1] = codebook.grad();
     }
     const double tol = dtype == torch::kFloat64 ? 1e-12 : 1e-5;
-    const std::string what = std::string(dtype == torch::kFloat64 ? "double" : "float") + (lw.baseline ? ", baseline" : "");
+    const std::string what = std::string(dtype == torch::kFloat64 ? "double" : "float") + (lw.baseline ? ", baseline" : "") +
+                             ", L " + std::to_string(l);
     EXPECT_NEAR(losses[0].total.item<double>(), losses[1].total.item<double>(), tol) << what;
     EXPECT_NEAR(losses[0].sam_gml.item<double>(), losses[1].sam_gml.item<double>(), tol) << what;
     EXPECT_NEAR(losses[0].citygml.item<double>(), losses[1].citygml.item<double>(), tol) << what;
