@@ -32,22 +32,26 @@ template <int kBytes, class T, class P>
   std::memcpy(p, &v, kBytes);
 }
 
-// kRows rows of A (stride l) times M into out (stride l): whole panels of columns in registers, the columns after
-// them one at a time.
+// kRows rows of out (stride l), for i < kRows and every column c:
+//   out[i][c] (+)= sum over t < steps of s[i si + t st] panels[t][c]     (panels: rows of l)
+// whole panels of columns in registers, the columns after them one at a time. A M and X^T Y are both this form.
 template <int kBytes, int kRows, class T>
-[[gnu::always_inline]] inline void product_rows(const T* a, int64_t l, const T* m, T* out) {
+[[gnu::always_inline]] inline void scaled_row_sums(const T* s, int64_t si, int64_t st, const T* panels, int64_t l,
+                                                   int64_t steps, bool accumulate, T* out) {
   using P = typename NativeVector<T, kBytes>::V;
   constexpr int R = kPanelRegisters<kBytes>, kPer = kBytes / int(sizeof(T));
   int64_t c0 = 0;
   for (; c0 + R * kPer <= l; c0 += R * kPer) {
-    P acc[kRows][R] = {};
-    for (int64_t k = 0; k < l; ++k) {
+    P acc[kRows][R];
+    for (int i = 0; i < kRows; ++i)
+      for (int j = 0; j < R; ++j) acc[i][j] = accumulate ? load_register<kBytes>(out + i * l + c0 + j * kPer) : P{};
+    for (int64_t t = 0; t < steps; ++t) {
       P panel[R];
 #pragma GCC unroll 4
-      for (int j = 0; j < R; ++j) panel[j] = load_register<kBytes>(m + k * l + c0 + j * kPer);
+      for (int j = 0; j < R; ++j) panel[j] = load_register<kBytes>(panels + t * l + c0 + j * kPer);
 #pragma GCC unroll 4
       for (int i = 0; i < kRows; ++i) {
-        const T x = a[i * l + k];
+        const T x = s[i * si + t * st];
 #pragma GCC unroll 4
         for (int j = 0; j < R; ++j) acc[i][j] += x * panel[j];
       }
@@ -57,8 +61,8 @@ template <int kBytes, int kRows, class T>
   }
   for (; c0 < l; ++c0)
     for (int i = 0; i < kRows; ++i) {
-      T sum = 0;
-      for (int64_t k = 0; k < l; ++k) sum += a[i * l + k] * m[k * l + c0];
+      T sum = accumulate ? out[i * l + c0] : T(0);
+      for (int64_t t = 0; t < steps; ++t) sum += s[i * si + t * st] * panels[t * l + c0];
       out[i * l + c0] = sum;
     }
 }
@@ -67,50 +71,16 @@ template <int kBytes, int kRows, class T>
 template <int kBytes, class T>
 [[gnu::always_inline]] inline void rows_times_matrix(const T* a, int64_t rows, int64_t l, const T* m, T* out) {
   int64_t r = 0;
-  for (; r + 4 <= rows; r += 4) product_rows<kBytes, 4>(a + r * l, l, m, out + r * l);
-  for (; r < rows; ++r) product_rows<kBytes, 1>(a + r * l, l, m, out + r * l);
-}
-
-// Rows i0 .. i0 + kRows of out += X^T Y (X, Y rows x l): whole panels of columns in registers over all the rows,
-// the columns after them one at a time.
-template <int kBytes, int kRows, class T>
-[[gnu::always_inline]] inline void transposed_product_rows(const T* x, const T* y, int64_t rows, int64_t l, int64_t i0,
-                                                           T* out) {
-  using P = typename NativeVector<T, kBytes>::V;
-  constexpr int R = kPanelRegisters<kBytes>, kPer = kBytes / int(sizeof(T));
-  int64_t c0 = 0;
-  for (; c0 + R * kPer <= l; c0 += R * kPer) {
-    P acc[kRows][R];
-    for (int i = 0; i < kRows; ++i)
-      for (int j = 0; j < R; ++j) acc[i][j] = load_register<kBytes>(out + (i0 + i) * l + c0 + j * kPer);
-    for (int64_t r = 0; r < rows; ++r) {
-      P panel[R];
-#pragma GCC unroll 4
-      for (int j = 0; j < R; ++j) panel[j] = load_register<kBytes>(y + r * l + c0 + j * kPer);
-#pragma GCC unroll 4
-      for (int i = 0; i < kRows; ++i) {
-        const T b = x[r * l + i0 + i];
-#pragma GCC unroll 4
-        for (int j = 0; j < R; ++j) acc[i][j] += b * panel[j];
-      }
-    }
-    for (int i = 0; i < kRows; ++i)
-      for (int j = 0; j < R; ++j) store_register<kBytes>(out + (i0 + i) * l + c0 + j * kPer, acc[i][j]);
-  }
-  for (; c0 < l; ++c0)
-    for (int i = 0; i < kRows; ++i) {
-      T sum = out[(i0 + i) * l + c0];
-      for (int64_t r = 0; r < rows; ++r) sum += x[r * l + i0 + i] * y[r * l + c0];
-      out[(i0 + i) * l + c0] = sum;
-    }
+  for (; r + 4 <= rows; r += 4) scaled_row_sums<kBytes, 4>(a + r * l, l, 1, m, l, l, false, out + r * l);
+  for (; r < rows; ++r) scaled_row_sums<kBytes, 1>(a + r * l, l, 1, m, l, l, false, out + r * l);
 }
 
 // out (l x l) += X^T Y for X, Y rows x l.
 template <int kBytes, class T>
 [[gnu::always_inline]] inline void add_transposed_product(const T* x, const T* y, int64_t rows, int64_t l, T* out) {
   int64_t i = 0;
-  for (; i + 4 <= l; i += 4) transposed_product_rows<kBytes, 4>(x, y, rows, l, i, out);
-  for (; i < l; ++i) transposed_product_rows<kBytes, 1>(x, y, rows, l, i, out);
+  for (; i + 4 <= l; i += 4) scaled_row_sums<kBytes, 4>(x + i, 1, l, y, l, rows, true, out + i * l);
+  for (; i < l; ++i) scaled_row_sums<kBytes, 1>(x + i, 1, l, y, l, rows, true, out + i * l);
 }
 
 }  // namespace cls
