@@ -365,6 +365,8 @@ LanguageLoss sparse_cosine_loss_recorded(const at::Tensor& means, const at::Tens
                 std::to_string(means.size(0)) + " Gaussians");
   if (weights_nk.scalar_type() != means.scalar_type())
     throw Error(std::string(what) + ": the weights must have the Gaussians' dtype");
+  if (settings.background.defined())
+    throw Error(std::string(what) + ": the map is of a zero background (settings.background must be undefined)");
   if (!codebook.defined() || codebook.dim() != 2 || codebook.size(0) < 1)
     throw Error(std::string(what) + ": the codebook must be L x D");
   const int64_t l = codebook.size(0);

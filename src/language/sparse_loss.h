@@ -37,9 +37,9 @@ LanguageLoss sparse_cosine_loss(const at::Tensor& weight_map, const at::Tensor& 
 // (recorded_blend_weights) in one pass over the tiles with the rendering and its backward
 // (rasterize_recorded_loss_cpu): the H x W x L map and its gradient are never made. `total` is differentiable with
 // respect to `weights` (N x K) and the codebook; the same loss and gradients as rendering, then
-// sparse_cosine_loss, within rounding. CPU tensors, geometry as the cache recorded it (contiguous); cls::Error
-// when the cache holds no weights yet (record them with a call of rasterize_sparse_features), when they are not
-// of these Gaussians or this view, and as sparse_cosine_loss.
+// sparse_cosine_loss, within rounding. CPU tensors, geometry as the cache recorded it (contiguous), no
+// background; cls::Error when the cache holds no weights yet (record them with a call of
+// rasterize_sparse_features), when they are not of these Gaussians or this view, and as sparse_cosine_loss.
 LanguageLoss sparse_cosine_loss_recorded(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
                                          const at::Tensor& opacities, const at::Tensor& weights,
                                          const at::Tensor& indices, const RasterizeSettings& settings,

@@ -253,6 +253,10 @@ TEST(SparseCosineLoss, RecordedPassEqualsTheRenderedMapsLoss) {
     moved.pose.t.x += 0.1;
     EXPECT_NE(test::error_of([&] { recorded(weights, codebook, moved); }).find("another camera"), std::string::npos)
         << what;
+    RasterizeSettings with_background = t.settings;
+    with_background.background = torch::ones({L}, dtype);
+    EXPECT_NE(test::error_of([&] { recorded(weights, codebook, with_background); }).find("zero background"),
+              std::string::npos) << what;
   }
 }
 
