@@ -242,7 +242,7 @@ int bench_main(int argc, char** argv) {
       .bind("blend-cache", blend_caches, "training, comma-separated: off (blend every iteration), on (read the blend "
                                          "weights recorded in the warm-up as train-language does on the CPU: the "
                                          "sparse cosine loss in one pass with its map), separate (the same, map and "
-                                         "loss in passes of their own)")
+                                         "loss in passes of their own; for other losses the same as on)")
       .bind("codebook-size", bases, "sparse: bases L")
       .bind("top-k", top_k, "sparse: weights per Gaussian K")
       .bind("query-scene", query_scene_text, "the relevance-map scene, N@WxH, or none")

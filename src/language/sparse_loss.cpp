@@ -87,6 +87,7 @@ template <int kBytes, class T>
 [[gnu::always_inline]] inline void cosine_rows(const CosineRows<T>& a) {
   const int64_t l = a.l;
   rows_times_matrix<kBytes>(a.w, a.rows, l, a.gram, a.wg);
+  CosineSums sums;  // added to the thread's once (through a pointer, a store per pixel)
   for (int64_t r = 0; r < a.rows; ++r) {
     const int64_t p = a.pixels[r];
     const T* wp = a.w + r * l;
@@ -123,9 +124,10 @@ template <int kBytes, class T>
     T* bw = a.wb + r * l;
 #pragma omp simd
     for (int64_t c = 0; c < l; ++c) bw[c] = b * wp[c];
-    a.sums->sam += double((1 - m) * distance[0]), a.sums->sam_gml += double(m * distance[0]);
-    a.sums->citygml += double(m * distance[1]);
+    sums.sam += double((1 - m) * distance[0]), sums.sam_gml += double(m * distance[0]);
+    sums.citygml += double(m * distance[1]);
   }
+  a.sums->sam += sums.sam, a.sums->sam_gml += sums.sam_gml, a.sums->citygml += sums.citygml;
   add_transposed_product<kBytes>(a.wb, a.w, a.rows, l, a.outer);
 }
 
@@ -166,30 +168,34 @@ class CosinePass {
   CosinePass(const at::Tensor& gram, const float* coverage, const CosineTargets<T> (&maps)[2],
              const LanguageLossWeights& lw, int64_t pixels)
       : gram_(gram), coverage_(coverage), maps_(maps), lw_(lw), inv_(T(1) / T(pixels)),
-        threads_(static_cast<size_t>(omp_get_max_threads())), kernel_(cosine_rows_kernel<T>()) {}
+        threads_(static_cast<size_t>(omp_get_max_threads())), kernel_(cosine_rows_kernel<T>()) {
+    // every thread's buffers here, on the calling thread: nothing is allocated inside the parallel regions
+    const int64_t l = gram_.size(0);
+    for (Thread& t : threads_) {
+      for (int k = 0; k < 2; ++k) t.grad_projected[k].assign(static_cast<size_t>(maps_[k].rows * l), T(0));
+      t.outer.assign(static_cast<size_t>(l * l), T(0));
+      t.wg.resize(static_cast<size_t>(kChunkRows * l));
+      t.wb.resize(static_cast<size_t>(kChunkRows * l));
+    }
+  }
 
   // `rows` rows of W (rows x L, at most kChunkRows) at the image's pixels `pixels`: their gradient into grad.
   void rows(const T* w, const int64_t* pixels, int64_t rows, T* grad) {
     const int64_t l = gram_.size(0);
     Thread& me = threads_[static_cast<size_t>(omp_get_thread_num())];
-    if (me.outer.empty()) {
-      for (int k = 0; k < 2; ++k) me.grad_projected[k].assign(static_cast<size_t>(maps_[k].rows * l), T(0));
-      me.outer.assign(static_cast<size_t>(l * l), T(0));
-      me.wg.resize(static_cast<size_t>(kChunkRows * l));
-      me.wb.resize(static_cast<size_t>(kChunkRows * l));
-    }
     kernel_({w, gram_.data_ptr<T>(), me.wg.data(), me.wb.data(), me.outer.data(), pixels, rows, l, grad, coverage_,
              maps_, &lw_, inv_, {me.grad_projected[0].data(), me.grad_projected[1].data()}, &me.sums});
   }
 
-  // The threads' sums, in thread order (the same sums on every run with the same rows per thread).
+  // The threads' sums, in thread order: the same on every run where each thread gets the same rows (cosine_pass's
+  // static shares; the tile pass hands tiles out as threads come free, so with more than one thread its sums may
+  // differ by rounding from run to run).
   void finish(at::Tensor& grad_gram, std::vector<T> (&grad_projected)[2], CosineSums& sums) const {
     const int64_t l = gram_.size(0);
     for (int k = 0; k < 2; ++k) grad_projected[k].assign(static_cast<size_t>(maps_[k].rows * l), T(0));
     grad_gram = at::zeros({l, l}, gram_.options());
     T* const gg = grad_gram.data_ptr<T>();
     for (const Thread& t : threads_) {
-      if (t.outer.empty()) continue;  // no rows
       sums.sam += t.sums.sam, sums.sam_gml += t.sums.sam_gml, sums.citygml += t.sums.citygml;
       for (size_t i = 0; i < t.outer.size(); ++i) gg[i] += t.outer[i];
       for (int k = 0; k < 2; ++k)
@@ -212,20 +218,19 @@ class CosinePass {
   void (*kernel_)(const CosineRows<T>&);
 };
 
-// The whole map W (n x L) in chunks of pixels, static over the threads.
+// The whole map W (n x L) in chunks of pixels, static over the threads (nothing allocated inside the region: an
+// exception may not leave it).
 template <class T>
 void cosine_pass(const at::Tensor& w, CosinePass<T>& pass, T* grad) {
   const int64_t n = w.size(0), l = w.size(1);
   const T* const wd = w.data_ptr<T>();
-#pragma omp parallel
-  {
-    std::vector<int64_t> pixels(kChunkRows);
-#pragma omp for schedule(static)
-    for (int64_t p0 = 0; p0 < n; p0 += kChunkRows) {
-      const int64_t rows = std::min(kChunkRows, n - p0);
-      std::iota(pixels.begin(), pixels.begin() + rows, p0);
-      pass.rows(wd + p0 * l, pixels.data(), rows, grad + p0 * l);
-    }
+  std::vector<int64_t> pixels(static_cast<size_t>(omp_get_max_threads() * kChunkRows));
+#pragma omp parallel for schedule(static)
+  for (int64_t p0 = 0; p0 < n; p0 += kChunkRows) {
+    const int64_t rows = std::min(kChunkRows, n - p0);
+    int64_t* const mine = pixels.data() + omp_get_thread_num() * kChunkRows;
+    std::iota(mine, mine + rows, p0);
+    pass.rows(wd + p0 * l, mine, rows, grad + p0 * l);
   }
 }
 
@@ -286,8 +291,10 @@ class SparseCosineLossFunction : public torch::autograd::Function<SparseCosineLo
         const RecordedMap& r = *recorded;
         const BlendWeights<T>* bw = recorded_blend_weights<T>(r.means, r.scales, r.quats, r.opacities, r.settings);
         if (!bw)
-          throw Error("sparse_cosine_loss_recorded: the view's blend cache holds no weights yet (render it once with "
-                      "rasterize_sparse_features)");
+          throw Error(std::string("sparse_cosine_loss_recorded: ") +
+                      (r.settings.blend_cache ? "the view's blend cache holds no weights yet (render it once with "
+                                                "rasterize_sparse_features)"
+                                              : "the settings hold no blend cache"));
         SplatInputs<T> in;
         in.n = static_cast<int>(xd.size(0));
         in.features = xd.data_ptr<T>(), in.channels = static_cast<int>(l);
@@ -376,6 +383,10 @@ LanguageLoss sparse_cosine_loss_recorded(const at::Tensor& means, const at::Tens
   const at::Tensor shape = at::zeros({1, 1, 1}, weights_nk.options().requires_grad(false))
                                .expand({settings.camera.height, settings.camera.width, l});
   check_inputs(shape, codebook, sam, gml, coverage, weights);
+  // the cache's checks here, where grad mode is the caller's (an autograd function's forward runs without it)
+  AT_DISPATCH_FLOATING_TYPES(means.scalar_type(), "sparse_cosine_loss_recorded", [&] {
+    recorded_blend_weights<scalar_t>(means, scales, quats, opacities, settings);
+  });
   const at::Tensor book = codebook.to(at::kCPU, weights_nk.scalar_type());
   const at::Tensor idx = indices.contiguous();
   const RecordedMap recorded{means, scales, quats, opacities, idx, settings};

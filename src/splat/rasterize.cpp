@@ -498,6 +498,9 @@ const BlendWeights<T>* recorded_blend_weights(const at::Tensor& means, const at:
   if (!settings.blend_cache) return nullptr;
   check_inputs(means, scales, quats, opacities, settings);
   check_cache_inputs(means, scales, quats, opacities);
+  if (geometry_grad(means, scales, quats, opacities, at::Tensor(), settings))
+    throw Error("recorded_blend_weights: recorded weights are for frozen Gaussians; a gradient to the geometry "
+                "was asked for");
   if (means.scalar_type() != c10::CppTypeToScalarType<T>::value)
     throw Error("recorded_blend_weights: the Gaussians' dtype is not the one asked for");
   return checked_weights<T>(*settings.blend_cache, {means, scales, quats, opacities},

@@ -39,8 +39,8 @@ struct RasterizeSettings {
 };
 
 // The weights settings.blend_cache holds (rasterize_cpu.h), checked to be of these Gaussians (CPU, contiguous, dtype
-// T), this camera and pose as a call through the cache checks them (cls::Error otherwise); null without a cache
-// or before a call recorded it. For passes of their own over the weights (rasterize_recorded_loss_cpu).
+// T), this camera and pose as a call through the cache checks them, and no gradient to the geometry (cls::Error
+// otherwise); null without a cache or before a call recorded it. For passes of their own over the weights (rasterize_recorded_loss_cpu).
 template <class T>
 struct BlendWeights;
 template <class T>

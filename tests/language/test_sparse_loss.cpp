@@ -197,13 +197,16 @@ TEST(SparseCosineLoss, PixelsNoGaussianReachesStayFinite) {
 
 // The loss taken in one pass with the map from a view's recorded blend weights (sparse_cosine_loss_recorded) against
 // the map rendered from them, then the one-pass loss: the terms and the gradients of the splatted weights and the
-// codebook, double and float, one and two threads, both weightings; uncovered pixels included (few Gaussians at
-// the edges). Before a call recorded the weights, and for another view, an error.
+// codebook, every CPU build, double and float, one and two threads, both weightings; uncovered pixels included (few
+// Gaussians at the edges) and tiles clipped by the image's edge (70 x 50). Before a call recorded the weights, for
+// another view and with a background, an error.
 TEST(SparseCosineLoss, RecordedPassEqualsTheRenderedMapsLoss) {
-  constexpr int L = 8, D = 12, K = 3;
+  constexpr int L = 70, D = 12, K = 3;  // L: register panels of the products and the columns after them
+  for (CpuKernels kernels : available_cpu_kernels())
   for (const torch::Dtype dtype : {torch::kFloat64, torch::kFloat32})
   for (const int threads : {1, 2})
   for (const LanguageLossWeights lw : {LanguageLossWeights{1.0, 0.5, false}, LanguageLossWeights{1.0, 0.5, true}}) {
+    const test::ScopedCpuKernels use_kernels(kernels);
     const test::ScopedOmpThreads use(threads);
     const std::string what = std::string(dtype == torch::kFloat64 ? "double" : "float") + (lw.baseline ? ", baseline" : "");
     TorchScene t = torch_scene(false, L, 72, dtype, 40, 70, 50);
@@ -253,6 +256,12 @@ TEST(SparseCosineLoss, RecordedPassEqualsTheRenderedMapsLoss) {
     moved.pose.t.x += 0.1;
     EXPECT_NE(test::error_of([&] { recorded(weights, codebook, moved); }).find("another camera"), std::string::npos)
         << what;
+    const at::Tensor moving = t.means.clone().requires_grad_(true);
+    EXPECT_NE(test::error_of([&] {
+                sparse_cosine_loss_recorded(moving, t.scales, t.quats, t.opacities, weights, indices, t.settings,
+                                            codebook, sam, gml, coverage, lw);
+              }).find("frozen Gaussians"),
+              std::string::npos) << what;
     RasterizeSettings with_background = t.settings;
     with_background.background = torch::ones({L}, dtype);
     EXPECT_NE(test::error_of([&] { recorded(weights, codebook, with_background); }).find("zero background"),
