@@ -366,19 +366,12 @@ LanguageLoss sparse_cosine_loss_recorded(const at::Tensor& means, const at::Tens
   const char* what = "sparse_cosine_loss_recorded";
   if (!means.defined() || !means.device().is_cpu() || !weights_nk.defined() || !weights_nk.device().is_cpu())
     throw Error(std::string(what) + ": CPU tensors only (a GPU renders the map and takes sparse_cosine_loss)");
-  if (weights_nk.dim() != 2 || weights_nk.size(0) != means.size(0) || weights_nk.size(1) < 1 ||
-      !indices.defined() || indices.sizes() != weights_nk.sizes() || indices.scalar_type() != at::kInt)
-    throw Error(std::string(what) + ": weights N x K and int32 indices N x K expected for N = " +
-                std::to_string(means.size(0)) + " Gaussians");
-  if (weights_nk.scalar_type() != means.scalar_type())
-    throw Error(std::string(what) + ": the weights must have the Gaussians' dtype");
   if (settings.background.defined())
     throw Error(std::string(what) + ": the map is of a zero background (settings.background must be undefined)");
   if (!codebook.defined() || codebook.dim() != 2 || codebook.size(0) < 1)
     throw Error(std::string(what) + ": the codebook must be L x D");
   const int64_t l = codebook.size(0);
-  if (indices.numel() > 0 && (indices.min().item<int64_t>() < 0 || indices.max().item<int64_t>() >= l))
-    throw Error(std::string(what) + ": indices outside [0, " + std::to_string(l) + "), the codebook's rows");
+  check_sparse_inputs(what, means, weights_nk, indices, static_cast<int>(l));  // the rasterizer's own checks
   // the map's shape without the map: a broadcast scalar (no memory) for the shape checks
   const at::Tensor shape = at::zeros({1, 1, 1}, weights_nk.options().requires_grad(false))
                                .expand({settings.camera.height, settings.camera.width, l});

@@ -405,12 +405,10 @@ at::Tensor scatter_sparse_features(const at::Tensor& weights, const at::Tensor& 
   return torch::zeros({weights.size(0), channels}, weights.options()).scatter_add(1, indices.to(torch::kLong), weights);
 }
 
-namespace {
-
-// `what`'s sparse weights N x K and indices N x K for `channels` channels, as rasterize_sparse_features takes them.
 void check_sparse_inputs(const char* what, const at::Tensor& means, const at::Tensor& weights, const at::Tensor& indices,
                          int channels) {
   const std::string name = what;
+  if (!weights.defined() || !indices.defined()) throw Error(name + ": weights and indices must both be given");
   if (weights.dim() != 2 || weights.size(0) != means.size(0) || weights.size(1) < 1 || indices.sizes() != weights.sizes())
     throw Error(name + ": weights and indices must both be N x K, got " + c10::str(weights.sizes()) + " and " +
                 c10::str(indices.sizes()));
@@ -422,7 +420,6 @@ void check_sparse_inputs(const char* what, const at::Tensor& means, const at::Te
     throw Error(name + ": an index lies outside [0, " + std::to_string(channels) + ")");
 }
 
-}  // namespace
 
 RasterizeOutput rasterize_sparse_features(const at::Tensor& means, const at::Tensor& scales, const at::Tensor& quats,
                                           const at::Tensor& opacities, const at::Tensor& weights,

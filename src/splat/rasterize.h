@@ -91,6 +91,11 @@ RasterizeOutput rasterize_sparse_cosines(const at::Tensor& means, const at::Tens
                                          const at::Tensor& indices, int channels, const at::Tensor& directions,
                                          const at::Tensor& factor, const RasterizeSettings& settings);
 
+// cls::Error from `what` (the caller) unless weights and indices are N x K for the means' N, the weights of the
+// means' dtype, the indices int32 on the means' device, each in [0, channels): rasterize_sparse_features' checks.
+void check_sparse_inputs(const char* what, const at::Tensor& means, const at::Tensor& weights, const at::Tensor& indices,
+                         int channels);
+
 // Sparse features as dense ones: weights N x K scattered into N x C at their indices (zero elsewhere; repeats
 // add). The image of rasterize_features on it is rasterize_sparse_features' image.
 at::Tensor scatter_sparse_features(const at::Tensor& weights, const at::Tensor& indices, int channels);
